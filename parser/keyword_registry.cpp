@@ -1,0 +1,32 @@
+#include "parser/keyword_registry.hpp"
+
+#include "parser/keywords/keyword_families.hpp"
+
+namespace clinch {
+
+const KeywordRegistry& KeywordRegistry::instance() {
+  static const KeywordRegistry registry = [] {
+    KeywordRegistry r;
+    for (auto* family : {&general_keyword_specs, &geometry_keyword_specs, &section_keyword_specs,
+                         &behavior_keyword_specs, &potential_friction_keyword_specs,
+                         &history_keyword_specs}) {
+      for (KeywordSpec& spec : family()) r.add(std::move(spec));
+    }
+    return r;
+  }();
+  return registry;
+}
+
+void KeywordRegistry::add(KeywordSpec spec) {
+  auto owned = std::make_unique<KeywordSpec>(std::move(spec));
+  by_name_[fold_name(owned->name)] = owned.get();
+  display_names_.push_back("*" + std::string(owned->name));
+  specs_.push_back(std::move(owned));
+}
+
+const KeywordSpec* KeywordRegistry::find(std::string_view folded_name) const {
+  auto it = by_name_.find(std::string(folded_name));
+  return it == by_name_.end() ? nullptr : it->second;
+}
+
+}  // namespace clinch

@@ -1,0 +1,84 @@
+// *HEADING, the keywords that have no effect in clinch (input-syntax.md §9) and the keywords
+// clinch knows but does not support (E0202).
+#include <fmt/format.h>
+
+#include "parser/block_context.hpp"
+#include "parser/keyword_handler.hpp"
+#include "parser/keywords/keyword_families.hpp"
+
+namespace clinch {
+namespace {
+
+// *HEADING: the first data line is the title (copied to the .log header).
+class HeadingHandler : public KeywordHandler {
+ public:
+  void data_line(BlockContext& ctx, const DataLine& line, std::vector<Field>&) override {
+    if (ctx.model().heading.empty() && !line.blank) ctx.model().heading = std::string(line.text);
+  }
+};
+
+KeywordSpec no_effect(std::string_view name, KeywordLevel level) {
+  KeywordSpec spec;
+  spec.name = name;
+  spec.keyword_class = KeywordClass::NoEffect;
+  spec.level = level;
+  spec.data = DataMode::Skip;
+  spec.loose_params = true;
+  return spec;
+}
+
+KeywordSpec not_supported(std::string_view name) {
+  KeywordSpec spec;
+  spec.name = name;
+  spec.keyword_class = KeywordClass::NotSupported;
+  spec.level = KeywordLevel::Anywhere;
+  spec.data = DataMode::Skip;
+  spec.loose_params = true;
+  return spec;
+}
+
+}  // namespace
+
+std::vector<KeywordSpec> general_keyword_specs() {
+  std::vector<KeywordSpec> specs;
+  KeywordSpec heading;
+  heading.name = "HEADING";
+  heading.level = KeywordLevel::Model;
+  heading.data = DataMode::Raw;
+  heading.make_handler = [] { return std::unique_ptr<KeywordHandler>(new HeadingHandler); };
+  specs.push_back(std::move(heading));
+
+  specs.push_back(no_effect("PREPRINT", KeywordLevel::Model));
+  specs.push_back(no_effect("FILE FORMAT", KeywordLevel::ModelOrHistory));
+  specs.push_back(no_effect("MONITOR", KeywordLevel::History));
+  specs.push_back(no_effect("PRINT", KeywordLevel::History));
+  specs.push_back(no_effect("DIAGNOSTICS", KeywordLevel::History));
+  specs.push_back(no_effect("NODE FILE", KeywordLevel::History));
+  specs.push_back(no_effect("EL FILE", KeywordLevel::History));
+  specs.push_back(no_effect("ENERGY PRINT", KeywordLevel::History));
+  specs.push_back(no_effect("ENERGY FILE", KeywordLevel::History));
+  specs.push_back(no_effect("ENERGY OUTPUT", KeywordLevel::History));
+  specs.push_back(no_effect("CONTACT FILE", KeywordLevel::History));
+
+  // Known Abaqus/CalculiX keywords that change results and that clinch v1 does not implement
+  // (input-syntax.md §9, keywords.md §1).
+  for (std::string_view name :
+       {"MATERIAL", "ELASTIC", "PLASTIC", "DENSITY", "EXPANSION", "CONDUCTIVITY", "SPECIFIC HEAT",
+        "SOLID SECTION", "SHELL SECTION", "BEAM SECTION", "BEAM GENERAL SECTION",
+        "MEMBRANE SECTION", "TRUSS SECTION", "EQUATION", "MPC", "COUPLING", "KINEMATIC",
+        "DISTRIBUTING", "TRANSFORM", "SYSTEM", "MASS", "ROTARY INERTIA", "GAP", "DASHPOT",
+        "FREQUENCY", "DYNAMIC", "MODAL DYNAMIC", "STEADY STATE DYNAMICS", "BUCKLE",
+        "HEAT TRANSFER", "COUPLED TEMPERATURE-DISPLACEMENT", "VISCO", "DLOAD", "DSLOAD",
+        "TEMPERATURE", "INITIAL CONDITIONS", "TIME POINTS", "NO ANALYSIS", "PARAMETER DEPENDENCE",
+        "PARAMETER TABLE", "PARAMETER TABLE TYPE", "PARAMETER SHAPE VARIATION",
+        "CONNECTOR UNIAXIAL BEHAVIOR", "CHANGE FRICTION", "SURFACE", "SURFACE INTERACTION",
+        "CONTACT PAIR", "CONTACT", "TIE", "RIGID BODY", "SURFACE BEHAVIOR", "GRAVITY",
+        "USER MATERIAL", "DEPVAR", "USER ELEMENT", "MODEL CHANGE", "RESTART READ", "DAMPING",
+        "NODAL THICKNESS", "NORMAL", "ELEMENT MATRIX OUTPUT", "SUBMODEL", "DSFLUX", "CFLUX",
+        "FILM", "RADIATE", "CONNECTOR ELEMENT PROPERTY"}) {
+    specs.push_back(not_supported(name));
+  }
+  return specs;
+}
+
+}  // namespace clinch

@@ -1,0 +1,266 @@
+#include "parser/lexer.hpp"
+
+#include <cstring>
+
+#include <fmt/format.h>
+
+namespace clinch {
+namespace {
+
+bool is_blank(char c) { return c == ' ' || c == '\t'; }
+bool is_high(char c) { return static_cast<unsigned char>(c) >= 0x80; }
+
+char upper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
+
+std::string_view trim(std::string_view s) {
+  std::size_t b = 0, e = s.size();
+  while (b < e && is_blank(s[b])) ++b;
+  while (e > b && is_blank(s[e - 1])) --e;
+  return s.substr(b, e - b);
+}
+
+}  // namespace
+
+std::string fold_name(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) {
+    if (!is_blank(c)) out.push_back(upper(c));
+  }
+  return out;
+}
+
+void split_fields(std::string_view text, SourceLoc loc, std::vector<Field>& fields,
+                  DiagnosticSink& sink) {
+  fields.clear();
+  std::size_t i = 0;
+  const std::size_t n = text.size();
+  bool reported_non_ascii = false;
+  while (true) {
+    Field& field = fields.emplace_back();
+    // Leading blanks.
+    while (i < n && is_blank(text[i])) ++i;
+    field.loc = loc.shifted(static_cast<std::uint32_t>(i));
+    bool seen_content = false;
+    std::size_t pending_blanks = 0;
+    while (i < n && text[i] != ',') {
+      char c = text[i];
+      if (c == '"') {
+        std::size_t close = text.find('"', i + 1);
+        if (close == std::string_view::npos) {
+          sink.report(DiagCode::unterminated_quote, loc.shifted(static_cast<std::uint32_t>(i)),
+                      fmt::format("missing closing '\"' in {}", text.substr(i)));
+          field.text.append(text.substr(i + 1));
+          field.quoted = true;
+          i = n;
+          break;
+        }
+        std::string_view inside = text.substr(i + 1, close - i - 1);
+        for (std::size_t k = 0; k < inside.size(); ++k) {
+          if (is_high(inside[k]) && !reported_non_ascii) {
+            reported_non_ascii = true;
+            sink.report(DiagCode::non_ascii_text,
+                        loc.shifted(static_cast<std::uint32_t>(i + 1 + k)),
+                        "non-ASCII character in quoted name (Abaqus accepts ASCII only)");
+          }
+        }
+        if (pending_blanks && seen_content) field.had_inner_blank = true;
+        pending_blanks = 0;
+        field.text.append(inside);
+        field.quoted = true;
+        seen_content = true;
+        i = close + 1;
+        continue;
+      }
+      if (is_blank(c)) {
+        ++pending_blanks;
+        ++i;
+        continue;
+      }
+      if (is_high(c) && !reported_non_ascii) {
+        reported_non_ascii = true;
+        sink.report(DiagCode::non_ascii, loc.shifted(static_cast<std::uint32_t>(i)),
+                    fmt::format("non-ASCII character (0x{:02X}) in a data line",
+                                static_cast<unsigned char>(c)));
+      }
+      if (pending_blanks && seen_content) field.had_inner_blank = true;
+      pending_blanks = 0;
+      field.text.push_back(c);
+      seen_content = true;
+      ++i;
+    }
+    if (i >= n) break;
+    ++i;  // the comma
+  }
+  // Trailing empty fields are dropped (input-syntax.md §3.1: "12," is "12").
+  while (!fields.empty() && fields.back().empty()) fields.pop_back();
+}
+
+bool parse_keyword_line(const std::vector<KeywordSegment>& segments, KeywordLine& out,
+                        DiagnosticSink& sink) {
+  out = KeywordLine{};
+  // Flatten segments into (char, location) pieces; commas split parameters across segments.
+  struct Piece {
+    std::string_view text;
+    SourceLoc loc;
+  };
+  std::vector<Piece> items;  // one per comma-separated item
+  for (const KeywordSegment& segment : segments) {
+    std::string_view text = segment.text;
+    std::size_t start = 0;
+    bool in_quote = false;
+    for (std::size_t i = 0; i <= text.size(); ++i) {
+      if (i < text.size() && text[i] == '"') in_quote = !in_quote;
+      if (i == text.size() || (text[i] == ',' && !in_quote)) {
+        if (i == text.size() && in_quote) {
+          std::size_t q = text.rfind('"');
+          sink.report(DiagCode::unterminated_quote,
+                      segment.loc.shifted(static_cast<std::uint32_t>(q)),
+                      fmt::format("missing closing '\"' in {}", text.substr(q)));
+          return false;
+        }
+        // A trailing comma at the end of a segment is the continuation mark, not an item.
+        if (!(i == text.size() && start == text.size() && start > 0)) {
+          items.push_back({text.substr(start, i - start),
+                           segment.loc.shifted(static_cast<std::uint32_t>(start))});
+        }
+        start = i + 1;
+      }
+    }
+  }
+  // Item 0: '*' + keyword name.
+  {
+    Piece first = items.front();
+    std::size_t star = first.text.find('*');
+    out.loc = first.loc.shifted(static_cast<std::uint32_t>(star));
+    std::string_view name = trim(first.text.substr(star + 1));
+    for (std::size_t k = 0; k < name.size(); ++k) {
+      if (is_high(name[k])) {
+        sink.report(DiagCode::non_ascii, out.loc, "non-ASCII character in a keyword name");
+        return false;
+      }
+    }
+    out.spelled = std::string(name);
+    out.name = fold_name(name);
+    if (out.name.empty()) {
+      sink.report(DiagCode::keyword_missing_name, out.loc, "keyword line has no keyword name");
+      return false;
+    }
+  }
+  for (std::size_t k = 1; k < items.size(); ++k) {
+    const Piece& item = items[k];
+    std::size_t lead = 0;
+    while (lead < item.text.size() && is_blank(item.text[lead])) ++lead;
+    std::string_view body = trim(item.text);
+    SourceLoc item_loc = item.loc.shifted(static_cast<std::uint32_t>(lead));
+    if (body.empty()) {
+      // A trailing empty item only marks a continuation or a final comma.
+      if (k + 1 < items.size()) {
+        sink.report(DiagCode::empty_parameter, item_loc,
+                    "empty parameter between commas ignored");
+      }
+      continue;
+    }
+    std::size_t eq = std::string_view::npos;
+    for (std::size_t i = 0; i < body.size(); ++i) {
+      if (body[i] == '"') {
+        std::size_t close = body.find('"', i + 1);
+        if (close == std::string_view::npos) break;
+        i = close;
+        continue;
+      }
+      if (body[i] == '=') {
+        eq = i;
+        break;
+      }
+    }
+    KeywordParam param;
+    param.loc = item_loc;
+    std::string_view name = eq == std::string_view::npos ? body : trim(body.substr(0, eq));
+    bool malformed = name.empty();
+    for (char c : name) {
+      if (c == '"' || is_high(c)) malformed = true;
+    }
+    if (eq != std::string_view::npos) {
+      std::string_view rest = body.substr(eq + 1);
+      // "NAME==x" and "NAME=a=b" (outside quotes) are malformed (E0104).
+      bool in_quote = false;
+      for (char c : rest) {
+        if (c == '"') in_quote = !in_quote;
+        if (c == '=' && !in_quote) malformed = true;
+      }
+    }
+    if (malformed) {
+      sink.report(DiagCode::malformed_parameter, item_loc,
+                  fmt::format("malformed parameter '{}' (expected NAME or NAME=VALUE)", body));
+      continue;
+    }
+    param.spelled = std::string(name);
+    param.name = fold_name(name);
+    if (eq != std::string_view::npos) {
+      param.has_value = true;
+      std::size_t value_start = eq + 1;
+      while (value_start < body.size() && is_blank(body[value_start])) ++value_start;
+      std::string_view value_text = body.substr(value_start);
+      SourceLoc value_loc = item_loc.shifted(static_cast<std::uint32_t>(value_start));
+      std::vector<Field> fields;
+      DiagnosticSink local;
+      split_fields(value_text, value_loc, fields, local);
+      for (const Diagnostic& d : local.diagnostics()) {
+        Diagnostic& copy = sink.report(d.code, d.severity, d.loc, d.message);
+        copy.notes = d.notes;
+      }
+      if (!fields.empty()) {
+        param.value = std::move(fields.front());
+      } else {
+        param.value.loc = value_loc;
+      }
+    }
+    out.params.push_back(std::move(param));
+  }
+  return true;
+}
+
+LineScanner::LineScanner(std::string_view text, std::uint32_t file_index, DiagnosticSink& sink)
+    : text_(text), file_(file_index), sink_(sink) {}
+
+LineScanner::Kind LineScanner::next() {
+  if (offset_ >= text_.size()) return Kind::End;
+  const char* base = text_.data() + offset_;
+  const void* nl = std::memchr(base, '\n', text_.size() - offset_);
+  std::size_t end = nl ? static_cast<std::size_t>(static_cast<const char*>(nl) - text_.data())
+                       : text_.size();
+  std::size_t line_end = end;
+  if (line_end > offset_ && text_[line_end - 1] == '\r') --line_end;
+  line_ = text_.substr(offset_, line_end - offset_);
+  offset_ = end + 1;
+  ++line_number_;
+
+  // Control characters (E0107): one report per line. TAB, CR (dropped above) and LF are fine.
+  for (std::size_t i = 0; i < line_.size(); ++i) {
+    unsigned char c = static_cast<unsigned char>(line_[i]);
+    if ((c < 0x20 && c != '\t' && c != '\r') || c == 0x7f) {
+      sink_.report(DiagCode::control_character,
+                   {file_, line_number_, static_cast<std::uint32_t>(i + 1)},
+                   fmt::format("control character 0x{:02X} in input", c));
+      break;
+    }
+  }
+  if (line_.size() > 256 && !long_line_reported_) {
+    long_line_reported_ = true;
+    sink_.report(DiagCode::long_line, {file_, line_number_, 257},
+                 "line is longer than 256 characters (Abaqus limit)");
+  }
+  first_non_blank_ = 0;
+  while (first_non_blank_ < line_.size() && is_blank(line_[first_non_blank_])) ++first_non_blank_;
+  if (first_non_blank_ == line_.size()) return Kind::Blank;
+  if (line_[first_non_blank_] == '*') {
+    if (first_non_blank_ + 1 < line_.size() && line_[first_non_blank_ + 1] == '*') {
+      return Kind::Comment;
+    }
+    return Kind::Keyword;
+  }
+  return Kind::Data;
+}
+
+}  // namespace clinch

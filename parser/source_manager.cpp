@@ -1,0 +1,85 @@
+#include "parser/source_manager.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+namespace clinch {
+
+std::optional<std::uint32_t> SourceManager::load(const std::string& path, SourceLoc included_from,
+                                                 std::string* error) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    if (error) *error = "Is a directory";
+    return std::nullopt;
+  }
+  std::FILE* handle = std::fopen(path.c_str(), "rb");
+  if (!handle) {
+    if (error) *error = std::strerror(errno);
+    return std::nullopt;
+  }
+  std::string text;
+  char buffer[1 << 16];
+  std::size_t got;
+  while ((got = std::fread(buffer, 1, sizeof buffer, handle)) > 0) text.append(buffer, got);
+  const bool failed = std::ferror(handle) != 0;
+  std::fclose(handle);
+  if (failed) {
+    if (error) *error = "read error";
+    return std::nullopt;
+  }
+  SourceFile file;
+  file.path = path;
+  file.display_name = path;
+  file.text = std::move(text);
+  file.included_from = included_from;
+  files_.push_back(std::move(file));
+  return static_cast<std::uint32_t>(files_.size() - 1);
+}
+
+std::uint32_t SourceManager::add_buffer(std::string display_name, std::string text,
+                                        SourceLoc included_from) {
+  SourceFile file;
+  file.path = display_name;
+  file.display_name = std::move(display_name);
+  file.text = std::move(text);
+  file.included_from = included_from;
+  files_.push_back(std::move(file));
+  return static_cast<std::uint32_t>(files_.size() - 1);
+}
+
+void SourceManager::index_lines(SourceFile& file) const {
+  if (!file.line_starts.empty()) return;
+  file.line_starts.push_back(0);
+  const std::string& text = file.text;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '\n') file.line_starts.push_back(static_cast<std::uint32_t>(i + 1));
+  }
+}
+
+std::string_view SourceManager::line_text(SourceLoc loc) const {
+  if (!loc.valid() || loc.file >= files_.size() || loc.line == 0) return {};
+  SourceFile& file = files_[loc.file];
+  index_lines(file);
+  if (loc.line > file.line_starts.size()) return {};
+  std::size_t begin = file.line_starts[loc.line - 1];
+  std::size_t end = file.text.find('\n', begin);
+  if (end == std::string::npos) end = file.text.size();
+  if (end > begin && file.text[end - 1] == '\r') --end;
+  return std::string_view(file.text).substr(begin, end - begin);
+}
+
+std::string SourceManager::format(SourceLoc loc) const {
+  if (!loc.valid() || loc.file >= files_.size()) return "<unknown>";
+  return fmt::format("{}:{}:{}", files_[loc.file].display_name, loc.line, loc.column);
+}
+
+std::string SourceManager::directory_of(std::uint32_t index) const {
+  std::filesystem::path path(files_[index].path);
+  return path.parent_path().string();
+}
+
+}  // namespace clinch

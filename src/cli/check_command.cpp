@@ -1,0 +1,44 @@
+#include "src/cli/check_command.hpp"
+
+#include <cstdio>
+#include <iostream>
+
+#include <fmt/format.h>
+
+#include "parser/deck_reader.hpp"
+
+namespace clinch {
+
+int run_check(const std::string& deck_path, DiagnosticFormat format) {
+  SourceManager sources;
+  DiagnosticSink sink;
+  Model model;
+  std::string io_error;
+  if (read_deck_file(deck_path, sources, model, sink, &io_error) == ReadStatus::IoError) {
+    if (format == DiagnosticFormat::Json) {
+      std::cout << fmt::format(
+          "[{{\"file\": null, \"line\": null, \"column\": null, \"severity\": \"error\", "
+          "\"code\": \"E0108\", \"name\": \"file-not-found\", \"message\": \"{}\", "
+          "\"notes\": []}}]\n",
+          io_error);
+    }
+    std::cerr << "clinch: error: " << io_error << "\n";
+    return 3;
+  }
+  sink.sort_by_location();
+  if (format == DiagnosticFormat::Json) {
+    std::cout << render_json(sink.diagnostics(), sources) << "\n";
+  } else {
+    for (const Diagnostic& d : sink.diagnostics()) std::cerr << render_text(d, sources);
+    if (sink.dropped_count() > 0) {
+      std::cerr << fmt::format("clinch: note: {} more diagnostics were not shown\n",
+                               sink.dropped_count());
+    }
+    std::cerr << fmt::format("{}: {} error{}, {} warning{}\n", deck_path, sink.error_count(),
+                             sink.error_count() == 1 ? "" : "s", sink.warning_count(),
+                             sink.warning_count() == 1 ? "" : "s");
+  }
+  return sink.has_errors() ? 1 : 0;
+}
+
+}  // namespace clinch

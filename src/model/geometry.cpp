@@ -1,0 +1,363 @@
+// Geometry finalisation: set operations replayed, element node labels resolved, instances placed
+// and the global node and element arrays built (input-syntax.md §7).
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "parser/diagnostic.hpp"
+#include "parser/suggest.hpp"
+#include "src/model/model.hpp"
+#include "src/model/validate.hpp"
+
+namespace clinch {
+
+const char* element_type_name(ElementType type) {
+  switch (type) {
+    case ElementType::Conn3D2: return "CONN3D2";
+    case ElementType::Conn2D2: return "CONN2D2";
+    case ElementType::SpringA: return "SPRINGA";
+    case ElementType::Spring1: return "SPRING1";
+    case ElementType::Spring2: return "SPRING2";
+  }
+  return "?";
+}
+
+Vec3 Instance::rotate(const Vec3& v) const {
+  Vec3 out{};
+  for (int i = 0; i < 3; ++i) {
+    out[i] = rotation[i][0] * v[0] + rotation[i][1] * v[1] + rotation[i][2] * v[2];
+  }
+  return out;
+}
+
+Vec3 Instance::place(const Vec3& x) const {
+  Vec3 shifted{x[0] + translation[0] - axis_point[0], x[1] + translation[1] - axis_point[1],
+               x[2] + translation[2] - axis_point[2]};
+  Vec3 r = rotate(shifted);
+  return {axis_point[0] + r[0], axis_point[1] + r[1], axis_point[2] + r[2]};
+}
+
+Model::Model() {
+  parts.emplace_back();
+  instances.emplace_back();
+}
+
+namespace {
+
+std::vector<std::string> instance_names(const Model& model) {
+  std::vector<std::string> names;
+  for (const Instance& i : model.instances) {
+    if (!i.name.empty()) names.push_back(i.name.display);
+  }
+  return names;
+}
+
+// The instance a qualifier names, or −1 with E0508 reported.
+std::int32_t find_instance(const Model& model, const std::string& key,
+                           const std::string& display, SourceLoc loc, DiagnosticSink& sink) {
+  auto it = model.instance_by_key.find(key);
+  if (it != model.instance_by_key.end()) return it->second;
+  Diagnostic& d = sink.report(DiagCode::undefined_instance, loc,
+                              fmt::format("'{}' is not an instance of the assembly", display));
+  if (auto guess = closest_match(display, instance_names(model))) {
+    d.notes.push_back({loc, fmt::format("did you mean '{}'?", *guess)});
+  }
+  return -1;
+}
+
+void report_undefined_set(const Part& part, bool element_set, const std::string& display,
+                          SourceLoc loc, const std::string& where, DiagnosticSink& sink) {
+  Diagnostic& d = sink.report(DiagCode::undefined_set, loc,
+                              fmt::format("undefined {} set '{}'{}",
+                                          element_set ? "element" : "node", display, where));
+  std::vector<std::string> names;
+  for (const auto& [key, set] : element_set ? part.element_sets : part.node_sets) {
+    names.push_back(set.name.display);
+  }
+  std::sort(names.begin(), names.end());
+  if (auto guess = closest_match(display, names)) {
+    const bool case_only = folded_edit_distance(*guess, display) == 0;
+    d.notes.push_back({loc, fmt::format("did you mean '{}'?{}", *guess,
+                                        case_only ? " (quoted names are case-sensitive)" : "")});
+  }
+}
+
+void replay_set_operations(Model& model, std::int32_t part_index, DiagnosticSink& sink) {
+  Part& part = model.parts[part_index];
+  for (const SetOperation& op : part.set_operations) {
+    auto& sets = op.element_set ? part.element_sets : part.node_sets;
+    Set& target = sets[op.target_key];
+    // Members of a root-part set are global indices; an INSTANCE= qualifier selects the
+    // labels of that instance.
+    const Part* source_part = &part;
+    std::int32_t offset = 0;
+    if (!op.instance_key.empty()) {
+      std::int32_t inst = find_instance(model, op.instance_key, op.instance_display, op.loc, sink);
+      if (inst < 0) continue;
+      source_part = &model.parts[model.instances[inst].part];
+      offset = op.element_set ? model.instances[inst].element_offset
+                              : model.instances[inst].node_offset;
+    }
+    const LabelIndex& index = op.element_set ? source_part->element_index
+                                             : source_part->node_index;
+    switch (op.kind) {
+      case SetOperation::Kind::Label: {
+        std::int32_t found = index.find(op.first);
+        if (found == LabelIndex::kMissing) {
+          sink.report(op.element_set ? DiagCode::undefined_element : DiagCode::undefined_node,
+                      op.loc,
+                      fmt::format("{} {} is not defined{}", op.element_set ? "element" : "node",
+                                  op.first,
+                                  op.instance_key.empty()
+                                      ? std::string()
+                                      : fmt::format(" in instance '{}'", op.instance_display)));
+          target.defined_ok = false;
+          continue;
+        }
+        target.members.push_back(found + offset);
+        break;
+      }
+      case SetOperation::Kind::Range: {
+        std::int32_t skipped = 0;
+        for (std::int64_t label = op.first; label <= op.last; label += op.increment) {
+          std::int32_t found = index.find(static_cast<std::int32_t>(label));
+          if (found == LabelIndex::kMissing) {
+            ++skipped;
+          } else {
+            target.members.push_back(found + offset);
+          }
+        }
+        if (skipped) {
+          sink.report(DiagCode::generate_undefined_labels, op.loc,
+                      fmt::format("{} labels in range {}-{} are not defined and were skipped",
+                                  skipped, op.first, op.last));
+        }
+        break;
+      }
+      case SetOperation::Kind::SetName: {
+        const auto& source_sets = op.element_set ? source_part->element_sets
+                                                 : source_part->node_sets;
+        auto it = source_sets.find(op.source_key);
+        if (it == source_sets.end()) {
+          report_undefined_set(*source_part, op.element_set, op.source_display, op.loc, "", sink);
+          target.defined_ok = false;
+          continue;
+        }
+        std::vector<std::int32_t> copy = it->second.members;
+        for (std::int32_t m : copy) target.members.push_back(m + offset);
+        break;
+      }
+      case SetOperation::Kind::ElementNodes: {
+        auto it = source_part->element_sets.find(op.source_key);
+        if (it == source_part->element_sets.end()) {
+          report_undefined_set(*source_part, true, op.source_display, op.loc, "", sink);
+          target.defined_ok = false;
+          continue;
+        }
+        for (std::int32_t e : it->second.members) {
+          // Root-part element sets may hold instance elements (global indices): their nodes
+          // are global already once the arrays are built, so use the local element.
+          const Element& element = part.elements.size() > static_cast<std::size_t>(e)
+                                       ? part.elements[e]
+                                       : model.elements[e];
+          for (std::int32_t n : element.nodes) {
+            if (n != kGround) target.members.push_back(n + offset);
+          }
+        }
+        break;
+      }
+    }
+  }
+  part.set_operations.clear();
+  part.set_operations.shrink_to_fit();
+  // Duplicates within a set are dropped (input-syntax.md §7.4); members in ascending order.
+  for (auto* sets : {&part.node_sets, &part.element_sets}) {
+    for (auto& [key, set] : *sets) {
+      std::sort(set.members.begin(), set.members.end());
+      set.members.erase(std::unique(set.members.begin(), set.members.end()), set.members.end());
+    }
+  }
+}
+
+// Element node labels → part-local node indices (root part: global indices).
+void resolve_element_nodes(Model& model, std::int32_t part_index, DiagnosticSink& sink) {
+  Part& part = model.parts[part_index];
+  std::vector<bool> qualified(part.elements.size() * 2, false);
+  for (const Part::QualifiedNode& q : part.qualified_nodes) {
+    qualified[static_cast<std::size_t>(q.element) * 2 + q.slot] = true;
+  }
+  for (std::size_t e = 0; e < part.elements.size(); ++e) {
+    Element& element = part.elements[e];
+    for (int slot = 0; slot < 2; ++slot) {
+      if (element.nodes[slot] == kGround || qualified[e * 2 + slot]) continue;
+      std::int32_t found = part.node_index.find(element.nodes[slot]);
+      if (found == LabelIndex::kMissing) {
+        sink.report(DiagCode::undefined_node, {element.file, element.line,
+                                                element.node_columns[slot]},
+                    fmt::format("node {} is not defined{}", element.nodes[slot],
+                                part_index ? fmt::format(" in part '{}'", part.name.display)
+                                           : std::string()));
+        element.nodes[slot] = kGround;
+        continue;
+      }
+      element.nodes[slot] = found;
+    }
+  }
+  for (const Part::QualifiedNode& q : part.qualified_nodes) {
+    Element& element = part.elements[q.element];
+    std::int32_t inst = find_instance(model, q.instance_key, q.instance_display, q.loc, sink);
+    if (inst < 0) {
+      element.nodes[q.slot] = kGround;
+      continue;
+    }
+    const Instance& instance = model.instances[inst];
+    std::int32_t found = model.parts[instance.part].node_index.find(q.label);
+    if (found == LabelIndex::kMissing) {
+      sink.report(DiagCode::undefined_node, q.loc,
+                  fmt::format("node {} is not defined in instance '{}'", q.label,
+                              q.instance_display));
+      element.nodes[q.slot] = kGround;
+      continue;
+    }
+    element.nodes[q.slot] = instance.node_offset + found;
+  }
+  part.qualified_nodes.clear();
+}
+
+}  // namespace
+
+void finalize_geometry(Model& model, DiagnosticSink& sink) {
+  // Offsets of every instance in the global arrays: the root first, then instances 1…
+  std::int32_t nodes = 0, elements = 0;
+  for (Instance& instance : model.instances) {
+    instance.node_offset = nodes;
+    instance.element_offset = elements;
+    nodes += static_cast<std::int32_t>(model.parts[instance.part].nodes.size());
+    elements += static_cast<std::int32_t>(model.parts[instance.part].elements.size());
+  }
+  for (std::int32_t p = 1; p < static_cast<std::int32_t>(model.parts.size()); ++p) {
+    resolve_element_nodes(model, p, sink);
+    replay_set_operations(model, p, sink);
+  }
+  resolve_element_nodes(model, 0, sink);
+
+  model.nodes.clear();
+  model.elements.clear();
+  model.nodes.reserve(static_cast<std::size_t>(nodes));
+  model.elements.reserve(static_cast<std::size_t>(elements));
+  for (std::int32_t i = 0; i < static_cast<std::int32_t>(model.instances.size()); ++i) {
+    const Instance& instance = model.instances[i];
+    const Part& part = model.parts[instance.part];
+    const bool placed = i != 0;
+    for (Node node : part.nodes) {
+      node.instance = i;
+      if (placed) node.x = instance.place(node.x);
+      model.nodes.push_back(node);
+    }
+    for (Element element : part.elements) {
+      element.instance = i;
+      if (placed) {
+        for (std::int32_t& n : element.nodes) {
+          if (n != kGround) n += instance.node_offset;
+        }
+      }
+      model.elements.push_back(element);
+    }
+  }
+  // Root-part sets may name instance members, so they are replayed last.
+  replay_set_operations(model, 0, sink);
+  for (const Element& element : model.elements) {
+    if (element.type == ElementType::Conn2D2) model.dimension = 2;
+  }
+  // The root part's node and element data are now in the global arrays; keep the root part's
+  // label maps (they index the same positions, since the root instance comes first).
+}
+
+namespace {
+
+bool resolve(const Model& model, const TargetRef& ref, bool element_kind,
+             std::vector<std::int32_t>& out, DiagnosticSink& sink) {
+  out.clear();
+  // Instances whose copies the reference denotes, with the part to look the name up in.
+  std::vector<std::int32_t> instances;
+  std::int32_t lookup_part = ref.part;
+  if (!ref.instance_key.empty()) {
+    std::int32_t inst = find_instance(model, ref.instance_key, ref.instance_display, ref.loc,
+                                      sink);
+    if (inst < 0) return false;
+    instances.push_back(inst);
+    lookup_part = model.instances[inst].part;
+  } else if (ref.part == 0) {
+    instances.push_back(0);
+  } else {
+    for (std::int32_t i = 0; i < static_cast<std::int32_t>(model.instances.size()); ++i) {
+      if (model.instances[i].part == ref.part && i != 0) instances.push_back(i);
+    }
+  }
+  const Part& part = model.parts[lookup_part];
+  std::vector<std::int32_t> local;
+  if (ref.is_label) {
+    const LabelIndex& index = element_kind ? part.element_index : part.node_index;
+    std::int32_t found = index.find(ref.label);
+    if (found == LabelIndex::kMissing) {
+      sink.report(element_kind ? DiagCode::undefined_element : DiagCode::undefined_node, ref.loc,
+                  fmt::format("{} {} is not defined{}", element_kind ? "element" : "node",
+                              ref.label,
+                              ref.instance_key.empty()
+                                  ? std::string()
+                                  : fmt::format(" in instance '{}'", ref.instance_display)));
+      return false;
+    }
+    local.push_back(found);
+  } else {
+    const auto& sets = element_kind ? part.element_sets : part.node_sets;
+    auto it = sets.find(ref.set_key);
+    if (it == sets.end()) {
+      report_undefined_set(part, element_kind, ref.set_display, ref.loc,
+                           ref.instance_key.empty()
+                               ? std::string()
+                               : fmt::format(" in instance '{}'", ref.instance_display),
+                           sink);
+      return false;
+    }
+    if (!it->second.defined_ok && it->second.members.empty()) return false;
+    local = it->second.members;
+  }
+  if (lookup_part == 0) {
+    out = std::move(local);  // root-part indices are global
+    return true;
+  }
+  for (std::int32_t inst : instances) {
+    const Instance& instance = model.instances[inst];
+    const std::int32_t offset = element_kind ? instance.element_offset : instance.node_offset;
+    for (std::int32_t m : local) out.push_back(m + offset);
+  }
+  return true;
+}
+
+}  // namespace
+
+bool resolve_nodes(const Model& model, const TargetRef& ref, std::vector<std::int32_t>& out,
+                   DiagnosticSink& sink) {
+  return resolve(model, ref, false, out, sink);
+}
+
+bool resolve_elements(const Model& model, const TargetRef& ref, std::vector<std::int32_t>& out,
+                      DiagnosticSink& sink) {
+  return resolve(model, ref, true, out, sink);
+}
+
+std::string describe(const TargetRef& ref, bool element) {
+  std::string prefix = ref.instance_key.empty() ? "" : ref.instance_display + ".";
+  if (ref.is_label) {
+    return fmt::format("{} {}{}", element ? "element" : "node", prefix, ref.label);
+  }
+  return fmt::format("{} set '{}{}'", element ? "element" : "node", prefix, ref.set_display);
+}
+
+std::string qualified_label(const Model& model, std::int32_t instance, std::int32_t label) {
+  if (instance <= 0) return std::to_string(label);
+  return model.instances[instance].name.display + "." + std::to_string(label);
+}
+
+}  // namespace clinch

@@ -1,0 +1,115 @@
+// Plain data for nodes, elements, sets, parts and instances. A flat deck has one implicit part
+// (index 0, the "root") and one implicit instance of it; in a part–assembly deck the root part
+// holds the assembly-level definitions and instances 1.. place the parts (input-syntax.md §7).
+// After reading, Model::nodes/elements hold every node and element in global numbering.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+
+#include "src/model/label_index.hpp"
+#include <vector>
+
+#include "src/model/name.hpp"
+
+namespace clinch {
+
+using Vec3 = std::array<double, 3>;
+using Mat3 = std::array<std::array<double, 3>, 3>;
+
+enum class ElementType : std::uint8_t { Conn3D2, Conn2D2, SpringA, Spring1, Spring2 };
+const char* element_type_name(ElementType type);
+inline bool is_connector(ElementType t) {
+  return t == ElementType::Conn3D2 || t == ElementType::Conn2D2;
+}
+inline bool is_spring(ElementType t) { return !is_connector(t); }
+
+constexpr std::int32_t kGround = -1;  // connector end connected to ground (keywords.md §3)
+
+struct Node {
+  std::int32_t label = 0;
+  std::int32_t instance = 0;  // global arrays: instance that owns it (0 = root)
+  Vec3 x{};
+  std::uint32_t line = 0;     // data line of the definition (file from `file`)
+  std::uint32_t file = 0;
+  SourceLoc loc() const { return {file, line, 1}; }
+};
+
+struct Element {
+  std::int32_t label = 0;
+  std::int32_t instance = 0;
+  ElementType type = ElementType::Conn3D2;
+  // Part-local node indices while reading a part; global indices in Model::elements.
+  // kGround for a grounded connector end, and for the unused second node of SPRING1.
+  std::array<std::int32_t, 2> nodes{kGround, kGround};
+  std::uint32_t line = 0;
+  std::uint32_t file = 0;
+  std::uint32_t keyword_line = 0;  // the *ELEMENT line (E0514 is reported there)
+  std::array<std::uint16_t, 2> node_columns{0, 0};  // columns of the node fields (diagnostics)
+  SourceLoc loc() const { return {file, line, 1}; }
+  SourceLoc keyword_loc() const { return {file, keyword_line, 1}; }
+};
+
+// A node or element set: members are indices into the owning part's arrays (global indices for
+// root-part sets, which may also hold members of instances).
+struct Set {
+  Name name;
+  std::vector<std::int32_t> members;
+  bool defined_ok = true;  // false when its definition failed (later uses stay silent)
+};
+
+// A set definition step recorded while reading and replayed in deck order once every label is
+// known (labels may refer to later definitions; a set name copies the members it has at that
+// point, input-syntax.md §7.4).
+struct SetOperation {
+  enum class Kind : std::uint8_t { Label, SetName, Range, ElementNodes };
+  Kind kind = Kind::Label;
+  bool element_set = false;  // target is an element set
+  std::string target_key;    // set being defined
+  std::string source_key;    // SetName / ElementNodes: the set named on the line
+  std::string source_display;
+  std::string instance_key;  // INSTANCE= or a qualifier: labels of that instance
+  std::string instance_display;
+  std::int32_t first = 0, last = 0, increment = 1;  // Label: first; Range: all three
+  SourceLoc loc;
+};
+
+struct Part {
+  Name name;  // empty for the root part
+  SourceLoc loc;
+  std::vector<Node> nodes;
+  std::vector<Element> elements;
+  LabelIndex node_index;     // label → index in nodes
+  LabelIndex element_index;  // label → index in elements
+  std::unordered_map<std::string, Set> node_sets;                 // key → set
+  std::unordered_map<std::string, Set> element_sets;
+  std::vector<SetOperation> set_operations;
+  // Node fields of element lines that are instance-qualified (root part only): resolved once
+  // instances are placed.
+  struct QualifiedNode {
+    std::int32_t element;
+    int slot;
+    std::string instance_key, instance_display;
+    std::int32_t label;
+    SourceLoc loc;
+  };
+  std::vector<QualifiedNode> qualified_nodes;
+};
+
+struct Instance {
+  Name name;  // empty for the root instance
+  SourceLoc loc;
+  std::int32_t part = 0;
+  Vec3 translation{};
+  Mat3 rotation{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+  Vec3 axis_point{};  // point a of the rotation axis (after translation)
+  std::int32_t node_offset = 0;
+  std::int32_t element_offset = 0;
+  // Places a part coordinate: x' = a + R (x + t − a) (input-syntax.md §7.2).
+  Vec3 place(const Vec3& x) const;
+  Vec3 rotate(const Vec3& v) const;
+};
+
+}  // namespace clinch

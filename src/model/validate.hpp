@@ -1,0 +1,24 @@
+// Whole-model validation: everything that needs the complete model (references, sections,
+// behaviour rules, steps), run by `clinch check` and before every run. Each family has its own
+// function; validate_model runs them in dependency order.
+#pragma once
+
+namespace clinch {
+
+class DiagnosticSink;
+struct Model;
+
+// Resolves node and element references, places instances, builds the global arrays.
+void finalize_geometry(Model& model, DiagnosticSink& sink);
+// Sections, orientations, springs: types, element kinds, section_of_element, behaviour refs.
+void validate_sections(Model& model, DiagnosticSink& sink);
+// Behaviour rules of behaviors.md (attachment, duplicates, components available).
+void validate_behaviors(Model& model, DiagnosticSink& sink);
+// Derived components, potentials and friction (derived-components-and-potentials.md, friction.md).
+void validate_potentials_and_friction(Model& model, DiagnosticSink& sink);
+// Amplitudes, steps, conditions, loads and output requests (keywords.md §8–§18).
+void validate_history(Model& model, DiagnosticSink& sink);
+
+void validate_model(Model& model, DiagnosticSink& sink);
+
+}  // namespace clinch

@@ -1,0 +1,119 @@
+// Runs every bad deck under tests/diagnostics/ through the reader and checks its diagnostics
+// against the expectations written in its ** comments (ARCHITECTURE.md, testing habit 5):
+//   ** expected-error@+1 {{message substring}}      error on the next line
+//   ** expected-warning@-2:14 {{...}}              warning two lines up, at column 14
+// Offsets are relative to the comment line (none or @+0: that line). Every error and warning
+// produced must be expected, and every expectation must be met, in every file the deck reads.
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "parser/deck_reader.hpp"
+
+namespace clinch {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Expectation {
+  std::uint32_t file;
+  Severity severity;
+  std::uint32_t line;
+  std::uint32_t column;  // 0: any
+  std::string text;
+  bool met = false;
+};
+
+std::vector<Expectation> parse_expectations(const SourceManager& sources) {
+  static const std::regex pattern(
+      R"(expected-(error|warning)(@([+-]?\d+))?(:(\d+))?\s*\{\{(.*?)\}\})");
+  std::vector<Expectation> out;
+  for (std::uint32_t f = 0; f < sources.file_count(); ++f) {
+    std::istringstream text(sources.file(f).text);
+    std::string line;
+    std::uint32_t number = 0;
+    while (std::getline(text, line)) {
+      ++number;
+      if (line.rfind("**", 0) != 0) continue;
+      for (auto it = std::sregex_iterator(line.begin(), line.end(), pattern);
+           it != std::sregex_iterator(); ++it) {
+        const std::smatch& m = *it;
+        Expectation e;
+        e.file = f;
+        e.severity = m[1] == "error" ? Severity::Error : Severity::Warning;
+        const long offset = m[3].matched ? std::stol(m[3]) : 0;
+        e.line = static_cast<std::uint32_t>(static_cast<long>(number) + offset);
+        e.column = m[5].matched ? static_cast<std::uint32_t>(std::stoul(m[5])) : 0;
+        e.text = m[6];
+        out.push_back(e);
+      }
+    }
+  }
+  return out;
+}
+
+std::vector<fs::path> diagnostic_decks() {
+  std::vector<fs::path> decks;
+  fs::path dir = fs::path(CLINCH_SOURCE_DIR) / "tests" / "diagnostics";
+  if (!fs::exists(dir)) return decks;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    if (entry.path().extension() == ".inp") decks.push_back(entry.path());
+  }
+  std::sort(decks.begin(), decks.end());
+  return decks;
+}
+
+class DiagnosticDeck : public ::testing::TestWithParam<fs::path> {};
+
+TEST_P(DiagnosticDeck, ProducesExactlyTheExpectedDiagnostics) {
+  SourceManager sources;
+  DiagnosticSink sink;
+  Model model;
+  std::string io_error;
+  ASSERT_EQ(read_deck_file(GetParam().string(), sources, model, sink, &io_error), ReadStatus::Ok)
+      << io_error;
+  std::vector<Expectation> expectations = parse_expectations(sources);
+  ASSERT_FALSE(expectations.empty()) << "a diagnostics deck must expect at least one diagnostic";
+  for (const Diagnostic& d : sink.diagnostics()) {
+    bool matched = false;
+    for (Expectation& e : expectations) {
+      if (e.met || e.severity != d.severity || e.file != d.loc.file || e.line != d.loc.line) {
+        continue;
+      }
+      if (e.column && e.column != d.loc.column) continue;
+      if (d.message.find(e.text) == std::string::npos &&
+          std::string(diag_code_name(d.code)).find(e.text) == std::string::npos) {
+        continue;
+      }
+      e.met = matched = true;
+      break;
+    }
+    EXPECT_TRUE(matched) << "unexpected " << render_text(d, sources);
+  }
+  for (const Expectation& e : expectations) {
+    EXPECT_TRUE(e.met) << "expected " << (e.severity == Severity::Error ? "error" : "warning")
+                       << " not produced: " << sources.file(e.file).display_name << ":"
+                       << e.line << (e.column ? ":" + std::to_string(e.column) : "")
+                       << " {{" << e.text << "}}";
+  }
+}
+
+std::string deck_name(const ::testing::TestParamInfo<fs::path>& info) {
+  std::string name = info.param.stem().string();
+  for (char& c : name) {
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  }
+  return name;
+}
+
+INSTANTIATE_TEST_SUITE_P(Decks, DiagnosticDeck, ::testing::ValuesIn(diagnostic_decks()),
+                         deck_name);
+GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(DiagnosticDeck);
+
+TEST(DiagnosticDecks, ThereAreAtLeastForty) { EXPECT_GE(diagnostic_decks().size(), 40u); }
+
+}  // namespace
+}  // namespace clinch
