@@ -83,6 +83,7 @@ class Reader {
 
   void run(std::uint32_t main_file) {
     main_file_ = main_file;
+    loaded_.emplace(canonical(sources_.file(main_file).path), main_file);
     prepass(main_file);
     parameters_.evaluate(sink_);
     LineStream stream(sources_, sink_);
@@ -149,14 +150,17 @@ class Reader {
   }
 
   std::optional<std::uint32_t> prepass_load(const std::string& path, SourceLoc at) {
+    std::string error;
+    return load_once(path, at, &error);
+  }
+
+  // Each file is read from disk once; both passes (and repeated includes) share its text.
+  std::optional<std::uint32_t> load_once(const std::string& path, SourceLoc at,
+                                         std::string* error) {
     std::string key = canonical(path);
     auto it = loaded_.find(key);
-    if (it != loaded_.end()) {
-      // The same file included twice (not a cycle) is read twice; a cycle stops at the depth cap.
-      return it->second;
-    }
-    std::string error;
-    auto idx = sources_.load(path, at, &error);
+    if (it != loaded_.end()) return it->second;
+    auto idx = sources_.load(path, at, error);
     if (idx) loaded_.emplace(key, *idx);
     return idx;
   }
@@ -167,6 +171,7 @@ class Reader {
     while (true) {
       LineScanner::Kind kind = stream.next();
       if (kind == LineScanner::Kind::End) break;
+      if (stream.scanner().line_rejected() && kind != LineScanner::Kind::Comment) continue;
       switch (kind) {
         case LineScanner::Kind::Comment:
           break;
@@ -280,7 +285,7 @@ class Reader {
       return;
     }
     std::string error;
-    auto idx = sources_.load(path, input->value.loc, &error);
+    auto idx = load_once(path, input->value.loc, &error);
     if (!idx) {
       sink_.report(DiagCode::file_not_found, input->value.loc,
                    fmt::format("cannot open '{}': {}", display_of_file_param(input->value),
@@ -607,7 +612,7 @@ class Reader {
     const Field& value = input_param_->value;
     std::string path = resolve_path(sources_, value.loc.file, value.text);
     std::string error;
-    auto idx = sources_.load(path, value.loc, &error);
+    auto idx = load_once(path, value.loc, &error);
     if (!idx) {
       sink_.report(DiagCode::file_not_found, value.loc,
                    fmt::format("cannot open '{}': {}", value.text, error));
@@ -670,7 +675,7 @@ class Reader {
     block_ctx_->set_line_index(block_data_lines_);
     fields_.clear();
     if (spec.data == DataMode::Fields && !blank) {
-      split_fields(text, loc, fields_, sink_);
+      if (!split_fields(text, loc, fields_, sink_)) return;
       if (text.find('<') != std::string_view::npos) {
         substitution_failed_ = false;
         for (Field& f : fields_) substitute(f);

@@ -1,5 +1,7 @@
 #include "parser/expression.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <charconv>
@@ -10,8 +12,6 @@
 #include <system_error>
 #include <utility>
 #include <vector>
-
-#include <fmt/format.h>
 
 #include "parser/suggest.hpp"
 
@@ -43,9 +43,12 @@ ParamValue ParamValue::make_string(std::string value) {
 
 double ParamValue::as_double() const {
   switch (kind) {
-    case Kind::Int: return static_cast<double>(i);
-    case Kind::Float: return f;
-    case Kind::String: return 0.0;
+    case Kind::Int:
+      return static_cast<double>(i);
+    case Kind::Float:
+      return f;
+    case Kind::String:
+      return 0.0;
   }
   return 0.0;
 }
@@ -60,8 +63,8 @@ std::string float_repr(double x) {
   if (std::isinf(x)) return x < 0 ? "-inf" : "inf";
   std::array<char, 64> buf{};
   // Without a precision, to_chars gives the shortest representation that round-trips.
-  const auto res = std::to_chars(buf.data(), buf.data() + buf.size(), x,
-                                 std::chars_format::scientific);
+  const auto res =
+      std::to_chars(buf.data(), buf.data() + buf.size(), x, std::chars_format::scientific);
   std::string s(buf.data(), res.ptr);
   std::string out;
   if (!s.empty() && s[0] == '-') {
@@ -108,8 +111,8 @@ std::string float_repr(double x) {
 
 // Python repr of a str: single quotes unless the text contains ' and no ".
 std::string string_repr(std::string_view s) {
-  const bool use_double = s.find('\'') != std::string_view::npos &&
-                          s.find('"') == std::string_view::npos;
+  const bool use_double =
+      s.find('\'') != std::string_view::npos && s.find('"') == std::string_view::npos;
   const char quote = use_double ? '"' : '\'';
   std::string out(1, quote);
   for (char c : s) {
@@ -139,9 +142,12 @@ std::string string_repr(std::string_view s) {
 
 std::string ParamValue::to_display() const {
   switch (kind) {
-    case Kind::Int: return std::to_string(i);
-    case Kind::Float: return float_repr(f);
-    case Kind::String: return string_repr(s);
+    case Kind::Int:
+      return std::to_string(i);
+    case Kind::Float:
+      return float_repr(f);
+    case Kind::String:
+      return string_repr(s);
   }
   return {};
 }
@@ -152,8 +158,34 @@ std::string ParamValue::to_display() const {
 namespace {
 
 enum class Fn {
-  Abs, Min, Max, Int, Float, Round, Sqrt, Exp, Log, Log10, Pow, Sin, Cos, Tan, Asin, Acos, Atan,
-  Atan2, Sinh, Cosh, Tanh, Degrees, Radians, Floor, Ceil, Fabs, Fmod, Hypot
+  Abs,
+  Min,
+  Max,
+  Int,
+  Float,
+  Round,
+  Sqrt,
+  Exp,
+  Log,
+  Log10,
+  Pow,
+  Sin,
+  Cos,
+  Tan,
+  Asin,
+  Acos,
+  Atan,
+  Atan2,
+  Sinh,
+  Cosh,
+  Tanh,
+  Degrees,
+  Radians,
+  Floor,
+  Ceil,
+  Fabs,
+  Fmod,
+  Hypot
 };
 
 struct FnInfo {
@@ -167,20 +199,16 @@ struct FnInfo {
 // which hide the built-in pow), so it always returns a float. hypot takes exactly two arguments,
 // as in Python 2 (Python ≥ 3.8 accepts any number; two is the portable form).
 constexpr std::array<FnInfo, 28> kFunctions = {{
-    {"abs", Fn::Abs, 1, 1},         {"min", Fn::Min, 2, -1},
-    {"max", Fn::Max, 2, -1},        {"int", Fn::Int, 1, 1},
-    {"float", Fn::Float, 1, 1},     {"round", Fn::Round, 1, 2},
-    {"sqrt", Fn::Sqrt, 1, 1},       {"exp", Fn::Exp, 1, 1},
-    {"log", Fn::Log, 1, 2},         {"log10", Fn::Log10, 1, 1},
-    {"pow", Fn::Pow, 2, 2},         {"sin", Fn::Sin, 1, 1},
-    {"cos", Fn::Cos, 1, 1},         {"tan", Fn::Tan, 1, 1},
-    {"asin", Fn::Asin, 1, 1},       {"acos", Fn::Acos, 1, 1},
-    {"atan", Fn::Atan, 1, 1},       {"atan2", Fn::Atan2, 2, 2},
-    {"sinh", Fn::Sinh, 1, 1},       {"cosh", Fn::Cosh, 1, 1},
-    {"tanh", Fn::Tanh, 1, 1},       {"degrees", Fn::Degrees, 1, 1},
-    {"radians", Fn::Radians, 1, 1}, {"floor", Fn::Floor, 1, 1},
-    {"ceil", Fn::Ceil, 1, 1},       {"fabs", Fn::Fabs, 1, 1},
-    {"fmod", Fn::Fmod, 2, 2},       {"hypot", Fn::Hypot, 2, 2},
+    {"abs", Fn::Abs, 1, 1},         {"min", Fn::Min, 2, -1},        {"max", Fn::Max, 2, -1},
+    {"int", Fn::Int, 1, 1},         {"float", Fn::Float, 1, 1},     {"round", Fn::Round, 1, 2},
+    {"sqrt", Fn::Sqrt, 1, 1},       {"exp", Fn::Exp, 1, 1},         {"log", Fn::Log, 1, 2},
+    {"log10", Fn::Log10, 1, 1},     {"pow", Fn::Pow, 2, 2},         {"sin", Fn::Sin, 1, 1},
+    {"cos", Fn::Cos, 1, 1},         {"tan", Fn::Tan, 1, 1},         {"asin", Fn::Asin, 1, 1},
+    {"acos", Fn::Acos, 1, 1},       {"atan", Fn::Atan, 1, 1},       {"atan2", Fn::Atan2, 2, 2},
+    {"sinh", Fn::Sinh, 1, 1},       {"cosh", Fn::Cosh, 1, 1},       {"tanh", Fn::Tanh, 1, 1},
+    {"degrees", Fn::Degrees, 1, 1}, {"radians", Fn::Radians, 1, 1}, {"floor", Fn::Floor, 1, 1},
+    {"ceil", Fn::Ceil, 1, 1},       {"fabs", Fn::Fabs, 1, 1},       {"fmod", Fn::Fmod, 2, 2},
+    {"hypot", Fn::Hypot, 2, 2},
 }};
 
 const FnInfo* find_function(std::string_view name) {
@@ -198,10 +226,10 @@ std::optional<double> builtin_constant(std::string_view name) {
 }
 
 constexpr std::array<std::string_view, 35> kKeywords = {
-    "and",   "as",   "assert", "async", "await",    "break",  "class", "continue", "def",
-    "del",   "elif", "else",   "except", "False",   "finally", "for",  "from",     "global",
-    "if",    "import", "in",   "is",    "lambda",   "None",   "nonlocal", "not",   "or",
-    "pass",  "raise", "return", "True", "try",      "while",  "with",  "yield"};
+    "and",  "as",     "assert", "async",  "await",  "break",   "class",    "continue", "def",
+    "del",  "elif",   "else",   "except", "False",  "finally", "for",      "from",     "global",
+    "if",   "import", "in",     "is",     "lambda", "None",    "nonlocal", "not",      "or",
+    "pass", "raise",  "return", "True",   "try",    "while",   "with",     "yield"};
 
 }  // namespace
 
@@ -216,9 +244,7 @@ bool is_python_keyword(std::string_view name) {
 
 namespace {
 
-bool is_ident_start(char c) {
-  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
-}
+bool is_ident_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
 bool is_ident_char(char c) { return is_ident_start(c) || (c >= '0' && c <= '9'); }
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 bool is_blank(char c) {
@@ -242,8 +268,8 @@ namespace {
 // quote_pos, or nullopt when it is not closed on this line.
 std::optional<std::size_t> string_end(std::string_view text, std::size_t quote_pos) {
   const char quote = text[quote_pos];
-  const bool triple = quote_pos + 2 < text.size() && text[quote_pos + 1] == quote &&
-                      text[quote_pos + 2] == quote;
+  const bool triple =
+      quote_pos + 2 < text.size() && text[quote_pos + 1] == quote && text[quote_pos + 2] == quote;
   std::size_t k = quote_pos + (triple ? 3 : 1);
   while (k < text.size()) {
     // A backslash keeps the next character inside the string, in raw strings too (Python).
@@ -303,7 +329,7 @@ struct Token {
   Tok kind = Tok::End;
   std::uint32_t pos = 0;
   std::uint32_t len = 0;
-  ParamValue value;       // Number, String
+  ParamValue value;          // Number, String
   bool digits_only = false;  // a plain decimal int literal (for the W0403 suggestion "7.0/2")
   // Number: the literal does not fit (int > 64 bits, float overflows). Reported as E0406 at
   // evaluation, so that a syntax error later in the text still wins (Python compiles first).
@@ -336,6 +362,7 @@ class Lexer {
       if (c == '#') break;  // comment (input-syntax.md §6.2)
       if (is_digit(c) || (c == '.' && k + 1 < text_.size() && is_digit(text_[k + 1]))) {
         if (!lex_number(k)) return finish();
+        k = tokens_.back().pos + tokens_.back().len;
         continue;
       }
       if (is_ident_start(c)) {
@@ -451,9 +478,8 @@ class Lexer {
         error(at, 1, DiagCode::unsupported_expression,
               "complex numbers are not supported in parameter expressions");
       } else if ((c == 'd' || c == 'D') && at + 1 < text_.size() &&
-                 (is_digit(text_[at + 1]) ||
-                  ((text_[at + 1] == '+' || text_[at + 1] == '-') && at + 2 < text_.size() &&
-                   is_digit(text_[at + 2])))) {
+                 (is_digit(text_[at + 1]) || ((text_[at + 1] == '+' || text_[at + 1] == '-') &&
+                                              at + 2 < text_.size() && is_digit(text_[at + 2])))) {
         std::string fixed(text_.substr(start, at - start));
         std::size_t exp_end = at + 1;
         if (text_[exp_end] == '+' || text_[exp_end] == '-') ++exp_end;
@@ -502,8 +528,10 @@ class Lexer {
         value = value * static_cast<unsigned>(base) + static_cast<unsigned>(d);
       }
       Token& t = push(Tok::Number, start, k - start);
-      if (overflow || value > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) {
-        t.overflow = fmt::format("integer {} does not fit in 64 bits", text_.substr(start, k - start));
+      if (overflow ||
+          value > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) {
+        t.overflow =
+            fmt::format("integer {} does not fit in 64 bits", text_.substr(start, k - start));
       } else {
         t.value = ParamValue::make_int(static_cast<std::int64_t>(value));
       }
@@ -593,16 +621,46 @@ class Lexer {
         return (l >= 'a' && l <= 'f') ? l - 'a' + 10 : -1;
       };
       switch (c) {
-        case '\\': out.push_back('\\'); ++k; break;
-        case '\'': out.push_back('\''); ++k; break;
-        case '"': out.push_back('"'); ++k; break;
-        case 'n': out.push_back('\n'); ++k; break;
-        case 't': out.push_back('\t'); ++k; break;
-        case 'r': out.push_back('\r'); ++k; break;
-        case 'a': out.push_back('\a'); ++k; break;
-        case 'b': out.push_back('\b'); ++k; break;
-        case 'f': out.push_back('\f'); ++k; break;
-        case 'v': out.push_back('\v'); ++k; break;
+        case '\\':
+          out.push_back('\\');
+          ++k;
+          break;
+        case '\'':
+          out.push_back('\'');
+          ++k;
+          break;
+        case '"':
+          out.push_back('"');
+          ++k;
+          break;
+        case 'n':
+          out.push_back('\n');
+          ++k;
+          break;
+        case 't':
+          out.push_back('\t');
+          ++k;
+          break;
+        case 'r':
+          out.push_back('\r');
+          ++k;
+          break;
+        case 'a':
+          out.push_back('\a');
+          ++k;
+          break;
+        case 'b':
+          out.push_back('\b');
+          ++k;
+          break;
+        case 'f':
+          out.push_back('\f');
+          ++k;
+          break;
+        case 'v':
+          out.push_back('\v');
+          ++k;
+          break;
         case 'x':
           if (k + 3 < body.size() && hex(body[k + 2]) >= 0 && hex(body[k + 3]) >= 0) {
             out.push_back(static_cast<char>(hex(body[k + 2]) * 16 + hex(body[k + 3])));
@@ -661,7 +719,7 @@ class Lexer {
         text_.substr(quote_pos + open_len, *end - quote_pos - 2 * open_len);
     Token& t = push(Tok::String, start, *end - start);
     t.value = ParamValue::make_string(prefix.find('r') != std::string::npos ? std::string(body)
-                                                                             : decode(body));
+                                                                            : decode(body));
     return true;
   }
 
@@ -719,9 +777,7 @@ class Parser {
   void advance() {
     if (toks_[k_].kind != Tok::End) ++k_;
   }
-  bool is_op(std::string_view op) const {
-    return cur().kind == Tok::Op && tok_text(cur()) == op;
-  }
+  bool is_op(std::string_view op) const { return cur().kind == Tok::Op && tok_text(cur()) == op; }
   bool is_name(std::string_view name) const {
     return cur().kind == Tok::Name && tok_text(cur()) == name;
   }
@@ -1017,7 +1073,8 @@ class Parser {
     if (t.kind == Tok::Error) return fail(t.code, t.pos, t.message);
     if (t.kind == Tok::End && !open_parens_.empty()) return unclosed_paren();
     if (k_ == 0) {
-      if (t.kind == Tok::End) return fail(DiagCode::expression_syntax, t.pos, "expected an expression");
+      if (t.kind == Tok::End)
+        return fail(DiagCode::expression_syntax, t.pos, "expected an expression");
       return fail(DiagCode::expression_syntax, t.pos,
                   fmt::format("expected an expression, got '{}'", shown(t)));
     }
@@ -1058,8 +1115,9 @@ class Parser {
               "'=' is not allowed inside an expression: one assignment per definition");
         }
         if (op == ":=") {
-          return unsupported("assignment expressions (':=') are not supported in parameter "
-                             "expressions");
+          return unsupported(
+              "assignment expressions (':=') are not supported in parameter "
+              "expressions");
         }
         if (op == "&" || op == "|" || op == "^" || op == "<<" || op == ">>" || op == "~") {
           return unsupported("bitwise operators are not supported in parameter expressions");
@@ -1073,7 +1131,8 @@ class Parser {
               op.substr(0, op.size() - 1)));
         }
         if (op == "[") return unsupported("indexing is not supported in parameter expressions");
-        if (op == ".") return unsupported("attribute access is not supported in parameter expressions");
+        if (op == ".")
+          return unsupported("attribute access is not supported in parameter expressions");
         if (op == ")" && open_parens_.empty()) {
           return fail(DiagCode::expression_syntax, pos, "unmatched ')'");
         }
@@ -1082,15 +1141,17 @@ class Parser {
       case Tok::Name: {
         const std::string_view word = tok_text(t);
         if (word == "and" || word == "or") {
-          return unsupported("boolean operators ('and', 'or', 'not') are not supported in "
-                             "parameter expressions");
+          return unsupported(
+              "boolean operators ('and', 'or', 'not') are not supported in "
+              "parameter expressions");
         }
         if (word == "not" || word == "in" || word == "is") {
           return unsupported("comparisons are not supported in parameter expressions");
         }
         if (word == "if" || word == "else") {
-          return unsupported("conditional expressions ('... if ... else ...') are not supported "
-                             "in parameter expressions");
+          return unsupported(
+              "conditional expressions ('... if ... else ...') are not supported "
+              "in parameter expressions");
         }
         if (word == "for" || word == "async") {
           return unsupported("comprehensions are not supported in parameter expressions");
@@ -1204,8 +1265,7 @@ double round_decimal(double x, std::int64_t n) {
 class Evaluator {
  public:
   Evaluator(std::string_view text, SourceLoc loc, const std::vector<Node>& nodes,
-            const ParamLookup& lookup, const ParamDefinedCheck& is_parameter,
-            DiagnosticSink& sink)
+            const ParamLookup& lookup, const ParamDefinedCheck& is_parameter, DiagnosticSink& sink)
       : text_(text),
         loc_(loc),
         nodes_(nodes),
@@ -1218,14 +1278,19 @@ class Evaluator {
     const Node& node = nodes_[static_cast<std::size_t>(index)];
     switch (node.kind) {
       case NodeKind::Literal:
-        if (!node.overflow.empty()) return fail(DiagCode::arithmetic_error, node.pos, node.overflow);
+        if (!node.overflow.empty())
+          return fail(DiagCode::arithmetic_error, node.pos, node.overflow);
         out = node.value;
         return true;
-      case NodeKind::Name: return eval_name(node, out);
-      case NodeKind::Call: return eval_call(node, out);
+      case NodeKind::Name:
+        return eval_name(node, out);
+      case NodeKind::Call:
+        return eval_call(node, out);
       case NodeKind::Negate:
-      case NodeKind::Plus: return eval_unary(node, out);
-      case NodeKind::Chain: return eval_chain(node, out);
+      case NodeKind::Plus:
+        return eval_unary(node, out);
+      case NodeKind::Chain:
+        return eval_chain(node, out);
       case NodeKind::Power: {
         ParamValue base;
         ParamValue exponent;
@@ -1319,12 +1384,18 @@ class Evaluator {
 
   static std::string_view op_text(BinOp op) {
     switch (op) {
-      case BinOp::Add: return "+";
-      case BinOp::Sub: return "-";
-      case BinOp::Mul: return "*";
-      case BinOp::Div: return "/";
-      case BinOp::FloorDiv: return "//";
-      case BinOp::Mod: return "%";
+      case BinOp::Add:
+        return "+";
+      case BinOp::Sub:
+        return "-";
+      case BinOp::Mul:
+        return "*";
+      case BinOp::Div:
+        return "/";
+      case BinOp::FloorDiv:
+        return "//";
+      case BinOp::Mod:
+        return "%";
     }
     return "?";
   }
@@ -1406,15 +1477,18 @@ class Evaluator {
     const double x = a.as_double();
     const double y = b.as_double();
     switch (at.op) {
-      case BinOp::Add: return finite_or_fail(x + y, at.pos, op, out);
-      case BinOp::Sub: return finite_or_fail(x - y, at.pos, op, out);
-      case BinOp::Mul: return finite_or_fail(x * y, at.pos, op, out);
+      case BinOp::Add:
+        return finite_or_fail(x + y, at.pos, op, out);
+      case BinOp::Sub:
+        return finite_or_fail(x - y, at.pos, op, out);
+      case BinOp::Mul:
+        return finite_or_fail(x * y, at.pos, op, out);
       case BinOp::Div: {
         if (y == 0.0) return fail(DiagCode::arithmetic_error, at.pos, "division by zero");
         // For ints up to 2**53 the double quotient is the correctly rounded one Python gives.
         if (!finite_or_fail(x / y, at.pos, op, out)) return false;
-        if (ints && a.i % b.i != 0) warn_integer_division(at, a, b, out, left_begin, left_end, right,
-                                                          left_is_digit_literal);
+        if (ints && a.i % b.i != 0)
+          warn_integer_division(at, a, b, out, left_begin, left_end, right, left_is_digit_literal);
         return true;
       }
       case BinOp::FloorDiv:
@@ -1447,7 +1521,8 @@ class Evaluator {
   // W0403 (input-syntax.md §6.3): int/int that is not exact; Python 2 truncates (floors) it.
   void warn_integer_division(OpAt at, const ParamValue& a, const ParamValue& b,
                              const ParamValue& quotient, std::uint32_t left_begin,
-                             std::uint32_t left_end, const Node& right, bool left_is_digit_literal) {
+                             std::uint32_t left_end, const Node& right,
+                             bool left_is_digit_literal) {
     std::int64_t floored = a.i / b.i;
     if (a.i % b.i != 0 && ((a.i < 0) != (b.i < 0))) --floored;
     const std::string_view left = span(left_begin, left_end);
@@ -1579,9 +1654,9 @@ class Evaluator {
   bool int_result(const Node& node, const std::vector<ParamValue>& args, double value,
                   ParamValue& out) {
     if (!fits_int64(value)) {
-      return fail(DiagCode::arithmetic_error, node.pos,
-                  fmt::format("integer overflow: {} does not fit in 64 bits",
-                              call_text(node.name, args)));
+      return fail(
+          DiagCode::arithmetic_error, node.pos,
+          fmt::format("integer overflow: {} does not fit in 64 bits", call_text(node.name, args)));
     }
     out = ParamValue::make_int(static_cast<std::int64_t>(value));
     return true;
@@ -1645,7 +1720,8 @@ class Evaluator {
       case Fn::Sqrt:
         if (x < 0.0) return domain_error(node, args);
         return float_result(node, args, std::sqrt(x), out);
-      case Fn::Exp: return float_result(node, args, std::exp(x), out);
+      case Fn::Exp:
+        return float_result(node, args, std::exp(x), out);
       case Fn::Log: {
         if (x <= 0.0) return domain_error(node, args);
         if (args.size() == 1) return float_result(node, args, std::log(x), out);
@@ -1670,23 +1746,33 @@ class Evaluator {
           return domain_error(node, args);
         }
         return float_result(node, args, std::pow(x, y), out);
-      case Fn::Sin: return float_result(node, args, std::sin(x), out);
-      case Fn::Cos: return float_result(node, args, std::cos(x), out);
-      case Fn::Tan: return float_result(node, args, std::tan(x), out);
+      case Fn::Sin:
+        return float_result(node, args, std::sin(x), out);
+      case Fn::Cos:
+        return float_result(node, args, std::cos(x), out);
+      case Fn::Tan:
+        return float_result(node, args, std::tan(x), out);
       case Fn::Asin:
         if (x < -1.0 || x > 1.0) return domain_error(node, args);
         return float_result(node, args, std::asin(x), out);
       case Fn::Acos:
         if (x < -1.0 || x > 1.0) return domain_error(node, args);
         return float_result(node, args, std::acos(x), out);
-      case Fn::Atan: return float_result(node, args, std::atan(x), out);
-      case Fn::Atan2: return float_result(node, args, std::atan2(x, y), out);
-      case Fn::Sinh: return float_result(node, args, std::sinh(x), out);
-      case Fn::Cosh: return float_result(node, args, std::cosh(x), out);
-      case Fn::Tanh: return float_result(node, args, std::tanh(x), out);
+      case Fn::Atan:
+        return float_result(node, args, std::atan(x), out);
+      case Fn::Atan2:
+        return float_result(node, args, std::atan2(x, y), out);
+      case Fn::Sinh:
+        return float_result(node, args, std::sinh(x), out);
+      case Fn::Cosh:
+        return float_result(node, args, std::cosh(x), out);
+      case Fn::Tanh:
+        return float_result(node, args, std::tanh(x), out);
       // CPython: degrees(x) = x * (180/pi), radians(x) = x * (pi/180), in that order.
-      case Fn::Degrees: return float_result(node, args, x * (180.0 / 3.141592653589793), out);
-      case Fn::Radians: return float_result(node, args, x * (3.141592653589793 / 180.0), out);
+      case Fn::Degrees:
+        return float_result(node, args, x * (180.0 / 3.141592653589793), out);
+      case Fn::Radians:
+        return float_result(node, args, x * (3.141592653589793 / 180.0), out);
       case Fn::Floor:
         if (a.kind == K::Int) {
           out = a;
@@ -1699,11 +1785,13 @@ class Evaluator {
           return true;
         }
         return int_result(node, args, std::ceil(a.f), out);
-      case Fn::Fabs: return float_result(node, args, std::fabs(x), out);
+      case Fn::Fabs:
+        return float_result(node, args, std::fabs(x), out);
       case Fn::Fmod:
         if (y == 0.0) return domain_error(node, args);
         return float_result(node, args, std::fmod(x, y), out);
-      case Fn::Hypot: return float_result(node, args, std::hypot(x, y), out);
+      case Fn::Hypot:
+        return float_result(node, args, std::hypot(x, y), out);
     }
     return false;
   }
@@ -1734,9 +1822,9 @@ class Evaluator {
     const Int128 result = q * p;
     if (result > std::numeric_limits<std::int64_t>::max() ||
         result < std::numeric_limits<std::int64_t>::min()) {
-      return fail(DiagCode::arithmetic_error, node.pos,
-                  fmt::format("integer overflow: {} does not fit in 64 bits",
-                              call_text(node.name, args)));
+      return fail(
+          DiagCode::arithmetic_error, node.pos,
+          fmt::format("integer overflow: {} does not fit in 64 bits", call_text(node.name, args)));
     }
     out = ParamValue::make_int(static_cast<std::int64_t>(result));
     return true;

@@ -1,6 +1,7 @@
 // The *PARAMETER expression language (input-syntax.md §6.3): a small, Python-compatible subset
 // with int, float and string values. Text is lexed, parsed into a tree and then evaluated, so a
-// syntax error is always reported before any evaluation error, and at most one error per expression.
+// syntax error is always reported before any evaluation error, and at most one error per
+// expression.
 #pragma once
 
 #include <cstddef>

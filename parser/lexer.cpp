@@ -30,9 +30,10 @@ std::string fold_name(std::string_view text) {
   return out;
 }
 
-void split_fields(std::string_view text, SourceLoc loc, std::vector<Field>& fields,
+bool split_fields(std::string_view text, SourceLoc loc, std::vector<Field>& fields,
                   DiagnosticSink& sink) {
   fields.clear();
+  bool clean = true;
   std::size_t i = 0;
   const std::size_t n = text.size();
   bool reported_non_ascii = false;
@@ -52,6 +53,7 @@ void split_fields(std::string_view text, SourceLoc loc, std::vector<Field>& fiel
                       fmt::format("missing closing '\"' in {}", text.substr(i)));
           field.text.append(text.substr(i + 1));
           field.quoted = true;
+          clean = false;
           i = n;
           break;
         }
@@ -79,6 +81,7 @@ void split_fields(std::string_view text, SourceLoc loc, std::vector<Field>& fiel
       }
       if (is_high(c) && !reported_non_ascii) {
         reported_non_ascii = true;
+        clean = false;
         sink.report(DiagCode::non_ascii, loc.shifted(static_cast<std::uint32_t>(i)),
                     fmt::format("non-ASCII character (0x{:02X}) in a data line",
                                 static_cast<unsigned char>(c)));
@@ -94,6 +97,7 @@ void split_fields(std::string_view text, SourceLoc loc, std::vector<Field>& fiel
   }
   // Trailing empty fields are dropped (input-syntax.md §3.1: "12," is "12").
   while (!fields.empty() && fields.back().empty()) fields.pop_back();
+  return clean;
 }
 
 bool parse_keyword_line(const std::vector<KeywordSegment>& segments, KeywordLine& out,
@@ -147,6 +151,7 @@ bool parse_keyword_line(const std::vector<KeywordSegment>& segments, KeywordLine
       return false;
     }
   }
+  bool any_malformed = false;
   for (std::size_t k = 1; k < items.size(); ++k) {
     const Piece& item = items[k];
     std::size_t lead = 0;
@@ -191,6 +196,7 @@ bool parse_keyword_line(const std::vector<KeywordSegment>& segments, KeywordLine
       }
     }
     if (malformed) {
+      any_malformed = true;
       sink.report(DiagCode::malformed_parameter, item_loc,
                   fmt::format("malformed parameter '{}' (expected NAME or NAME=VALUE)", body));
       continue;
@@ -218,7 +224,9 @@ bool parse_keyword_line(const std::vector<KeywordSegment>& segments, KeywordLine
     }
     out.params.push_back(std::move(param));
   }
-  return true;
+  // A keyword line with a malformed parameter is skipped whole: its other checks would only
+  // repeat the fault (input-syntax.md §10).
+  return !any_malformed;
 }
 
 LineScanner::LineScanner(std::string_view text, std::uint32_t file_index, DiagnosticSink& sink)
@@ -237,12 +245,14 @@ LineScanner::Kind LineScanner::next() {
   ++line_number_;
 
   // Control characters (E0107): one report per line. TAB, CR (dropped above) and LF are fine.
+  rejected_ = false;
   for (std::size_t i = 0; i < line_.size(); ++i) {
     unsigned char c = static_cast<unsigned char>(line_[i]);
     if ((c < 0x20 && c != '\t' && c != '\r') || c == 0x7f) {
       sink_.report(DiagCode::control_character,
                    {file_, line_number_, static_cast<std::uint32_t>(i + 1)},
                    fmt::format("control character 0x{:02X} in input", c));
+      rejected_ = true;
       break;
     }
   }

@@ -51,8 +51,9 @@ struct DataLine {
 
 // Splits a data line into fields (input-syntax.md §3.1): commas outside quotes split; blanks
 // trimmed; unquoted inner blanks removed; trailing empty fields dropped. Reports unterminated
-// quotes (E0101), non-ASCII bytes outside quotes (E0103) and, in quotes, W0103.
-void split_fields(std::string_view text, SourceLoc loc, std::vector<Field>& fields,
+// quotes (E0101), non-ASCII bytes outside quotes (E0103) and, in quotes, W0103. Returns false
+// after an error: the caller skips the line rather than report its fields again.
+bool split_fields(std::string_view text, SourceLoc loc, std::vector<Field>& fields,
                   DiagnosticSink& sink);
 
 // Parses the text of a keyword line (continuation lines already appended, each with its own
@@ -79,6 +80,8 @@ class LineScanner {
   SourceLoc loc() const { return {file_, line_number_, 1}; }
   // Column (1-based) of the first non-blank character of the current line.
   std::uint32_t first_non_blank_column() const { return first_non_blank_ + 1; }
+  // The current line had a line-level error (E0107): callers skip it.
+  bool line_rejected() const { return rejected_; }
 
  private:
   std::string_view text_;
@@ -88,6 +91,7 @@ class LineScanner {
   std::string_view line_;
   std::uint32_t first_non_blank_ = 0;
   bool long_line_reported_ = false;
+  bool rejected_ = false;
   DiagnosticSink& sink_;
 };
 

@@ -1,21 +1,21 @@
 #include "parser/parameters.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cctype>
 #include <span>
 #include <utility>
-
-#include <fmt/format.h>
 
 #include "parser/suggest.hpp"
 
 namespace clinch {
 namespace {
 
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\f' || c == '\v' || c == '\r' || c == '\n'; }
-bool is_ident_start(char c) {
-  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+bool is_blank(char c) {
+  return c == ' ' || c == '\t' || c == '\f' || c == '\v' || c == '\r' || c == '\n';
 }
+bool is_ident_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
 bool is_ident_char(char c) { return is_ident_start(c) || (c >= '0' && c <= '9'); }
 
 bool is_identifier(std::string_view s) {
@@ -66,8 +66,8 @@ std::optional<ParameterTable::Definition> ParameterTable::parse_definition(
   auto report = [&](DiagCode code, std::size_t offset, std::string message) {
     sink.report(code, at(line.loc, offset), std::move(message));
   };
-  auto failed_definition = [&](std::size_t target_begin, std::size_t target_end)
-      -> std::optional<Definition> {
+  auto failed_definition = [&](std::size_t target_begin,
+                               std::size_t target_end) -> std::optional<Definition> {
     const std::string_view target = body.substr(target_begin, target_end - target_begin);
     if (!is_identifier(target) || is_python_keyword(target)) return std::nullopt;
     Definition d;
@@ -209,6 +209,7 @@ const ParamValue* ParameterTable::lookup_during(std::size_t def_index, std::stri
   }
   // Not defined yet: defined later in the deck (E0403), or nowhere (E0402). §6.4 item 2.
   if (auto it = definitions_by_name_.find(name); it != definitions_by_name_.end()) {
+    referenced_early_.emplace(name);
     Diagnostic& d = sink.report(DiagCode::parameter_used_before_definition, use_loc,
                                 fmt::format("parameter '{}' is used before it is defined", name));
     const auto later = std::find_if(it->second.begin(), it->second.end(),
@@ -265,7 +266,10 @@ void ParameterTable::evaluate(DiagnosticSink& sink) {
                                   is_parameter);
     }
     Slot& slot = slots_[def.name];
-    if (previous == slots_.end()) slot.first_loc = def.name_loc;
+    if (previous == slots_.end()) {
+      slot.first_loc = def.name_loc;
+      slot.used = referenced_early_.count(def.name) > 0;
+    }
     slot.entry.name = def.name;
     slot.entry.loc = def.name_loc;
     slot.entry.ok = value.has_value();
@@ -300,9 +304,9 @@ void ParameterTable::report_undefined(DiagnosticSink& sink, std::string_view nam
                               fmt::format("undefined parameter '{}'", name));
   if (const auto match = suggest(name)) {
     const bool case_only = equal_ignoring_case(*match, name);
-    d.notes.push_back({SourceLoc{}, fmt::format("did you mean '{}'?{}", *match,
-                                                case_only ? " (parameter names are case-sensitive)"
-                                                          : "")});
+    d.notes.push_back(
+        {SourceLoc{}, fmt::format("did you mean '{}'?{}", *match,
+                                  case_only ? " (parameter names are case-sensitive)" : "")});
   }
 }
 

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -64,14 +65,14 @@ class ParameterTable {
   struct Definition {
     std::string name;
     SourceLoc name_loc;
-    std::size_t line = 0;         // index into lines_
-    std::size_t expr_begin = 0;   // the expression: lines_[line].text[expr_begin, expr_end)
+    std::size_t line = 0;        // index into lines_
+    std::size_t expr_begin = 0;  // the expression: lines_[line].text[expr_begin, expr_end)
     std::size_t expr_end = 0;
-    bool statement_ok = true;     // false: the line was already rejected (E0401/E0407)
+    bool statement_ok = true;  // false: the line was already rejected (E0401/E0407)
   };
   struct Slot {
-    Entry entry;              // the value bound now (during evaluate) or finally (after)
-    SourceLoc first_loc;      // the first definition (where W0402 points)
+    Entry entry;          // the value bound now (during evaluate) or finally (after)
+    SourceLoc first_loc;  // the first definition (where W0402 points)
     bool used = false;
     bool any_failed = false;
   };
@@ -85,6 +86,9 @@ class ParameterTable {
   std::map<std::string, std::vector<std::size_t>, std::less<>> definitions_by_name_;
   std::vector<std::string> names_in_order_;  // each name once, in order of first definition
   std::map<std::string, Slot, std::less<>> slots_;
+  // Names referenced by a definition before their own definition (E0403 reported): they count
+  // as used, so that W0402 does not add a misleading "never used".
+  std::set<std::string, std::less<>> referenced_early_;
   bool has_content_ = false;
   bool evaluated_ = false;
 };

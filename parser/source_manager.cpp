@@ -16,6 +16,11 @@ std::optional<std::uint32_t> SourceManager::load(const std::string& path, Source
     if (error) *error = "Is a directory";
     return std::nullopt;
   }
+  // Devices and pipes (/dev/zero, a FIFO) could block or never end: decks are regular files.
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec)) {
+    if (error) *error = "not a regular file";
+    return std::nullopt;
+  }
   std::FILE* handle = std::fopen(path.c_str(), "rb");
   if (!handle) {
     if (error) *error = std::strerror(errno);

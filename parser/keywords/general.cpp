@@ -48,6 +48,14 @@ std::vector<KeywordSpec> general_keyword_specs() {
   heading.make_handler = [] { return std::unique_ptr<KeywordHandler>(new HeadingHandler); };
   specs.push_back(std::move(heading));
 
+  // *PARAMETER is evaluated in the reader's pre-pass (input-syntax.md §6.4); its block only has
+  // to be recognised here. *INCLUDE is handled by the reader itself.
+  KeywordSpec parameter;
+  parameter.name = "PARAMETER";
+  parameter.level = KeywordLevel::Anywhere;
+  parameter.data = DataMode::Raw;
+  specs.push_back(std::move(parameter));
+
   specs.push_back(no_effect("PREPRINT", KeywordLevel::Model));
   specs.push_back(no_effect("FILE FORMAT", KeywordLevel::ModelOrHistory));
   specs.push_back(no_effect("MONITOR", KeywordLevel::History));
