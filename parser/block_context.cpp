@@ -43,6 +43,18 @@ bool parse_integer_text(std::string_view text, std::int64_t& value) {
 
 bool parse_real_text(std::string_view text, double& value, bool* overflow) {
   if (overflow) *overflow = false;
+  // Fast path: plain C syntax (no D exponent, no '+' sign) goes straight to from_chars, which
+  // accepts the same grammar once the first character is a digit or a '.'. inf, nan and hex
+  // start with a letter or stop early and fall through to the checks below.
+  if (!text.empty() && text.size() < 64) {
+    std::size_t s = text[0] == '-' ? 1 : 0;
+    bool plain = s < text.size() && (is_digit(text[s]) || text[s] == '.');
+    for (char c : text) plain &= (c != 'd') & (c != 'D') & (c != 'x') & (c != 'X');
+    if (plain) {
+      auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+      if (ec == std::errc() && ptr == text.data() + text.size()) return true;
+    }
+  }
   // Grammar: [sign] (digits [. digits*] | . digits) [(e|E|d|D) [sign] digits]
   std::size_t i = 0, n = text.size();
   char buffer[128];

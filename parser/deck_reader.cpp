@@ -504,12 +504,7 @@ class Reader {
       std::string name = t.substr(1, t.size() - 2);
       const ParameterTable::Entry* entry = parameters_.use(name);
       if (!entry) {
-        Diagnostic& d = sink_.report(DiagCode::undefined_parameter, field.loc,
-                                     fmt::format("undefined parameter '{}'", name));
-        if (auto guess = parameters_.suggest(name)) {
-          d.notes.push_back({field.loc, fmt::format("did you mean '{}'? (parameter names are "
-                                                    "case-sensitive)", *guess)});
-        }
+        parameters_.report_undefined(sink_, name, field.loc);
         field.text.clear();
         field.parameter = nullptr;
         substitution_failed_ = true;
@@ -673,7 +668,7 @@ class Reader {
     DataLine line{text, loc, blank};
     ++block_data_lines_;
     block_ctx_->set_line_index(block_data_lines_);
-    fields_.clear();
+    if (blank || spec.data == DataMode::Raw) fields_.clear();
     if (spec.data == DataMode::Fields && !blank) {
       if (!split_fields(text, loc, fields_, sink_)) return;
       if (text.find('<') != std::string_view::npos) {

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <span>
 #include <system_error>
 #include <utility>
 #include <vector>
@@ -157,36 +158,12 @@ std::string ParamValue::to_display() const {
 
 namespace {
 
+// clang-format off
 enum class Fn {
-  Abs,
-  Min,
-  Max,
-  Int,
-  Float,
-  Round,
-  Sqrt,
-  Exp,
-  Log,
-  Log10,
-  Pow,
-  Sin,
-  Cos,
-  Tan,
-  Asin,
-  Acos,
-  Atan,
-  Atan2,
-  Sinh,
-  Cosh,
-  Tanh,
-  Degrees,
-  Radians,
-  Floor,
-  Ceil,
-  Fabs,
-  Fmod,
-  Hypot
+  Abs, Min, Max, Int, Float, Round, Sqrt, Exp, Log, Log10, Pow, Sin, Cos, Tan, Asin, Acos, Atan,
+  Atan2, Sinh, Cosh, Tanh, Degrees, Radians, Floor, Ceil, Fabs, Fmod, Hypot
 };
+// clang-format on
 
 struct FnInfo {
   std::string_view name;
@@ -620,69 +597,28 @@ class Lexer {
         const char l = static_cast<char>(h | 0x20);
         return (l >= 'a' && l <= 'f') ? l - 'a' + 10 : -1;
       };
-      switch (c) {
-        case '\\':
-          out.push_back('\\');
-          ++k;
-          break;
-        case '\'':
-          out.push_back('\'');
-          ++k;
-          break;
-        case '"':
-          out.push_back('"');
-          ++k;
-          break;
-        case 'n':
-          out.push_back('\n');
-          ++k;
-          break;
-        case 't':
-          out.push_back('\t');
-          ++k;
-          break;
-        case 'r':
-          out.push_back('\r');
-          ++k;
-          break;
-        case 'a':
-          out.push_back('\a');
-          ++k;
-          break;
-        case 'b':
-          out.push_back('\b');
-          ++k;
-          break;
-        case 'f':
-          out.push_back('\f');
-          ++k;
-          break;
-        case 'v':
-          out.push_back('\v');
-          ++k;
-          break;
-        case 'x':
-          if (k + 3 < body.size() && hex(body[k + 2]) >= 0 && hex(body[k + 3]) >= 0) {
-            out.push_back(static_cast<char>(hex(body[k + 2]) * 16 + hex(body[k + 3])));
-            k += 3;
-          } else {
-            out.push_back('\\');
-          }
-          break;
-        default:
-          if (c >= '0' && c <= '7') {
-            int value = 0;
-            std::size_t n = 0;
-            while (n < 3 && k + 1 + n < body.size() && body[k + 1 + n] >= '0' &&
-                   body[k + 1 + n] <= '7') {
-              value = value * 8 + (body[k + 1 + n] - '0');
-              ++n;
-            }
-            out.push_back(static_cast<char>(value & 0xff));
-            k += n;
-          } else {
-            out.push_back('\\');
-          }
+      // One-character escapes: the character after the backslash, and what it stands for.
+      constexpr std::string_view kEscaped = "\\'\"ntrabfv";
+      constexpr std::string_view kMeaning = "\\'\"\n\t\r\a\b\f\v";
+      if (const std::size_t e = kEscaped.find(c); e != std::string_view::npos) {
+        out.push_back(kMeaning[e]);
+        ++k;
+      } else if (c == 'x' && k + 3 < body.size() && hex(body[k + 2]) >= 0 &&
+                 hex(body[k + 3]) >= 0) {
+        out.push_back(static_cast<char>(hex(body[k + 2]) * 16 + hex(body[k + 3])));
+        k += 3;
+      } else if (c >= '0' && c <= '7') {
+        int value = 0;
+        std::size_t n = 0;
+        while (n < 3 && k + 1 + n < body.size() && body[k + 1 + n] >= '0' &&
+               body[k + 1 + n] <= '7') {
+          value = value * 8 + (body[k + 1 + n] - '0');
+          ++n;
+        }
+        out.push_back(static_cast<char>(value & 0xff));
+        k += n;
+      } else {
+        out.push_back('\\');
       }
     }
     return out;

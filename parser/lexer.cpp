@@ -19,6 +19,64 @@ std::string_view trim(std::string_view s) {
   return s.substr(b, e - b);
 }
 
+// One field with quotes, inner blanks or non-ASCII bytes, from `i` (first non-blank) to `end`
+// (the comma or the end of the line; a comma inside quotes moves `end` on). Returns false after
+// an error (E0101, E0103).
+bool slow_field(std::string_view text, SourceLoc loc, std::size_t i, std::size_t& end,
+                Field& field, DiagnosticSink& sink) {
+  const std::size_t n = text.size();
+  bool clean = true;
+  bool seen_content = false;
+  std::size_t pending_blanks = 0;
+  while (i < n && text[i] != ',') {
+    const char c = text[i];
+    if (c == '"') {
+      const std::size_t close = text.find('"', i + 1);
+      if (close == std::string_view::npos) {
+        sink.report(DiagCode::unterminated_quote, loc.shifted(static_cast<std::uint32_t>(i)),
+                    fmt::format("missing closing '\"' in {}", text.substr(i)));
+        field.text.append(text.substr(i + 1));
+        field.quoted = true;
+        end = n;
+        return false;
+      }
+      std::string_view inside = text.substr(i + 1, close - i - 1);
+      for (std::size_t k = 0; k < inside.size(); ++k) {
+        if (is_high(inside[k])) {
+          sink.report(DiagCode::non_ascii_text, loc.shifted(static_cast<std::uint32_t>(i + 1 + k)),
+                      "non-ASCII character in quoted name (Abaqus accepts ASCII only)");
+          break;
+        }
+      }
+      if (pending_blanks && seen_content) field.had_inner_blank = true;
+      pending_blanks = 0;
+      field.text.append(inside);
+      field.quoted = true;
+      seen_content = true;
+      i = close + 1;
+      continue;
+    }
+    if (is_blank(c)) {
+      ++pending_blanks;
+      ++i;
+      continue;
+    }
+    if (is_high(c) && clean) {
+      clean = false;
+      sink.report(DiagCode::non_ascii, loc.shifted(static_cast<std::uint32_t>(i)),
+                  fmt::format("non-ASCII character (0x{:02X}) in a data line",
+                              static_cast<unsigned char>(c)));
+    }
+    if (pending_blanks && seen_content) field.had_inner_blank = true;
+    pending_blanks = 0;
+    field.text.push_back(c);
+    seen_content = true;
+    ++i;
+  }
+  end = i;
+  return clean;
+}
+
 }  // namespace
 
 std::string fold_name(std::string_view text) {
@@ -32,71 +90,51 @@ std::string fold_name(std::string_view text) {
 
 bool split_fields(std::string_view text, SourceLoc loc, std::vector<Field>& fields,
                   DiagnosticSink& sink) {
-  fields.clear();
+  // Field objects (and their string buffers) are reused from line to line: no allocation per
+  // field in the bulk of a deck (ARCHITECTURE.md, performance by design).
+  std::size_t used = 0;
   bool clean = true;
-  std::size_t i = 0;
   const std::size_t n = text.size();
-  bool reported_non_ascii = false;
+  const char* data = text.data();
+  std::size_t i = 0;
   while (true) {
-    Field& field = fields.emplace_back();
-    // Leading blanks.
-    while (i < n && is_blank(text[i])) ++i;
+    if (used == fields.size()) fields.emplace_back();
+    Field& field = fields[used++];
+    field.text.clear();
+    field.quoted = false;
+    field.had_inner_blank = false;
+    field.parameter = nullptr;
+    while (i < n && is_blank(data[i])) ++i;
     field.loc = loc.shifted(static_cast<std::uint32_t>(i));
-    bool seen_content = false;
-    std::size_t pending_blanks = 0;
-    while (i < n && text[i] != ',') {
-      char c = text[i];
-      if (c == '"') {
-        std::size_t close = text.find('"', i + 1);
-        if (close == std::string_view::npos) {
-          sink.report(DiagCode::unterminated_quote, loc.shifted(static_cast<std::uint32_t>(i)),
-                      fmt::format("missing closing '\"' in {}", text.substr(i)));
-          field.text.append(text.substr(i + 1));
-          field.quoted = true;
-          clean = false;
-          i = n;
+    // Fast path: a field without quotes, inner blanks or high bytes is copied in one piece.
+    std::size_t end = i;
+    bool simple = true;
+    while (end < n && data[end] != ',') {
+      const char c = data[end];
+      if (c == '"' || is_high(c)) simple = false;
+      ++end;
+    }
+    std::size_t last = end;
+    while (last > i && is_blank(data[last - 1])) --last;
+    if (simple) {
+      for (std::size_t k = i; k < last; ++k) {
+        if (is_blank(data[k])) {
+          simple = false;
           break;
         }
-        std::string_view inside = text.substr(i + 1, close - i - 1);
-        for (std::size_t k = 0; k < inside.size(); ++k) {
-          if (is_high(inside[k]) && !reported_non_ascii) {
-            reported_non_ascii = true;
-            sink.report(DiagCode::non_ascii_text,
-                        loc.shifted(static_cast<std::uint32_t>(i + 1 + k)),
-                        "non-ASCII character in quoted name (Abaqus accepts ASCII only)");
-          }
-        }
-        if (pending_blanks && seen_content) field.had_inner_blank = true;
-        pending_blanks = 0;
-        field.text.append(inside);
-        field.quoted = true;
-        seen_content = true;
-        i = close + 1;
-        continue;
       }
-      if (is_blank(c)) {
-        ++pending_blanks;
-        ++i;
-        continue;
-      }
-      if (is_high(c) && !reported_non_ascii) {
-        reported_non_ascii = true;
-        clean = false;
-        sink.report(DiagCode::non_ascii, loc.shifted(static_cast<std::uint32_t>(i)),
-                    fmt::format("non-ASCII character (0x{:02X}) in a data line",
-                                static_cast<unsigned char>(c)));
-      }
-      if (pending_blanks && seen_content) field.had_inner_blank = true;
-      pending_blanks = 0;
-      field.text.push_back(c);
-      seen_content = true;
-      ++i;
     }
-    if (i >= n) break;
-    ++i;  // the comma
+    if (simple) {
+      field.text.assign(data + i, last - i);
+    } else {
+      clean = slow_field(text, loc, i, end, field, sink) && clean;
+    }
+    if (end >= n) break;
+    i = end + 1;  // past the comma
   }
   // Trailing empty fields are dropped (input-syntax.md §3.1: "12," is "12").
-  while (!fields.empty() && fields.back().empty()) fields.pop_back();
+  while (used > 0 && fields[used - 1].empty()) --used;
+  fields.resize(used);
   return clean;
 }
 
@@ -245,15 +283,23 @@ LineScanner::Kind LineScanner::next() {
   ++line_number_;
 
   // Control characters (E0107): one report per line. TAB, CR (dropped above) and LF are fine.
+  // The branch-free scan lets the compiler vectorise the common, clean case.
   rejected_ = false;
-  for (std::size_t i = 0; i < line_.size(); ++i) {
-    unsigned char c = static_cast<unsigned char>(line_[i]);
-    if ((c < 0x20 && c != '\t' && c != '\r') || c == 0x7f) {
-      sink_.report(DiagCode::control_character,
-                   {file_, line_number_, static_cast<std::uint32_t>(i + 1)},
-                   fmt::format("control character 0x{:02X} in input", c));
-      rejected_ = true;
-      break;
+  unsigned bad = 0;
+  for (char ch : line_) {
+    const auto c = static_cast<unsigned char>(ch);
+    bad |= static_cast<unsigned>((c < 0x20) & (c != '\t')) | static_cast<unsigned>(c == 0x7f);
+  }
+  if (bad) {
+    for (std::size_t i = 0; i < line_.size(); ++i) {
+      const auto c = static_cast<unsigned char>(line_[i]);
+      if ((c < 0x20 && c != '\t') || c == 0x7f) {
+        sink_.report(DiagCode::control_character,
+                     {file_, line_number_, static_cast<std::uint32_t>(i + 1)},
+                     fmt::format("control character 0x{:02X} in input", c));
+        rejected_ = true;
+        break;
+      }
     }
   }
   if (line_.size() > 256 && !long_line_reported_) {

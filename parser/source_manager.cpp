@@ -26,7 +26,11 @@ std::optional<std::uint32_t> SourceManager::load(const std::string& path, Source
     if (error) *error = std::strerror(errno);
     return std::nullopt;
   }
+  // Read in one go when the size is known (a regular file), so the text is allocated once.
   std::string text;
+  std::error_code size_error;
+  const auto size = std::filesystem::file_size(path, size_error);
+  if (!size_error) text.reserve(static_cast<std::size_t>(size) + 1);
   char buffer[1 << 16];
   std::size_t got;
   while ((got = std::fread(buffer, 1, sizeof buffer, handle)) > 0) text.append(buffer, got);
@@ -60,8 +64,13 @@ void SourceManager::index_lines(SourceFile& file) const {
   if (!file.line_starts.empty()) return;
   file.line_starts.push_back(0);
   const std::string& text = file.text;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if (text[i] == '\n') file.line_starts.push_back(static_cast<std::uint32_t>(i + 1));
+  const char* begin = text.data();
+  const char* end = begin + text.size();
+  for (const char* p = begin; p < end;) {
+    const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
+    if (!nl) break;
+    p = static_cast<const char*>(nl) + 1;
+    file.line_starts.push_back(static_cast<std::uint32_t>(p - begin));
   }
 }
 

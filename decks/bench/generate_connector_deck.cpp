@@ -15,7 +15,7 @@ int main(int argc, char** argv) {
   const long n = std::atol(argv[1]);
   if (n < 1) return 3;
   std::printf("*HEADING\nconnector chain of %ld elements (clinch check benchmark)\n", n);
-  std::printf("*PARAMETER\nk = 1.0e4\nradius = 50.0\n");
+  std::printf("*PARAMETER\nk = 1.0e4\n");
   std::printf("*NODE, NSET=ALLN\n");
   for (long i = 1; i <= n + 1; ++i) {
     const double t = 0.01 * static_cast<double>(i);

@@ -30,7 +30,8 @@ class AmplitudeHandler : public KeywordHandler {
     } else if (!definition.empty() && definition != "TABULAR") {
       ctx.report(DiagCode::unsupported_option, params.loc("DEFINITION", true),
                  fmt::format("DEFINITION={} is not supported by clinch (TABULAR, SMOOTH STEP or "
-                             "EQUALLY SPACED)", definition));
+                             "EQUALLY SPACED)",
+                             definition));
       skip_ = true;
     }
     amplitude_.total_time = params.enum_value("TIME") == "TOTAL TIME";
@@ -71,19 +72,18 @@ class AmplitudeHandler : public KeywordHandler {
       // It smooths time derivatives only, which a static step never uses (§8).
       if (auto smooth = ctx.real_param("SMOOTH")) {
         if (*smooth < 0 || *smooth > 0.5) {
-          ctx.report(DiagCode::value_out_of_range, *params.value("SMOOTH"),
-                     fmt::format("SMOOTH must lie in [0, 0.5], got {}",
-                                 params.value("SMOOTH")->text));
+          ctx.report(
+              DiagCode::value_out_of_range, *params.value("SMOOTH"),
+              fmt::format("SMOOTH must lie in [0, 0.5], got {}", params.value("SMOOTH")->text));
         } else {
           ctx.report(DiagCode::parameter_ignored, params.loc("SMOOTH"),
                      "SMOOTH has no effect in a static analysis");
         }
       }
     }
-    for (auto [param, target] : {std::pair{"SCALEX", &amplitude_.scale_x},
-                                 std::pair{"SCALEY", &amplitude_.scale_y},
-                                 std::pair{"SHIFTX", &amplitude_.shift_x},
-                                 std::pair{"SHIFTY", &amplitude_.shift_y}}) {
+    for (auto [param, target] :
+         {std::pair{"SCALEX", &amplitude_.scale_x}, std::pair{"SCALEY", &amplitude_.scale_y},
+          std::pair{"SHIFTX", &amplitude_.shift_x}, std::pair{"SHIFTY", &amplitude_.shift_y}}) {
       if (!params.has(param)) continue;
       if (auto value = ctx.real_param(param)) {
         *target = *value;
@@ -129,16 +129,15 @@ class AmplitudeHandler : public KeywordHandler {
         a.values.push_back(numbers_[i].value);
       }
     } else if (numbers_.size() % 2 != 0) {
-      ctx.report(DiagCode::invalid_amplitude, a.loc,
-                 fmt::format("amplitude '{}' has an odd number of values ({})", name,
-                             numbers_.size()));
+      ctx.report(
+          DiagCode::invalid_amplitude, a.loc,
+          fmt::format("amplitude '{}' has an odd number of values ({})", name, numbers_.size()));
       a.valid = false;
     } else {
       const bool strict = a.definition == AmplitudeDefinition::SmoothStep;
       for (std::size_t i = 0; i + 1 < numbers_.size(); i += 2) {
         const double t = numbers_[i].value;
-        if (!failed_ && !a.times.empty() &&
-            (strict ? t <= a.times.back() : t < a.times.back())) {
+        if (!failed_ && !a.times.empty() && (strict ? t <= a.times.back() : t < a.times.back())) {
           ctx.report(DiagCode::invalid_amplitude, numbers_[i].loc,
                      fmt::format("amplitude times must {} ({} after {})",
                                  strict ? "increase" : "not decrease", t, a.times.back()))
@@ -187,7 +186,9 @@ std::vector<KeywordSpec> amplitude_keyword_specs() {
   amplitude.level = KeywordLevel::ModelOrHistory;
   amplitude.params = {
       {"NAME", ParamKind::Value, true},
-      {"DEFINITION", ParamKind::Enum, false,
+      {"DEFINITION",
+       ParamKind::Enum,
+       false,
        {"TABULAR", "SMOOTH STEP", "EQUALLY SPACED", "PERIODIC", "MODULATED", "DECAY",
         "SOLUTION DEPENDENT", "BUBBLE", "USER", "ACTUATOR"}},
       {"TIME", ParamKind::Enum, false, {"STEP TIME", "TOTAL TIME"}},

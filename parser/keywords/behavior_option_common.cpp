@@ -83,8 +83,6 @@ Extrapolation option_extrapolation(BlockContext& ctx, const ConnectorBehavior& b
   return value == "LINEAR" ? Extrapolation::Linear : Extrapolation::Constant;
 }
 
-std::string describe_component(int component) { return fmt::format("component {}", component); }
-
 bool DependenceColumns::check_row(BlockContext& ctx, const std::vector<Field>& fields) {
   if (rejected_) return false;
   if (temperature_column_ < fields.size() && !fields[temperature_column_].empty()) {
@@ -100,7 +98,8 @@ bool DependenceColumns::check_row(BlockContext& ctx, const std::vector<Field>& f
       rejected_ = true;
       ctx.report(DiagCode::unsupported_dependencies, field,
                  fmt::format("temperature-dependent {} data is not supported (temperature {} "
-                             "after {})", what_, field.text, temperature_text_));
+                             "after {})",
+                             what_, field.text, temperature_text_));
       return false;
     }
   }
@@ -110,7 +109,8 @@ bool DependenceColumns::check_row(BlockContext& ctx, const std::vector<Field>& f
     rejected_ = true;
     ctx.report(DiagCode::unsupported_dependencies, fields[k],
                fmt::format("field-variable-dependent {} data is not supported (field variable "
-                           "{} is given)", what_, k - temperature_column_));
+                           "{} is given)",
+                           what_, k - temperature_column_));
     return false;
   }
   return true;
@@ -120,7 +120,8 @@ void DependenceColumns::finish(BlockContext& ctx) {
   if (!temperature_ || rejected_) return;
   ctx.report(DiagCode::temperature_ignored, temperature_loc_,
              fmt::format("temperature {} is ignored: {} data do not depend on temperature in "
-                         "clinch", temperature_text_, what_));
+                         "clinch",
+                         temperature_text_, what_));
 }
 
 std::optional<double> required_real(BlockContext& ctx, const DataLine& line,

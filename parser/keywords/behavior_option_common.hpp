@@ -2,7 +2,7 @@
 // finding the open behaviour, reading COMPONENT= style parameters, the explicit-only and
 // dependence rules of §0 and §1.2, and the keyword-spec lists of each option file. Internal to
 // parser/keywords/ (connector_behavior.cpp, elasticity.cpp, stop_lock.cpp, plasticity.cpp,
-// damage.cpp).
+// damage.cpp) and the potential, derived-component and friction handlers.
 #pragma once
 
 #include <cstddef>
@@ -41,16 +41,14 @@ bool check_dependencies(BlockContext& ctx, std::string_view what);
 // The option's EXTRAPOLATION wins, then the behaviour's, then CONSTANT (§1.2).
 Extrapolation option_extrapolation(BlockContext& ctx, const ConnectorBehavior& behavior);
 
-// The "component i" text of messages, with the behaviour name for notes.
-std::string describe_component(int component);
-
 // Temperature and field-variable columns of one option's data lines (§1.2): rows may share one
 // temperature (ignored with `temperature-ignored`) or leave it blank; different temperatures or
 // any field-variable value are `unsupported-dependencies`, reported once per option.
 class DependenceColumns {
  public:
   DependenceColumns(std::size_t temperature_column, std::size_t field_columns, std::string what)
-      : temperature_column_(temperature_column), field_columns_(field_columns),
+      : temperature_column_(temperature_column),
+        field_columns_(field_columns),
         what_(std::move(what)) {}
   // Checks one row; false when it has unsupported dependence (or a bad temperature value).
   bool check_row(BlockContext& ctx, const std::vector<Field>& fields);

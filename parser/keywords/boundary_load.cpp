@@ -2,9 +2,9 @@
 // becomes a ConditionBlock (OP, AMPLITUDE, FIXED, TYPE) and its data lines become entries that
 // point at it, in the step or, for *BOUNDARY and *CONNECTOR MOTION, in model data (zero values
 // only). Targets are resolved and DOFs/components checked against the model in validate_history.
-#include <cctype>
-
 #include <fmt/format.h>
+
+#include <cctype>
 
 #include "parser/keywords/history_keywords.hpp"
 
@@ -17,7 +17,7 @@ struct NamedBoundary {
   std::uint8_t dofs;
 };
 constexpr NamedBoundary kNamedBoundaries[] = {
-    {"ENCASTRE", 0b111111}, {"PINNED", 0b000111}, {"XSYMM", 0b110001}, {"YSYMM", 0b101010},
+    {"ENCASTRE", 0b111111}, {"PINNED", 0b000111}, {"XSYMM", 0b110001},  {"YSYMM", 0b101010},
     {"ZSYMM", 0b011100},    {"XASYMM", 0b001110}, {"YASYMM", 0b010101}, {"ZASYMM", 0b100011},
 };
 constexpr std::string_view kNamedBoundaryNames[] = {"ENCASTRE", "PINNED", "XSYMM",  "YSYMM",
@@ -55,7 +55,8 @@ class ConditionHandler : public KeywordHandler {
     if (type == "VELOCITY" || type == "ACCELERATION") {
       ctx.report(DiagCode::unsupported_option, params.loc("TYPE", true),
                  fmt::format("TYPE={} on {} is not supported by clinch (static steps prescribe "
-                             "displacements)", type, keyword));
+                             "displacements)",
+                             type, keyword));
       skip_ = true;
     }
     if (skip_) return;  // a rejected block defines nothing (and takes no part in W0805)
@@ -87,9 +88,9 @@ class ConditionHandler : public KeywordHandler {
                    fmt::format("OP has no effect on model-data {}", keyword));
       }
       if (params.has("FIXED")) {
-        ctx.report(DiagCode::parameter_ignored, params.loc("FIXED"),
-                   fmt::format("FIXED has no effect on model-data {} (its values are zero)",
-                               keyword));
+        ctx.report(
+            DiagCode::parameter_ignored, params.loc("FIXED"),
+            fmt::format("FIXED has no effect on model-data {} (its values are zero)", keyword));
       }
       block.op_new = false;
       HistoryModel& history = ctx.model().history;
@@ -109,7 +110,8 @@ class ConditionHandler : public KeywordHandler {
     if ((block.op_new && has_mod && !has_new) || (!block.op_new && has_new && !has_mod)) {
       ctx.report(DiagCode::mixed_op, block.loc,
                  fmt::format("mixed OP=NEW and OP=MOD on {} in one step; all are treated as "
-                             "OP=NEW", keyword));
+                             "OP=NEW",
+                             keyword));
     }
     block_ = static_cast<std::int32_t>(step.blocks.size());
     step.blocks.push_back(std::move(block));
@@ -166,14 +168,16 @@ class ConditionHandler : public KeywordHandler {
         fixed_reported_ = true;
         ctx.report(DiagCode::parameter_ignored, fields[index],
                    fmt::format("magnitude ignored with FIXED on {} (the value at the start of "
-                               "the step is held)", ctx.keyword_display()));
+                               "the step is held)",
+                               ctx.keyword_display()));
       }
       return 0.0;
     }
     if (!in_step_ && *value != 0) {
       ctx.report(DiagCode::nonzero_model_data_condition, fields[index],
                  fmt::format("non-zero {} in model data is not supported; prescribe it in the "
-                             "first step", ctx.keyword_display()));
+                             "first step",
+                             ctx.keyword_display()));
       return std::nullopt;
     }
     return value;
@@ -185,8 +189,7 @@ class ConditionHandler : public KeywordHandler {
     bc.block = block_;
     bc.loc = line.loc;
     if (fields.size() < 2 || fields[1].empty()) {
-      ctx.missing(fields.size() < 2 ? BlockContext::end_of_line(line) : fields[1].loc,
-                  "first DOF");
+      ctx.missing(fields.size() < 2 ? BlockContext::end_of_line(line) : fields[1].loc, "first DOF");
       return;
     }
     const Field& second = fields[1];
@@ -202,8 +205,7 @@ class ConditionHandler : public KeywordHandler {
       }
       bc.named_type = *word;
     } else {
-      ctx.check_field_count(line, fields, 4,
-                            "node or node set, first DOF, last DOF, magnitude");
+      ctx.check_field_count(line, fields, 4, "node or node set, first DOF, last DOF, magnitude");
       auto first = read_dof(ctx, second, "first DOF");
       std::optional<int> last = first;
       if (fields.size() > 2 && !fields[2].empty()) last = read_dof(ctx, fields[2], "last DOF");
@@ -253,8 +255,7 @@ class ConditionHandler : public KeywordHandler {
     ctx.check_field_count(line, fields, 3, "element or element set, component, magnitude");
     auto target = read_target(ctx, line, fields, true);
     if (fields.size() < 2 || fields[1].empty()) {
-      ctx.missing(fields.size() < 2 ? BlockContext::end_of_line(line) : fields[1].loc,
-                  "component");
+      ctx.missing(fields.size() < 2 ? BlockContext::end_of_line(line) : fields[1].loc, "component");
       return;
     }
     ConnectorCondition condition;
@@ -303,26 +304,35 @@ std::vector<KeywordSpec> condition_keyword_specs() {
   std::vector<KeywordSpec> specs;
   const ParamSpec op{"OP", ParamKind::Enum, false, {"MOD", "NEW"}};
   const ParamSpec amplitude{"AMPLITUDE"};
-  const ParamSpec type{"TYPE", ParamKind::Enum, false, {"DISPLACEMENT", "VELOCITY",
-                                                        "ACCELERATION"}};
+  const ParamSpec type{
+      "TYPE", ParamKind::Enum, false, {"DISPLACEMENT", "VELOCITY", "ACCELERATION"}};
   const ParamSpec fixed{"FIXED", ParamKind::Flag};
 
   KeywordSpec boundary;
   boundary.name = "BOUNDARY";
   boundary.level = KeywordLevel::ModelOrHistory;
-  boundary.params = {op, amplitude, type, fixed,
-                     unsupported_param("USER"), unsupported_param("SUBMODEL"),
-                     unsupported_param("LOAD CASE"), unsupported_param("REGION TYPE")};
+  boundary.params = {op,
+                     amplitude,
+                     type,
+                     fixed,
+                     unsupported_param("USER"),
+                     unsupported_param("SUBMODEL"),
+                     unsupported_param("LOAD CASE"),
+                     unsupported_param("REGION TYPE")};
   boundary.make_handler = &make_condition<ConditionKind::Boundary>;
   specs.push_back(std::move(boundary));
 
   KeywordSpec cload;
   cload.name = "CLOAD";
   cload.level = KeywordLevel::History;
-  cload.params = {op, amplitude,
-                  unsupported_param("FOLLOWER"), unsupported_param("USER"),
-                  unsupported_param("LOAD CASE"), unsupported_param("CROSS SECTIONAL"),
-                  unsupported_param("SUBMODEL"), unsupported_param("SYSTEM")};
+  cload.params = {op,
+                  amplitude,
+                  unsupported_param("FOLLOWER"),
+                  unsupported_param("USER"),
+                  unsupported_param("LOAD CASE"),
+                  unsupported_param("CROSS SECTIONAL"),
+                  unsupported_param("SUBMODEL"),
+                  unsupported_param("SYSTEM")};
   cload.make_handler = &make_condition<ConditionKind::Load>;
   specs.push_back(std::move(cload));
 

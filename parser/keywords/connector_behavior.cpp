@@ -3,9 +3,9 @@
 // elasticity.cpp, stop_lock.cpp, plasticity.cpp and damage.cpp. The reader opens the behaviour
 // block (ReaderPosition::in_behavior); the handler here creates the ConnectorBehavior that the
 // sub-options of the block fill.
-#include <numbers>
-
 #include <fmt/format.h>
+
+#include <numbers>
 
 #include "parser/block_context.hpp"
 #include "parser/keyword_handler.hpp"
@@ -32,11 +32,10 @@ class BehaviorHandler : public KeywordHandler {
       behavior.name = *name;
       auto found = model.by_key.find(name->key);
       if (found != model.by_key.end()) {
-        const ConnectorBehavior& first =
-            model.behaviors[static_cast<std::size_t>(found->second)];
-        Diagnostic& d = ctx.report(
-            DiagCode::duplicate_name, *ctx.params().value("NAME"),
-            fmt::format("connector behavior '{}' is already defined", name->display));
+        const ConnectorBehavior& first = model.behaviors[static_cast<std::size_t>(found->second)];
+        Diagnostic& d =
+            ctx.report(DiagCode::duplicate_name, *ctx.params().value("NAME"),
+                       fmt::format("connector behavior '{}' is already defined", name->display));
         d.notes.push_back({first.name.loc, "previous definition is here"});
         behavior.referable = false;
       } else {
@@ -118,8 +117,8 @@ class DampingHandler : public KeywordHandler {
         valid_ = false;
       }
     } else {
-      damping.kind = has_component ? ConnectorDamping::Kind::Linear
-                                   : ConnectorDamping::Kind::Coupled;
+      damping.kind =
+          has_component ? ConnectorDamping::Kind::Linear : ConnectorDamping::Kind::Coupled;
     }
     // DEPENDENCIES is accepted (the data are ignored anyway); the columns it adds are read.
     if (params.value("DEPENDENCIES")) {
@@ -265,8 +264,8 @@ std::vector<KeywordSpec> behavior_keyword_specs() {
       ParamSpec{"DEPENDENCIES", ParamKind::Value},
       extrapolation_param_spec(),
       ParamSpec{"FREQUENCY DEPENDENCE", ParamKind::Enum, false, {"OFF", "ON"}},
-      ParamSpec{"INDEPENDENT COMPONENTS", ParamKind::Enum, false,
-                {"POSITION", "CONSTITUTIVE MOTION"}},
+      ParamSpec{
+          "INDEPENDENT COMPONENTS", ParamKind::Enum, false, {"POSITION", "CONSTITUTIVE MOTION"}},
       ParamSpec{"UNSYMM", ParamKind::Flag},
   };
   for (ParamSpec& p : regularize_param_specs()) damping_params.push_back(std::move(p));

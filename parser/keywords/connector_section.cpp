@@ -247,7 +247,9 @@ class ConnectorSectionHandler : public KeywordHandler {
     }
     std::optional<TargetRef> elset = elset_param(ctx);
     if (!elset) {
+      // Stored without a set, so that its elements do not also get "no section" errors.
       skip_ = true;
+      ctx.model().sections.connector_sections.push_back(std::move(section_));
       return;
     }
     section_.elset = *elset;
@@ -392,12 +394,14 @@ class ConnectorSectionHandler : public KeywordHandler {
       const Name& given = section_.orientations[static_cast<std::size_t>(end)];
       const char* node = end == 0 ? "a" : "b";
       bool all_ignore = true;
+      bool defaulted = false;
       for (std::size_t k = 0; k < section_.type_names.size(); ++k) {
         const ConnectionTypeInfo* info = find_connection_type(section_.type_names[k]);
         if (!info) continue;
         const OrientationUse use = end == 0 ? info->orientation_a : info->orientation_b;
         if (use != OrientationUse::Ignored) all_ignore = false;
-        if (use == OrientationUse::Required && given.empty()) {
+        if (use == OrientationUse::Required && given.empty() && !defaulted) {
+          defaulted = true;  // once per end, naming the first type that needs it
           ctx.report(DiagCode::orientation_defaulted, section_.type_locs[k],
                      fmt::format("connection type '{}' needs an orientation at node {}; {} are "
                                  "used",
@@ -438,6 +442,8 @@ class SpringHandler : public KeywordHandler {
     std::optional<TargetRef> elset = elset_param(ctx);
     if (!elset) {
       skip_ = true;
+      spring_.data_ok = false;
+      ctx.model().sections.springs.push_back(std::move(spring_));
       return;
     }
     spring_.elset = *elset;
@@ -455,14 +461,14 @@ class SpringHandler : public KeywordHandler {
         } else if (*n > 0) {
           ctx.report(DiagCode::unsupported_dependencies, *params.value("DEPENDENCIES"),
                      "field-variable-dependent spring data is not supported");
-          skip_ = true;
+          rejected_ = true;
         }
       }
     }
   }
 
   void data_line(BlockContext& ctx, const DataLine& line, std::vector<Field>& fields) override {
-    if (skip_) return;
+    if (skip_ || rejected_) return;
     if (ctx.line_index() == 1) {
       read_first_line(ctx, line, fields);
       return;
@@ -473,18 +479,19 @@ class SpringHandler : public KeywordHandler {
 
   void end(BlockContext& ctx) override {
     if (skip_) return;
-    if (ctx.line_index() == 0) {
-      ctx.report(DiagCode::missing_data_line, ctx.keyword().loc,
-                 "*SPRING needs a DOF line and a line with the spring data");
-      return;
-    }
-    if (spring_.property_lines.empty() && !spring_.first_line_real) {
+    if (rejected_ || ctx.line_index() == 0) {
+      if (!rejected_) {
+        ctx.report(DiagCode::missing_data_line, ctx.keyword().loc,
+                   "*SPRING needs a DOF line and a line with the spring data");
+      }
+      spring_.data_ok = false;
+    } else if (spring_.property_lines.empty() && !spring_.first_line_real) {
       ctx.report(DiagCode::missing_data_line, ctx.keyword().loc,
                  spring_.nonlinear ? "*SPRING, NONLINEAR needs force, relative-displacement "
                                      "lines after the DOF line"
                                    : "*SPRING needs a line with the spring stiffness after the "
                                      "DOF line");
-      return;
+      spring_.data_ok = false;
     }
     ctx.model().sections.springs.push_back(std::move(spring_));
   }
@@ -554,6 +561,7 @@ class SpringHandler : public KeywordHandler {
 
   SpringProperty spring_;
   bool skip_ = false;
+  bool rejected_ = false;  // DEPENDENCIES > 0: data lines are not read
 };
 
 // ---------------------------------------------------------------------------------------------

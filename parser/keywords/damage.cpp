@@ -89,8 +89,9 @@ class InitiationHandler : public KeywordHandler {
     DamageInitiation& init = behavior_->damage_initiations[index_];
     deps_.finish(ctx);
     if (rows_ == 0) {
-      report_missing_data(ctx, plastic_ ? "equivalent plastic motion" : "lower limit, "
-                                                                         "upper limit");
+      report_missing_data(ctx, plastic_ ? "equivalent plastic motion"
+                                        : "lower limit, "
+                                          "upper limit");
       init.valid = false;
     }
   }
@@ -98,8 +99,9 @@ class InitiationHandler : public KeywordHandler {
  private:
   void limits_line(BlockContext& ctx, const DataLine& line, std::vector<Field>& fields,
                    DamageInitiation& init) {
-    ctx.check_field_count(line, fields, 8, "lower limit, upper limit, temperature, "
-                                           "field1..field5");
+    ctx.check_field_count(line, fields, 8,
+                          "lower limit, upper limit, temperature, "
+                          "field1..field5");
     const bool force = init.criterion == DamageInitiation::Criterion::Force;
     bool bad_lower = false, bad_upper = false;
     init.lower = optional_real(ctx, fields, 0, "lower limit", &bad_lower);
@@ -134,8 +136,9 @@ class InitiationHandler : public KeywordHandler {
 
   void plastic_line(BlockContext& ctx, const DataLine& line, std::vector<Field>& fields,
                     DamageInitiation& init) {
-    ctx.check_field_count(line, fields, 8, "u^pl_0, mode-mix, rate, temperature, "
-                                           "field1..field4");
+    ctx.check_field_count(line, fields, 8,
+                          "u^pl_0, mode-mix, rate, temperature, "
+                          "field1..field4");
     std::optional<double> u = required_real(ctx, line, fields, 0, "equivalent plastic motion");
     if (!u) {
       init.valid = false;
@@ -145,7 +148,8 @@ class InitiationHandler : public KeywordHandler {
     if (*u <= 0) {
       ctx.report(DiagCode::value_out_of_range, fields[0],
                  fmt::format("the equivalent plastic motion at damage initiation must be "
-                             "positive, got {}", fields[0].text));
+                             "positive, got {}",
+                             fields[0].text));
       init.valid = false;
     }
   }
@@ -197,8 +201,7 @@ class EvolutionHandler : public KeywordHandler {
         break;
       }
     }
-    const std::int32_t own_index =
-        static_cast<std::int32_t>(behavior_->damage_evolutions.size());
+    const std::int32_t own_index = static_cast<std::int32_t>(behavior_->damage_evolutions.size());
     PotentialOwner owner;
     owner.kind = PotentialOwner::Kind::DamageEvolution;
     owner.index = own_index;
@@ -215,10 +218,10 @@ class EvolutionHandler : public KeywordHandler {
       // derived-components-and-potentials.md §2.7: optional, coupled FORCE/MOTION case only.
       if (!init.coupled()) {
         owner.allows_potential = false;
-        owner.why_not_allowed = init.component > 0
-                                    ? fmt::format("COMPONENT={} on its damage initiation",
-                                                  init.component)
-                                    : "COMPONENT= on its damage initiation";
+        owner.why_not_allowed =
+            init.component > 0
+                ? fmt::format("COMPONENT={} on its damage initiation", init.component)
+                : "COMPONENT= on its damage initiation";
       } else if (init.criterion == DamageInitiation::Criterion::PlasticMotion) {
         owner.allows_potential = false;
         owner.why_not_allowed = "CRITERION=PLASTIC MOTION on its damage initiation";
@@ -304,8 +307,7 @@ class EvolutionHandler : public KeywordHandler {
       evo.valid = false;
       return;
     }
-    if (evo.softening == DamageEvolution::Softening::Tabular && evo.valid &&
-        !evo.table.empty()) {
+    if (evo.softening == DamageEvolution::Softening::Tabular && evo.valid && !evo.table.empty()) {
       const TablePoint& first = evo.table.front();
       if (first.value != 0 || first.at != 0) {
         ctx.report(DiagCode::damage_table_first_point, first.loc,
@@ -412,11 +414,9 @@ std::vector<KeywordSpec> damage_keyword_specs() {
   };
   for (ParamSpec& p : rate_param_specs()) init_params.push_back(std::move(p));
   for (ParamSpec& p : regularize_param_specs()) init_params.push_back(std::move(p));
-  specs.push_back(behavior_suboption_spec("CONNECTOR DAMAGE INITIATION", std::move(init_params),
-                                          [] {
-                                            return std::unique_ptr<KeywordHandler>(
-                                                new InitiationHandler());
-                                          }));
+  specs.push_back(behavior_suboption_spec(
+      "CONNECTOR DAMAGE INITIATION", std::move(init_params),
+      [] { return std::unique_ptr<KeywordHandler>(new InitiationHandler()); }));
   std::vector<ParamSpec> evo_params = {
       ParamSpec{"TYPE", ParamKind::Enum, true, {"MOTION", "ENERGY"}},
       ParamSpec{"SOFTENING", ParamKind::Enum, false, {"LINEAR", "EXPONENTIAL", "TABULAR"}},
@@ -426,11 +426,9 @@ std::vector<KeywordSpec> damage_keyword_specs() {
       extrapolation_param_spec(),
   };
   for (ParamSpec& p : regularize_param_specs()) evo_params.push_back(std::move(p));
-  specs.push_back(behavior_suboption_spec("CONNECTOR DAMAGE EVOLUTION", std::move(evo_params),
-                                          [] {
-                                            return std::unique_ptr<KeywordHandler>(
-                                                new EvolutionHandler());
-                                          }));
+  specs.push_back(behavior_suboption_spec("CONNECTOR DAMAGE EVOLUTION", std::move(evo_params), [] {
+    return std::unique_ptr<KeywordHandler>(new EvolutionHandler());
+  }));
   return specs;
 }
 

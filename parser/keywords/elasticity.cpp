@@ -2,9 +2,9 @@
 // terms), RIGID. Reads the data into ConnectorElasticity and reports what one option can know on
 // its own; the per-component rules (duplicates, plasticity) and everything that needs the
 // connection type are checked by validate_behaviors.
-#include <cmath>
-
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "parser/block_context.hpp"
 #include "parser/keyword_handler.hpp"
@@ -32,8 +32,7 @@ double table_value(const std::vector<TablePoint>& table, double u, Extrapolation
     return extrapolation == Extrapolation::Linear ? segment(0) : table.front().value;
   }
   if (u >= table.back().at) {
-    return extrapolation == Extrapolation::Linear ? segment(table.size() - 2)
-                                                  : table.back().value;
+    return extrapolation == Extrapolation::Linear ? segment(table.size() - 2) : table.back().value;
   }
   for (std::size_t k = 0; k + 1 < table.size(); ++k) {
     if (u <= table[k + 1].at) return segment(k);
@@ -115,10 +114,14 @@ class ElasticityHandler : public KeywordHandler {
     ++rows_;
     if (rows_ == 1) el.data_loc = fields.empty() ? line.loc : fields.front().loc;
     switch (el.kind) {
-      case ConnectorElasticity::Kind::Linear: return linear_line(ctx, line, fields, el);
-      case ConnectorElasticity::Kind::Nonlinear: return nonlinear_line(ctx, line, fields, el);
-      case ConnectorElasticity::Kind::Coupled: return coupled_line(ctx, line, fields, el);
-      case ConnectorElasticity::Kind::Rigid: return rigid_line(ctx, line, fields, el);
+      case ConnectorElasticity::Kind::Linear:
+        return linear_line(ctx, line, fields, el);
+      case ConnectorElasticity::Kind::Nonlinear:
+        return nonlinear_line(ctx, line, fields, el);
+      case ConnectorElasticity::Kind::Coupled:
+        return coupled_line(ctx, line, fields, el);
+      case ConnectorElasticity::Kind::Rigid:
+        return rigid_line(ctx, line, fields, el);
     }
   }
 
@@ -222,8 +225,9 @@ class ElasticityHandler : public KeywordHandler {
     const std::size_t first = rows_ == 1 ? 0 : rows_ == 2 ? 8 : 16;
     const std::size_t count = rows_ == 3 ? 5 : 8;
     if (rows_ == 3) {
-      ctx.check_field_count(line, fields, 8, "D26, D36, D46, D56, D66, temperature, field1, "
-                                             "field2");
+      ctx.check_field_count(line, fields, 8,
+                            "D26, D36, D46, D56, D66, temperature, field1, "
+                            "field2");
       DependenceColumns third(5, 2, "coupled connector elasticity");
       third_line_temperature_ = fields.size() > 5 && !fields[5].empty();
       deps_ = third;
@@ -232,8 +236,7 @@ class ElasticityHandler : public KeywordHandler {
       ctx.check_field_count(line, fields, 8, "eight stiffness terms");
     }
     for (std::size_t k = 0; k < count; ++k) {
-      std::optional<double> v =
-          required_real(ctx, line, fields, k, kCoupledTermNames[first + k]);
+      std::optional<double> v = required_real(ctx, line, fields, k, kCoupledTermNames[first + k]);
       if (!v) {
         el.valid = false;
         if (k >= fields.size()) break;  // one E0305 for the missing tail of the line
@@ -292,7 +295,8 @@ class ElasticityHandler : public KeywordHandler {
     if (std::fabs(f0) > 1e-12 * scale) {
       ctx.report(DiagCode::nonlinear_elasticity_offset, el.data_loc,
                  fmt::format("connector elasticity table gives force {} at zero motion "
-                             "(a preload in the initial state)", f0));
+                             "(a preload in the initial state)",
+                             f0));
     }
     if (el.extrapolation == Extrapolation::Constant) {
       ctx.report(DiagCode::zero_tangent_extrapolation, ctx.keyword().loc,
@@ -345,8 +349,8 @@ std::vector<KeywordSpec> elasticity_keyword_specs() {
       extrapolation_param_spec(),
       ParamSpec{"DEPENDENCIES", ParamKind::Value},
       ParamSpec{"FREQUENCY DEPENDENCE", ParamKind::Enum, false, {"OFF", "ON"}},
-      ParamSpec{"INDEPENDENT COMPONENTS", ParamKind::Enum, false,
-                {"POSITION", "CONSTITUTIVE MOTION"}},
+      ParamSpec{
+          "INDEPENDENT COMPONENTS", ParamKind::Enum, false, {"POSITION", "CONSTITUTIVE MOTION"}},
       ParamSpec{"UNSYMM", ParamKind::Flag},
   };
   for (ParamSpec& p : regularize_param_specs()) params.push_back(std::move(p));

@@ -37,13 +37,11 @@ void read_identifiers(BlockContext& ctx, const std::vector<Field>& fields, Outpu
                                ctx.keyword_display()))
             .notes.push_back(
                 {field.loc,
-                 fmt::format("'{}' is {} output variable; request it with {}", field.text,
-                             parsed.kind_hint,
-                             nodal_keyword ? (context == OutputContext::NodePrint
-                                                  ? "*EL PRINT"
-                                                  : "*ELEMENT OUTPUT")
-                                           : (context == OutputContext::ElPrint ? "*NODE PRINT"
-                                                                                : "*NODE OUTPUT"))});
+                 fmt::format(
+                     "'{}' is {} output variable; request it with {}", field.text, parsed.kind_hint,
+                     nodal_keyword
+                         ? (context == OutputContext::NodePrint ? "*EL PRINT" : "*ELEMENT OUTPUT")
+                         : (context == OutputContext::ElPrint ? "*NODE PRINT" : "*NODE OUTPUT"))});
         break;
       }
       case IdentifierStatus::Unknown: {
@@ -114,8 +112,8 @@ class OutputHandler : public KeywordHandler {
         if (given == 2) {
           ctx.report(DiagCode::conflicting_parameters, entry.param->loc,
                      fmt::format("{} cannot be combined with {}", n, first->spec->name))
-              .notes.push_back({first->param->loc, fmt::format("{} given here",
-                                                               first->spec->name)});
+              .notes.push_back(
+                  {first->param->loc, fmt::format("{} given here", first->spec->name)});
         }
       }
     }
@@ -173,9 +171,9 @@ class OutputBlockHandler : public KeywordHandler {
     const ParamSet& params = ctx.params();
     Step& step = current_step(ctx);
     if (step.outputs.empty()) {
-      ctx.report(DiagCode::output_without_output_keyword, ctx.keyword().loc,
-                 fmt::format("{} must follow an *OUTPUT keyword in the same step",
-                             ctx.keyword_display()));
+      ctx.report(
+          DiagCode::output_without_output_keyword, ctx.keyword().loc,
+          fmt::format("{} must follow an *OUTPUT keyword in the same step", ctx.keyword_display()));
       skip_ = true;
       return;
     }
@@ -266,8 +264,7 @@ class PrintHandler : public KeywordHandler {
       if (auto frequency = ctx.integer_param("FREQUENCY")) {
         if (*frequency < 0 || *frequency > 2147483647) {
           ctx.report(DiagCode::value_out_of_range, *params.value("FREQUENCY"),
-                     fmt::format("FREQUENCY must be 0 or a positive integer, got {}",
-                                 *frequency));
+                     fmt::format("FREQUENCY must be 0 or a positive integer, got {}", *frequency));
         } else {
           request.frequency = static_cast<int>(*frequency);
         }
@@ -283,8 +280,7 @@ class PrintHandler : public KeywordHandler {
     for (const PrintRequest& other : step.prints) {
       if (other.frequency != step.prints.front().frequency) all_agree = false;
     }
-    if (all_agree && !step.prints.empty() &&
-        request.frequency != step.prints.front().frequency) {
+    if (all_agree && !step.prints.empty() && request.frequency != step.prints.front().frequency) {
       const PrintRequest& first = step.prints.front();
       ctx.report(DiagCode::print_frequency_differs,
                  request.frequency_loc.valid() ? request.frequency_loc : request.loc,

@@ -68,13 +68,13 @@ class HardeningHandler : public KeywordHandler {
       return;
     }
     // §2: one ISOTROPIC and one KINEMATIC option per plasticity at most.
-    const bool duplicate = kinematic_ ? plasticity_->kinematic.has_value()
-                                      : plasticity_->isotropic.has_value();
+    const bool duplicate =
+        kinematic_ ? plasticity_->kinematic.has_value() : plasticity_->isotropic.has_value();
     if (duplicate) {
-      Diagnostic& d = ctx.report(
-          DiagCode::hardening_duplicate, ctx.keyword().loc,
-          fmt::format("this *CONNECTOR PLASTICITY already has a TYPE={} hardening",
-                      kinematic_ ? "KINEMATIC" : "ISOTROPIC"));
+      Diagnostic& d =
+          ctx.report(DiagCode::hardening_duplicate, ctx.keyword().loc,
+                     fmt::format("this *CONNECTOR PLASTICITY already has a TYPE={} hardening",
+                                 kinematic_ ? "KINEMATIC" : "ISOTROPIC"));
       d.notes.push_back({kinematic_ ? plasticity_->kinematic->loc : plasticity_->isotropic->loc,
                          "previous hardening of the same type is here"});
       plasticity_ = nullptr;
@@ -88,8 +88,8 @@ class HardeningHandler : public KeywordHandler {
     }
     if (kinematic_ && plasticity_->coupled()) {
       // §6.5: optional in v1; clinch rejects it.
-      ctx.report(DiagCode::unsupported_option, params.has("TYPE") ? params.loc("TYPE", true)
-                                                                  : ctx.keyword().loc,
+      ctx.report(DiagCode::unsupported_option,
+                 params.has("TYPE") ? params.loc("TYPE", true) : ctx.keyword().loc,
                  "kinematic hardening with coupled plasticity is not supported by clinch");
       valid = false;
     }
@@ -198,7 +198,8 @@ class HardeningHandler : public KeywordHandler {
     if (h.table.empty() && at != 0) {
       ctx.report(DiagCode::hardening_first_point, at_field,
                  fmt::format("the first hardening point must be at zero equivalent plastic "
-                             "motion, got {}", at_field.text));
+                             "motion, got {}",
+                             at_field.text));
       h.valid = false;
     }
     if (!h.table.empty() && !(at > h.table.back().at)) {
@@ -229,7 +230,8 @@ class HardeningHandler : public KeywordHandler {
       set_invalid();
       ctx.report(DiagCode::unsupported_dependencies, fields[2],
                  fmt::format("rate-dependent connector hardening data is not supported (rate {} "
-                             "after {})", fields[2].text, rate_text_));
+                             "after {})",
+                             fields[2].text, rate_text_));
     }
   }
 
@@ -256,7 +258,8 @@ class HardeningHandler : public KeywordHandler {
     } else if (h.f0 + h.q_inf <= 0) {
       ctx.report(DiagCode::yield_not_positive, fields[1],
                  fmt::format("the yield force F_0 + Q_inf = {} reached at large plastic motion "
-                             "must be positive", h.f0 + h.q_inf));
+                             "must be positive",
+                             h.f0 + h.q_inf));
       h.valid = false;
     }
     if (h.b < 0) {
@@ -283,15 +286,15 @@ class HardeningHandler : public KeywordHandler {
     k.c = c.value_or(0.0);
     k.gamma = gamma.value_or(0.0);
     if (k.c < 0) {
-      ctx.report(DiagCode::value_out_of_range, fields[1],
-                 fmt::format("kinematic hardening modulus C must be 0 or more, got {}",
-                             fields[1].text));
+      ctx.report(
+          DiagCode::value_out_of_range, fields[1],
+          fmt::format("kinematic hardening modulus C must be 0 or more, got {}", fields[1].text));
       k.valid = false;
     }
     if (k.gamma < 0) {
-      ctx.report(DiagCode::value_out_of_range, fields[2],
-                 fmt::format("kinematic hardening rate gamma must be 0 or more, got {}",
-                             fields[2].text));
+      ctx.report(
+          DiagCode::value_out_of_range, fields[2],
+          fmt::format("kinematic hardening rate gamma must be 0 or more, got {}", fields[2].text));
       k.valid = false;
     }
   }
@@ -325,8 +328,8 @@ class HardeningHandler : public KeywordHandler {
     }
     if (rows_ == 2 && !k.half_cycle.empty() && !(at > k.half_cycle.front().at)) {
       ctx.report(DiagCode::table_not_increasing, at_field,
-                 fmt::format("plastic motions must increase ({} after {})",
-                             u ? at_field.text : "0", last_at_text_));
+                 fmt::format("plastic motions must increase ({} after {})", u ? at_field.text : "0",
+                             last_at_text_));
       k.valid = false;
       return;
     }
@@ -357,7 +360,9 @@ std::vector<KeywordSpec> plasticity_keyword_specs() {
       [] { return std::unique_ptr<KeywordHandler>(new PlasticityHandler()); }, DataMode::None));
   std::vector<ParamSpec> params = {
       ParamSpec{"TYPE", ParamKind::Enum, false, {"ISOTROPIC", "KINEMATIC"}},
-      ParamSpec{"DEFINITION", ParamKind::Enum, false,
+      ParamSpec{"DEFINITION",
+                ParamKind::Enum,
+                false,
                 {"TABULAR", "EXPONENTIAL LAW", "HALF CYCLE", "STABILIZED", "PARAMETERS"}},
       ParamSpec{"DEPENDENCIES", ParamKind::Value},
       extrapolation_param_spec(),

@@ -86,13 +86,6 @@ class SetHandler : public KeywordHandler {
       if (field.empty()) continue;
       auto ref = ctx.target(field, element_set_ ? "element" : "node");
       if (!ref) continue;
-      SetOperation op;
-      op.element_set = element_set_;
-      op.target_key = key_;
-      op.loc = field.loc;
-      op.instance_key = ref->instance_key.empty() ? instance_key_ : ref->instance_key;
-      op.instance_display =
-          ref->instance_key.empty() ? instance_display_ : ref->instance_display;
       if (!ref->instance_key.empty() && !instance_key_.empty()) {
         ctx.report(DiagCode::expected_name, field,
                    "a qualified label cannot be used together with INSTANCE=");
@@ -103,16 +96,39 @@ class SetHandler : public KeywordHandler {
                    "instance-qualified labels are allowed only at assembly level");
         continue;
       }
+      const std::string& instance_key =
+          ref->instance_key.empty() ? instance_key_ : ref->instance_key;
+      const std::string& instance_display =
+          ref->instance_key.empty() ? instance_display_ : ref->instance_display;
+      auto& ops = part_->set_operations;
       if (ref->is_label) {
-        op.kind = SetOperation::Kind::Label;
-        op.first = ref->label;
+        const bool extend = !ops.empty() && ops.back().kind == SetOperation::Kind::Labels &&
+                            ops.back().element_set == element_set_ &&
+                            ops.back().target_key == key_ &&
+                            ops.back().instance_key == instance_key;
+        if (!extend) ops.push_back(make_op(SetOperation::Kind::Labels, instance_key,
+                                           instance_display, field.loc));
+        ops.back().labels.push_back({ref->label, field.loc});
       } else {
-        op.kind = SetOperation::Kind::SetName;
+        SetOperation op = make_op(SetOperation::Kind::SetName, instance_key, instance_display,
+                                  field.loc);
         op.source_key = ref->set_key;
         op.source_display = ref->set_display;
+        ops.push_back(std::move(op));
       }
-      part_->set_operations.push_back(std::move(op));
     }
+  }
+
+  SetOperation make_op(SetOperation::Kind kind, const std::string& instance_key,
+                       const std::string& instance_display, SourceLoc loc) const {
+    SetOperation op;
+    op.kind = kind;
+    op.element_set = element_set_;
+    op.target_key = key_;
+    op.instance_key = instance_key;
+    op.instance_display = instance_display;
+    op.loc = loc;
+    return op;
   }
 
  private:

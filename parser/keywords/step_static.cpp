@@ -2,9 +2,9 @@
 // bookkeeping (open/close, E0601–E0604, E0606); these handlers create and close the Step in
 // model().history, resolve the *STATIC increments with their defaults and keep the effective
 // controls, which carry over to later steps (§13).
-#include <cmath>
-
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "parser/keywords/history_keywords.hpp"
 
@@ -148,8 +148,7 @@ class EndStepHandler : public KeywordHandler {
     // stands, by *STATIC).
     if (!step.procedure) {
       ctx.report(DiagCode::step_procedure, ctx.keyword().loc,
-                 fmt::format("step '{}' has no procedure (expected *STATIC)",
-                             step.name.display))
+                 fmt::format("step '{}' has no procedure (expected *STATIC)", step.name.display))
           .notes.push_back({step.loc, "step defined here"});
     }
   }
@@ -173,7 +172,8 @@ class StaticHandler : public KeywordHandler {
         } else {
           ctx.report(DiagCode::invalid_value, *value,
                      fmt::format("invalid value '{}' for DIRECT (expected NO STOP, or DIRECT "
-                                 "without a value)", value->text));
+                                 "without a value)",
+                                 value->text));
         }
       }
     }
@@ -199,8 +199,9 @@ class StaticHandler : public KeywordHandler {
     }
     has_data_ = true;
     procedure_.data_loc = line.loc;
-    ctx.check_field_count(line, fields, 4, "initial increment, step period, minimum increment, "
-                                           "maximum increment");
+    ctx.check_field_count(line, fields, 4,
+                          "initial increment, step period, minimum increment, "
+                          "maximum increment");
     static constexpr const char* kWhat[] = {"the initial increment", "the step period",
                                             "the minimum increment", "the maximum increment"};
     for (std::size_t i = 0; i < 4 && i < fields.size(); ++i) {
@@ -252,10 +253,10 @@ class StaticHandler : public KeywordHandler {
       if (std::fabs(ratio - needed) > 1e-9 * ratio) needed = std::ceil(ratio);
       if (needed > static_cast<double>(step.max_increments)) {
         ctx.report(DiagCode::too_many_direct_increments, p.loc,
-                   fmt::format("DIRECT incrementation needs {:.0f} increments but INC={}",
-                               needed, step.max_increments))
-            .notes.push_back({step.inc_loc.valid() ? step.inc_loc : step.loc,
-                              "INC of the step is set here"});
+                   fmt::format("DIRECT incrementation needs {:.0f} increments but INC={}", needed,
+                               step.max_increments))
+            .notes.push_back(
+                {step.inc_loc.valid() ? step.inc_loc : step.loc, "INC of the step is set here"});
       }
     }
     if (!duplicate_) step.procedure = p;
@@ -326,9 +327,9 @@ class ControlsHandler : public KeywordHandler {
     if (!ctx.real(field, what)) return;
     if (ignored_reported_) return;
     ignored_reported_ = true;
-    ctx.report(DiagCode::parameter_ignored, field,
-               fmt::format("{} of *CONTROLS, PARAMETERS={} has no effect in clinch", what,
-                           parameters_));
+    ctx.report(
+        DiagCode::parameter_ignored, field,
+        fmt::format("{} of *CONTROLS, PARAMETERS={} has no effect in clinch", what, parameters_));
   }
 
   std::optional<double> positive(BlockContext& ctx, const Field& field, std::string_view what) {
@@ -361,9 +362,9 @@ class ControlsHandler : public KeywordHandler {
     auto value = ctx.integer(field, what);
     if (!value) return std::nullopt;
     if (*value < minimum || *value > 1000000) {
-      ctx.report(DiagCode::value_out_of_range, field,
-                 fmt::format("{} must be an integer of at least {}, got {}", what, minimum,
-                             *value));
+      ctx.report(
+          DiagCode::value_out_of_range, field,
+          fmt::format("{} must be an integer of at least {}, got {}", what, minimum, *value));
       return std::nullopt;
     }
     return static_cast<int>(*value);
@@ -374,8 +375,8 @@ class ControlsHandler : public KeywordHandler {
       for (const Field& f : fields) ignored(ctx, f, "a second data line");
       return;
     }
-    static constexpr const char* kNames[] = {"R_n", "C_n", "q0", "q_u", "R_p", "epsilon",
-                                             "C_epsilon", "epsilon_l"};
+    static constexpr const char* kNames[] = {"R_n", "C_n",     "q0",        "q_u",
+                                             "R_p", "epsilon", "C_epsilon", "epsilon_l"};
     for (std::size_t i = 0; i < fields.size(); ++i) {
       if (i >= 8) {
         ignored(ctx, fields[i], fmt::format("field {}", i + 1));
@@ -387,14 +388,30 @@ class ControlsHandler : public KeywordHandler {
                                     use_rotation_ ? &controls.rotation : nullptr}) {
         if (!target) continue;
         switch (i) {
-          case 0: target->residual = *value; break;
-          case 1: target->correction = *value; break;
-          case 2: target->initial_flux = *value; break;
-          case 3: target->user_flux = *value; break;
-          case 4: target->alternate_residual = *value; break;
-          case 5: target->zero_flux = *value; break;
-          case 6: target->zero_flux_correction = *value; break;
-          default: target->linear_residual = *value; break;
+          case 0:
+            target->residual = *value;
+            break;
+          case 1:
+            target->correction = *value;
+            break;
+          case 2:
+            target->initial_flux = *value;
+            break;
+          case 3:
+            target->user_flux = *value;
+            break;
+          case 4:
+            target->alternate_residual = *value;
+            break;
+          case 5:
+            target->zero_flux = *value;
+            break;
+          case 6:
+            target->zero_flux_correction = *value;
+            break;
+          default:
+            target->linear_residual = *value;
+            break;
         }
       }
     }
@@ -402,8 +419,8 @@ class ControlsHandler : public KeywordHandler {
 
   void time_line(BlockContext& ctx, std::vector<Field>& fields, TimeIncrementationControls& t) {
     if (line_ == 1) {
-      static constexpr const char* kNames[] = {"I_0", "I_R", "I_P", "I_C", "I_L", "I_G",
-                                               "I_S", "I_A"};
+      static constexpr const char* kNames[] = {"I_0", "I_R", "I_P", "I_C",
+                                               "I_L", "I_G", "I_S", "I_A"};
       int* targets[] = {&t.i0, &t.ir, &t.ip, &t.ic, &t.il, &t.ig, nullptr, &t.ia};
       for (std::size_t i = 0; i < fields.size(); ++i) {
         if (i >= 8 || !targets[i]) {
@@ -499,14 +516,10 @@ std::vector<KeywordSpec> step_keyword_specs() {
   stat.name = "STATIC";
   stat.level = KeywordLevel::History;
   stat.params = {
-      {"DIRECT", ParamKind::OptionalValue},
-      unsupported_param("STABILIZE"),
-      unsupported_param("ALLSDTOL"),
-      unsupported_param("CONTINUE"),
-      unsupported_param("FACTOR"),
-      unsupported_param("RIKS"),
-      unsupported_param("LONG TERM"),
-      unsupported_param("ADAPTIVE"),
+      {"DIRECT", ParamKind::OptionalValue}, unsupported_param("STABILIZE"),
+      unsupported_param("ALLSDTOL"),        unsupported_param("CONTINUE"),
+      unsupported_param("FACTOR"),          unsupported_param("RIKS"),
+      unsupported_param("LONG TERM"),       unsupported_param("ADAPTIVE"),
   };
   stat.make_handler = &make<StaticHandler>;
   specs.push_back(std::move(stat));
@@ -515,7 +528,9 @@ std::vector<KeywordSpec> step_keyword_specs() {
   controls.name = "CONTROLS";
   controls.level = KeywordLevel::History;
   controls.params = {
-      {"PARAMETERS", ParamKind::Enum, false,
+      {"PARAMETERS",
+       ParamKind::Enum,
+       false,
        {"FIELD", "TIME INCREMENTATION", "LINE SEARCH", "CONSTRAINTS", "DIRECT CYCLIC"}},
       {"FIELD", ParamKind::Enum, false, {"GLOBAL", "DISPLACEMENT", "ROTATION"}},
       {"RESET", ParamKind::Flag},

@@ -50,9 +50,9 @@ class StopHandler : public KeywordHandler {
       return;
     }
     if (stop.lower && stop.upper && !(*stop.lower < *stop.upper)) {
-      ctx.report(DiagCode::value_out_of_range, fields[1],
-                 fmt::format("stop limits need L < U (L = {}, U = {})", fields[0].text,
-                             fields[1].text));
+      ctx.report(
+          DiagCode::value_out_of_range, fields[1],
+          fmt::format("stop limits need L < U (L = {}, U = {})", fields[0].text, fields[1].text));
       stop.valid = false;
     }
   }
@@ -185,17 +185,15 @@ std::vector<KeywordSpec> stop_lock_keyword_specs() {
   specs.push_back(behavior_suboption_spec("CONNECTOR STOP", {component_param_spec(true)}, [] {
     return std::unique_ptr<KeywordHandler>(new StopHandler());
   }));
-  std::vector<ParamSpec> lock_params = {component_param_spec(true),
-                                        ParamSpec{"LOCK", ParamKind::Value},
-                                        ParamSpec{"DEPENDENCIES", ParamKind::Value},
-                                        extrapolation_param_spec()};
+  std::vector<ParamSpec> lock_params = {
+      component_param_spec(true), ParamSpec{"LOCK", ParamKind::Value},
+      ParamSpec{"DEPENDENCIES", ParamKind::Value}, extrapolation_param_spec()};
   for (ParamSpec& p : regularize_param_specs()) lock_params.push_back(std::move(p));
   specs.push_back(behavior_suboption_spec("CONNECTOR LOCK", std::move(lock_params), [] {
     return std::unique_ptr<KeywordHandler>(new LockHandler());
   }));
   specs.push_back(behavior_suboption_spec(
-      "CONNECTOR FAILURE",
-      {component_param_spec(true), ParamSpec{"RELEASE", ParamKind::Value}},
+      "CONNECTOR FAILURE", {component_param_spec(true), ParamSpec{"RELEASE", ParamKind::Value}},
       [] { return std::unique_ptr<KeywordHandler>(new FailureHandler()); }));
   return specs;
 }

@@ -101,20 +101,24 @@ void replay_set_operations(Model& model, std::int32_t part_index, DiagnosticSink
     const LabelIndex& index = op.element_set ? source_part->element_index
                                              : source_part->node_index;
     switch (op.kind) {
-      case SetOperation::Kind::Label: {
-        std::int32_t found = index.find(op.first);
-        if (found == LabelIndex::kMissing) {
-          sink.report(op.element_set ? DiagCode::undefined_element : DiagCode::undefined_node,
-                      op.loc,
-                      fmt::format("{} {} is not defined{}", op.element_set ? "element" : "node",
-                                  op.first,
-                                  op.instance_key.empty()
-                                      ? std::string()
-                                      : fmt::format(" in instance '{}'", op.instance_display)));
-          target.defined_ok = false;
-          continue;
+      case SetOperation::Kind::Labels: {
+        target.members.reserve(target.members.size() + op.labels.size());
+        for (const SetOperation::LabelItem& item : op.labels) {
+          std::int32_t found = index.find(item.label);
+          if (found == LabelIndex::kMissing) {
+            sink.report(
+                op.element_set ? DiagCode::undefined_element : DiagCode::undefined_node,
+                item.loc,
+                fmt::format("{} {} is not defined{}", op.element_set ? "element" : "node",
+                            item.label,
+                            op.instance_key.empty()
+                                ? std::string()
+                                : fmt::format(" in instance '{}'", op.instance_display)));
+            target.defined_ok = false;
+            continue;
+          }
+          target.members.push_back(found + offset);
         }
-        target.members.push_back(found + offset);
         break;
       }
       case SetOperation::Kind::Range: {
@@ -157,9 +161,8 @@ void replay_set_operations(Model& model, std::int32_t part_index, DiagnosticSink
         for (std::int32_t e : it->second.members) {
           // Root-part element sets may hold instance elements (global indices): their nodes
           // are global already once the arrays are built, so use the local element.
-          const Element& element = part.elements.size() > static_cast<std::size_t>(e)
-                                       ? part.elements[e]
-                                       : model.elements[e];
+          // Root-part sets are replayed once the global arrays exist; the others use the part.
+          const Element& element = part_index == 0 ? model.elements[e] : part.elements[e];
           for (std::int32_t n : element.nodes) {
             if (n != kGround) target.members.push_back(n + offset);
           }
@@ -249,6 +252,12 @@ void finalize_geometry(Model& model, DiagnosticSink& sink) {
     const Instance& instance = model.instances[i];
     const Part& part = model.parts[instance.part];
     const bool placed = i != 0;
+    if (!placed && model.instances.size() == 1) {
+      // A flat deck: the root part's arrays are the global arrays (no copy).
+      model.nodes = std::move(model.parts[0].nodes);
+      model.elements = std::move(model.parts[0].elements);
+      continue;
+    }
     for (Node node : part.nodes) {
       node.instance = i;
       if (placed) node.x = instance.place(node.x);

@@ -64,16 +64,23 @@ struct Set {
 // known (labels may refer to later definitions; a set name copies the members it has at that
 // point, input-syntax.md §7.4).
 struct SetOperation {
-  enum class Kind : std::uint8_t { Label, SetName, Range, ElementNodes };
-  Kind kind = Kind::Label;
+  enum class Kind : std::uint8_t { Labels, SetName, Range, ElementNodes };
+  Kind kind = Kind::Labels;
   bool element_set = false;  // target is an element set
   std::string target_key;    // set being defined
   std::string source_key;    // SetName / ElementNodes: the set named on the line
   std::string source_display;
   std::string instance_key;  // INSTANCE= or a qualifier: labels of that instance
   std::string instance_display;
-  std::int32_t first = 0, last = 0, increment = 1;  // Label: first; Range: all three
+  std::int32_t first = 0, last = 0, increment = 1;  // Range
   SourceLoc loc;
+  // Labels: consecutive labels of one block share one operation (16 bytes a label), so a set
+  // of a million labels costs what its labels cost.
+  struct LabelItem {
+    std::int32_t label;
+    SourceLoc loc;
+  };
+  std::vector<LabelItem> labels;
 };
 
 struct Part {

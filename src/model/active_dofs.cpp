@@ -1,0 +1,88 @@
+#include "src/model/active_dofs.hpp"
+
+#include "src/model/model.hpp"
+
+namespace clinch {
+namespace {
+
+constexpr DofMask kAll3D = 0b111111;
+constexpr DofMask kTranslations3D = 0b000111;
+constexpr DofMask kAll2D = 0b100011;  // u1, u2, ur3
+constexpr DofMask kTranslations2D = 0b000011;
+
+DofMask dof_bit(int dof) {
+  return dof >= 1 && dof <= 6 ? static_cast<DofMask>(1u << (dof - 1)) : 0;
+}
+
+// connection-types.md §1.1: a connector activates the rotations of its nodes, except AXIAL,
+// LINK and JOIN, which never do (JOIN only *uses* rotations that something else activated).
+// Elements without a valid section are taken to use every DOF, so that the errors about the
+// section are not followed by warnings about DOFs.
+DofMask connector_dofs(const Model& model, std::int32_t element) {
+  const auto& sections = model.sections;
+  if (element < 0 || static_cast<std::size_t>(element) >= sections.section_of_element.size()) {
+    return kAll3D;
+  }
+  const std::int32_t s = sections.section_of_element[static_cast<std::size_t>(element)];
+  if (s < 0 || static_cast<std::size_t>(s) >= sections.connector_sections.size()) return kAll3D;
+  const ConnectorSection& section = sections.connector_sections[static_cast<std::size_t>(s)];
+  if (!section.valid || section.type_names.empty()) return kAll3D;
+  for (const std::string& type : section.type_names) {
+    if (type != "AXIAL" && type != "LINK" && type != "JOIN") return kAll3D;
+  }
+  return kTranslations3D;
+}
+
+// keywords.md §7: SPRING1/SPRING2 use the DOFs of their *SPRING DOF line (1–6 while the spring
+// data are unknown or invalid).
+DofMask spring_dofs(const Model& model, std::int32_t element, int slot, bool two_d) {
+  const auto& sections = model.sections;
+  const DofMask fallback = two_d ? kAll2D : kAll3D;
+  if (element < 0 || static_cast<std::size_t>(element) >= sections.spring_of_element.size()) {
+    return fallback;
+  }
+  const std::int32_t s = sections.spring_of_element[static_cast<std::size_t>(element)];
+  if (s < 0 || static_cast<std::size_t>(s) >= sections.springs.size()) return fallback;
+  const SpringProperty& spring = sections.springs[static_cast<std::size_t>(s)];
+  if (!spring.valid) return fallback;
+  const int dof = spring.dofs[slot == 0 ? 0 : 1];
+  const DofMask mask = dof_bit(dof);
+  return mask ? mask : fallback;
+}
+
+}  // namespace
+
+DofMask element_dofs(const Model& model, std::int32_t element, int slot) {
+  if (element < 0 || static_cast<std::size_t>(element) >= model.elements.size()) return 0;
+  const Element& e = model.elements[static_cast<std::size_t>(element)];
+  const bool two_d = model.dimension == 2;
+  switch (e.type) {
+    case ElementType::Conn3D2:
+      return two_d ? kAll2D : connector_dofs(model, element);
+    case ElementType::Conn2D2:
+      return kAll2D;
+    case ElementType::SpringA:
+      return two_d ? kTranslations2D : kTranslations3D;
+    case ElementType::Spring1:
+      return slot == 0 ? spring_dofs(model, element, 0, two_d) : 0;
+    case ElementType::Spring2:
+      return spring_dofs(model, element, slot, two_d);
+  }
+  return 0;
+}
+
+std::vector<DofMask> active_dofs(const Model& model) {
+  std::vector<DofMask> active(model.nodes.size(), 0);
+  for (std::size_t e = 0; e < model.elements.size(); ++e) {
+    const Element& element = model.elements[e];
+    for (int slot = 0; slot < 2; ++slot) {
+      const std::int32_t node = element.nodes[static_cast<std::size_t>(slot)];
+      if (node < 0 || static_cast<std::size_t>(node) >= active.size()) continue;  // ground
+      active[static_cast<std::size_t>(node)] |=
+          element_dofs(model, static_cast<std::int32_t>(e), slot);
+    }
+  }
+  return active;
+}
+
+}  // namespace clinch

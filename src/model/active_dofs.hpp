@@ -1,0 +1,24 @@
+// Which DOFs of each node some element uses (keywords.md, "DOF numbering"): the rule behind the
+// inactive-DOF checks of *BOUNDARY (W0803) and *CLOAD (E0801), the silent skipping of nodal
+// output components, and later the analysis plan's DOF map. Kept in one place so that it can be
+// refined (connection-types.md §1.1) without touching its users.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace clinch {
+
+struct Model;
+
+// Bit d − 1 stands for DOF d (1–3 translations, 4–6 rotations).
+using DofMask = std::uint8_t;
+
+// DOFs element `element` (global index) uses at its node in `slot` (0 or 1).
+DofMask element_dofs(const Model& model, std::int32_t element, int slot);
+
+// DOF mask of every global node; 0 for a node that belongs to no element. Valid after
+// validate_sections (it reads section_of_element and the *SPRING DOFs).
+std::vector<DofMask> active_dofs(const Model& model);
+
+}  // namespace clinch

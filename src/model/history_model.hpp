@@ -1,0 +1,246 @@
+// Plain data for amplitudes, steps and everything in them: procedure, controls, boundary
+// conditions, loads, connector motions and loads, output requests (keywords.md §8–§18). The
+// history keyword handlers fill it in deck order; validate_history resolves references and checks
+// the rules that need the whole model. Steps hold their *effective* NLGEOM and controls (what
+// carries over from earlier steps, keywords.md §13), so the step driver reads one step at a time.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "src/model/name.hpp"
+#include "src/model/references.hpp"
+
+namespace clinch {
+
+// ---- *AMPLITUDE (keywords.md §8) --------------------------------------------------------------
+
+enum class AmplitudeDefinition : std::uint8_t { Tabular, SmoothStep, EquallySpaced };
+
+struct Amplitude {
+  Name name;
+  SourceLoc loc;  // keyword line
+  AmplitudeDefinition definition = AmplitudeDefinition::Tabular;
+  bool total_time = false;    // TIME=TOTAL TIME (default STEP TIME)
+  bool absolute = false;      // VALUE=ABSOLUTE (default RELATIVE)
+  double fixed_interval = 0;  // EQUALLY SPACED
+  double begin = 0;
+  double scale_x = 1, scale_y = 1, shift_x = 0, shift_y = 0;
+  // Points after SCALEX/SCALEY/SHIFTX/SHIFTY (and, for EQUALLY SPACED, after generating the
+  // times), in data order.
+  std::vector<double> times, values;
+  std::int32_t step = -1;  // step it was defined in (−1: model data)
+  bool valid = true;       // the data were read without error
+  bool used = false;       // referenced by a condition or load (W0501 otherwise), set by validation
+};
+
+// ---- Conditions and loads (keywords.md §9–§13) ------------------------------------------------
+
+enum class ConditionKind : std::uint8_t { Boundary, Motion, Load, ConnectorLoad };
+const char* condition_keyword(ConditionKind kind);  // "*BOUNDARY", "*CONNECTOR MOTION", ...
+
+// One keyword block of a condition or load: what its parameters say for all its data lines.
+struct ConditionBlock {
+  ConditionKind kind = ConditionKind::Boundary;
+  SourceLoc loc;                      // keyword line
+  bool op_new = false;                // OP=NEW
+  Name amplitude;                     // AMPLITUDE= (empty: the step's default)
+  std::int32_t amplitude_index = -1;  // into HistoryModel::amplitudes, set by validation
+  bool fixed = false;                 // FIXED (BC and motion)
+  bool explicit_type = false;  // TYPE=DISPLACEMENT written (always RAMP without amplitude, §13)
+};
+
+// *BOUNDARY data line. DOFs as a mask (bit d − 1 for DOF d) because the named types are not
+// ranges (XSYMM = 1, 5, 6).
+struct BoundaryCondition {
+  std::int32_t block = -1;  // into the owner's ConditionBlock list
+  TargetRef target;         // node or node set
+  std::uint8_t dofs = 0;
+  int first_dof = 0, last_dof = 0;  // range form; 0 for a named type
+  std::string named_type;           // "ENCASTRE", ... (empty: range form)
+  double magnitude = 0;             // 0 when blank, ignored with FIXED
+  SourceLoc loc;                    // column 1 of the line
+  SourceLoc dof_loc;                // field 2
+  SourceLoc magnitude_loc;          // field 4 (invalid when blank)
+};
+
+// *CLOAD data line.
+struct ConcentratedLoad {
+  std::int32_t block = -1;
+  TargetRef target;
+  int dof = 0;
+  double magnitude = 0;
+  SourceLoc loc, dof_loc;
+};
+
+// *CONNECTOR MOTION and *CONNECTOR LOAD data line.
+struct ConnectorCondition {
+  std::int32_t block = -1;
+  TargetRef target;   // element or element set
+  int component = 0;  // 1…6
+  double magnitude = 0;
+  SourceLoc loc, component_loc, magnitude_loc;
+};
+
+// ---- Procedure and controls (keywords.md §15, §16) --------------------------------------------
+
+// *STATIC with its data line, defaults resolved (§15).
+struct StaticProcedure {
+  SourceLoc loc;                         // keyword line
+  bool direct = false;                   // DIRECT: fixed increments, no cutback
+  bool no_stop = false;                  // DIRECT=NO STOP
+  double initial_increment = 1.0;        // Δt₀ (reduced to T when larger, W0808)
+  double period = 1.0;                   // T
+  double min_increment = 1e-5;           // ignored with DIRECT
+  double max_increment = 1.0;            // ignored with DIRECT
+  SourceLoc data_loc;                    // the data line (invalid when absent)
+  std::array<SourceLoc, 4> field_loc{};  // fields 1–4 (invalid when blank)
+};
+
+// PARAMETERS=FIELD (§16): one set for translational and one for rotational fields.
+struct FieldControls {
+  double residual = 0.005;             // Rₙ
+  double correction = 0.01;            // Cₙ
+  double initial_flux = 0.01;          // q̄₀
+  std::optional<double> user_flux;     // q̄ᵤ
+  double alternate_residual = 0.02;    // Rₚ
+  double zero_flux = 1e-5;             // ε
+  double zero_flux_correction = 1e-3;  // C_ε
+  double linear_residual = 1e-8;       // ε_l
+};
+
+// PARAMETERS=TIME INCREMENTATION (§16). The values clinch ignores are not stored.
+struct TimeIncrementationControls {
+  int i0 = 4, ir = 8, ip = 9, ic = 16, il = 10, ig = 4, ia = 5;
+  double df = 0.25, dc = 0.5, db = 0.75, dd = 1.5;
+};
+
+// PARAMETERS=LINE SEARCH (§16; not confirmed: Abaqus defaults).
+struct LineSearchControls {
+  int max_iterations = 0;  // N_ls (0: off)
+  double s_max = 1.0, s_min = 1e-4, f_s = 0.25, eta = 0.10;
+};
+
+struct Controls {
+  FieldControls translation;  // FIELD=DISPLACEMENT (and connector forces)
+  FieldControls rotation;     // FIELD=ROTATION (and connector moments)
+  TimeIncrementationControls time;
+  LineSearchControls line_search;
+};
+
+// ---- Output requests (keywords.md §17, §18; output-variables.md) ------------------------------
+
+// One identifier on an output data line, as classified by parse_output_identifier
+// (output_variables.hpp). Connector components and nodal DOFs share one numbering: bit i − 1
+// stands for component i (connectors, output-variables.md §1.1) or DOF i (nodes: U1–U3 = 1–3,
+// UR1–UR3 = 4–6; RF/RM and CF/CM likewise).
+struct OutputIdentifier {
+  std::string text;  // as written
+  SourceLoc loc;
+  std::string variable;             // canonical: "CTF", "U", "RF", "CDMG", "CSFC", "CDERF", "S"
+  std::uint8_t components = 0;      // requested components; 0 = one scalar column (CDMG, CSFC)
+  bool explicit_component = false;  // CTF2, CTM1, U1: that component must exist (E0902)
+  std::string derived_name;         // CDERF-<name> / CDERU-<name> (empty: every derived component)
+};
+
+struct ElementOutputRequest {
+  SourceLoc loc;
+  TargetRef elset;
+  bool has_elset = false;
+  std::vector<OutputIdentifier> identifiers;
+};
+
+struct NodeOutputRequest {
+  SourceLoc loc;
+  TargetRef nset;
+  bool has_nset = false;
+  std::vector<OutputIdentifier> identifiers;
+};
+
+// *OUTPUT with the *ELEMENT OUTPUT / *NODE OUTPUT blocks that follow it.
+struct OutputRequest {
+  enum class Op : std::uint8_t { Add, New, Replace };
+  enum class Variables : std::uint8_t { Listed, Preselect, All };
+  SourceLoc loc;
+  bool field = false;  // FIELD: accepted and ignored (W0902)
+  Name name;           // NAME= or H-Output-<k>
+  Op op = Op::Add;
+  Variables variables = Variables::Listed;
+  int frequency = 1;  // every n-th increment (0: none), plus the last of the step
+  std::optional<int> number_interval;
+  std::optional<double> time_interval;
+  std::vector<ElementOutputRequest> elements;
+  std::vector<NodeOutputRequest> nodes;
+};
+
+// *NODE PRINT / *EL PRINT (§18).
+struct PrintRequest {
+  enum class Totals : std::uint8_t { No, Yes, Only };
+  bool node = true;  // *NODE PRINT (else *EL PRINT)
+  SourceLoc loc;
+  TargetRef set;
+  bool has_set = false;
+  int frequency = 1;
+  SourceLoc frequency_loc;  // the FREQUENCY value (invalid when defaulted)
+  Totals totals = Totals::No;
+  std::vector<OutputIdentifier> identifiers;
+};
+
+// ---- Steps (keywords.md §14) ------------------------------------------------------------------
+
+enum class StepAmplitude : std::uint8_t { Ramp, Step };
+enum class Unsymmetric : std::uint8_t { Automatic, Yes, No };
+
+struct Step {
+  Name name;                 // NAME= or Step-<n>
+  SourceLoc loc;             // keyword line
+  std::string description;   // first data line
+  bool nlgeom = false;       // effective: once on, stays on (W0804)
+  int max_increments = 100;  // INC
+  SourceLoc inc_loc;
+  StepAmplitude amplitude = StepAmplitude::Ramp;
+  Unsymmetric unsymmetric = Unsymmetric::Automatic;
+  SourceLoc unsymmetric_loc;
+  bool extrapolation = true;  // EXTRAPOLATION=LINEAR (false: NO)
+
+  std::optional<StaticProcedure> procedure;
+  Controls controls;  // effective controls (carried over, §13)
+
+  std::vector<ConditionBlock> blocks;
+  std::vector<BoundaryCondition> boundaries;
+  std::vector<ConcentratedLoad> loads;
+  std::vector<ConnectorCondition> motions;
+  std::vector<ConnectorCondition> connector_loads;
+
+  std::vector<OutputRequest> outputs;
+  std::vector<PrintRequest> prints;
+
+  bool closed = false;  // its *END STEP was read
+  SourceLoc end_loc;
+  bool placeholder = false;  // created for a *STEP whose keyword line had errors
+
+  // OP=NEW on some block of this kind: the step's blocks of that kind are the complete set (§13).
+  bool replaces(ConditionKind kind) const;
+};
+
+struct HistoryModel {
+  std::vector<Amplitude> amplitudes;
+  std::unordered_map<std::string, std::int32_t> amplitude_by_key;
+
+  // Model-data *BOUNDARY and *CONNECTOR MOTION (zero values, no amplitude).
+  std::vector<ConditionBlock> model_blocks;
+  std::vector<BoundaryCondition> model_boundaries;
+  std::vector<ConnectorCondition> model_motions;
+
+  std::vector<Step> steps;
+  std::unordered_map<std::string, std::int32_t> step_by_key;
+
+  int output_requests = 0;           // numbering of H-Output-<k>
+  bool field_output_warned = false;  // W0902 once per deck
+};
+
+}  // namespace clinch
