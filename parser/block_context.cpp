@@ -31,14 +31,19 @@ bool is_unquoted_name(std::string_view text) {
 
 bool parse_integer_text(std::string_view text, std::int64_t& value) {
   if (text.empty()) return false;
-  std::size_t start = (text[0] == '+' || text[0] == '-') ? 1 : 0;
-  if (start == text.size()) return false;
-  for (std::size_t i = start; i < text.size(); ++i) {
-    if (!is_digit(text[i])) return false;
+  std::size_t i = (text[0] == '+' || text[0] == '-') ? 1 : 0;
+  if (i == text.size() || text.size() - i > 19) return false;  // 19 digits fit an int64
+  std::uint64_t magnitude = 0;
+  for (; i < text.size(); ++i) {
+    const char c = text[i];
+    if (!is_digit(c)) return false;
+    magnitude = magnitude * 10 + static_cast<std::uint64_t>(c - '0');
   }
-  const char* begin = text.data() + (text[0] == '+' ? 1 : 0);
-  auto [ptr, ec] = std::from_chars(begin, text.data() + text.size(), value);
-  return ec == std::errc() && ptr == text.data() + text.size();
+  const std::uint64_t limit = text[0] == '-' ? 9223372036854775808ull : 9223372036854775807ull;
+  if (magnitude > limit) return false;
+  value = text[0] == '-' ? static_cast<std::int64_t>(0 - magnitude)
+                         : static_cast<std::int64_t>(magnitude);
+  return true;
 }
 
 bool parse_real_text(std::string_view text, double& value, bool* overflow) {
@@ -240,6 +245,14 @@ std::optional<TargetRef> BlockContext::target(const Field& field, std::string_vi
   TargetRef ref;
   ref.loc = field.loc;
   ref.part = position_.part;
+  // Fast path for the common plain label (element connectivity, set lists).
+  std::int64_t plain = 0;
+  if (!field.parameter && !field.quoted && !field.text.empty() && is_digit(field.text[0]) &&
+      parse_integer_text(field.text, plain) && plain >= 1 && plain <= 2147483647) {
+    ref.is_label = true;
+    ref.label = static_cast<std::int32_t>(plain);
+    return ref;
+  }
   if (field.parameter) {
     const ParamValue& v = *field.parameter;
     if (v.kind == ParamValue::Kind::String) {

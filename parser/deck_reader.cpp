@@ -23,11 +23,12 @@ constexpr std::size_t kMaxIncludeDepth = 32;
 // Physical lines of the deck with *INCLUDE splicing: a stack of files being read.
 class LineStream {
  public:
-  LineStream(SourceManager& sources, DiagnosticSink& sink) : sources_(sources), sink_(sink) {}
+  LineStream(SourceManager& sources, DiagnosticSink& sink, bool checks = true)
+      : sources_(sources), sink_(sink), checks_(checks) {}
 
   void push(std::uint32_t file) {
     frames_.push_back(std::make_unique<Frame>(
-        Frame{file, LineScanner(sources_.file(file).text, file, sink_)}));
+        Frame{file, LineScanner(sources_.file(file).text, file, sink_, checks_)}));
   }
   bool empty() const { return frames_.empty(); }
   std::size_t depth() const { return frames_.size(); }
@@ -56,6 +57,7 @@ class LineStream {
   };
   SourceManager& sources_;
   DiagnosticSink& sink_;
+  bool checks_;
   std::vector<std::unique_ptr<Frame>> frames_;
 };
 
@@ -99,7 +101,7 @@ class Reader {
   // ---- Pass 1: which parameters exist, and is this a part–assembly deck ----------------------
   void prepass(std::uint32_t main_file) {
     DiagnosticSink quiet;
-    LineStream stream(sources_, quiet);
+    LineStream stream(sources_, quiet, /*checks=*/false);
     std::vector<std::string> open;
     stream.push(main_file);
     bool in_parameter = false;

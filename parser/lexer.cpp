@@ -107,22 +107,19 @@ bool split_fields(std::string_view text, SourceLoc loc, std::vector<Field>& fiel
     while (i < n && is_blank(data[i])) ++i;
     field.loc = loc.shifted(static_cast<std::uint32_t>(i));
     // Fast path: a field without quotes, inner blanks or high bytes is copied in one piece.
+    // One pass finds the comma and notes blanks that stand between non-blank characters.
     std::size_t end = i;
+    std::size_t last = i;  // one past the last non-blank character
     bool simple = true;
-    while (end < n && data[end] != ',') {
+    while (end < n) {
       const char c = data[end];
-      if (c == '"' || is_high(c)) simple = false;
-      ++end;
-    }
-    std::size_t last = end;
-    while (last > i && is_blank(data[last - 1])) --last;
-    if (simple) {
-      for (std::size_t k = i; k < last; ++k) {
-        if (is_blank(data[k])) {
-          simple = false;
-          break;
-        }
+      if (c == ',') break;
+      if (!is_blank(c)) {
+        if (last != end && last != i) simple = false;  // blanks inside the field
+        if (c == '"' || is_high(c)) simple = false;
+        last = end + 1;
       }
+      ++end;
     }
     if (simple) {
       field.text.assign(data + i, last - i);
@@ -267,8 +264,9 @@ bool parse_keyword_line(const std::vector<KeywordSegment>& segments, KeywordLine
   return !any_malformed;
 }
 
-LineScanner::LineScanner(std::string_view text, std::uint32_t file_index, DiagnosticSink& sink)
-    : text_(text), file_(file_index), sink_(sink) {}
+LineScanner::LineScanner(std::string_view text, std::uint32_t file_index, DiagnosticSink& sink,
+                         bool checks)
+    : text_(text), file_(file_index), checks_(checks), sink_(sink) {}
 
 LineScanner::Kind LineScanner::next() {
   if (offset_ >= text_.size()) return Kind::End;
@@ -286,7 +284,7 @@ LineScanner::Kind LineScanner::next() {
   // The branch-free scan lets the compiler vectorise the common, clean case.
   rejected_ = false;
   unsigned bad = 0;
-  for (char ch : line_) {
+  if (checks_) for (char ch : line_) {
     const auto c = static_cast<unsigned char>(ch);
     bad |= static_cast<unsigned>((c < 0x20) & (c != '\t')) | static_cast<unsigned>(c == 0x7f);
   }
@@ -302,7 +300,7 @@ LineScanner::Kind LineScanner::next() {
       }
     }
   }
-  if (line_.size() > 256 && !long_line_reported_) {
+  if (checks_ && line_.size() > 256 && !long_line_reported_) {
     long_line_reported_ = true;
     sink_.report(DiagCode::long_line, {file_, line_number_, 257},
                  "line is longer than 256 characters (Abaqus limit)");

@@ -73,7 +73,10 @@ std::string fold_name(std::string_view text);
 class LineScanner {
  public:
   enum class Kind { Comment, Keyword, Blank, Data, End };
-  LineScanner(std::string_view text, std::uint32_t file_index, DiagnosticSink& sink);
+  // `checks` = false skips the line-level checks (the reader's pre-pass looks only for
+  // *PARAMETER and *INCLUDE lines and reports nothing).
+  LineScanner(std::string_view text, std::uint32_t file_index, DiagnosticSink& sink,
+              bool checks = true);
   // Advances to the next line; returns its kind. text()/loc() describe the current line.
   Kind next();
   std::string_view text() const { return line_; }
@@ -92,6 +95,7 @@ class LineScanner {
   std::uint32_t first_non_blank_ = 0;
   bool long_line_reported_ = false;
   bool rejected_ = false;
+  bool checks_ = true;
   DiagnosticSink& sink_;
 };
 
