@@ -16,6 +16,14 @@ namespace {
 
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
+// Field text as quoted in a message: long texts are cut (a 10 MB field must not become a
+// 10 MB message).
+std::string shown(std::string_view text) {
+  constexpr std::size_t kMax = 60;
+  if (text.size() <= kMax) return std::string(text);
+  return std::string(text.substr(0, kMax)) + "...";
+}
+
 // A valid unquoted name (input-syntax.md §4): a letter or '_' first, then letters, digits, '_', '-'.
 bool is_unquoted_name(std::string_view text) {
   if (text.empty()) return false;
@@ -142,7 +150,7 @@ std::optional<std::int64_t> BlockContext::integer(const Field& field, std::strin
   if (!field.quoted && parse_integer_text(field.text, value)) {
     if (field.had_inner_blank) {
       report(DiagCode::blank_in_field, field,
-             fmt::format("blank in '{}' ignored; the value is {}", field.text, value));
+             fmt::format("blank in '{}' ignored; the value is {}", shown(field.text), value));
     }
     return value;
   }
@@ -151,11 +159,11 @@ std::optional<std::int64_t> BlockContext::integer(const Field& field, std::strin
   if (!field.quoted && parse_real_text(field.text, real, &overflow) && !overflow &&
       real == std::floor(real) && std::fabs(real) < 9.0e18) {
     report(DiagCode::real_as_integer, field,
-           fmt::format("real value '{}' used where an integer is expected", field.text));
+           fmt::format("real value '{}' used where an integer is expected", shown(field.text)));
     return static_cast<std::int64_t>(real);
   }
   report(DiagCode::expected_integer, field,
-         fmt::format("expected an integer for {}, got '{}'", what, field.text));
+         fmt::format("expected an integer for {}, got '{}'", what, shown(field.text)));
   return std::nullopt;
 }
 
@@ -173,17 +181,17 @@ std::optional<double> BlockContext::real(const Field& field, std::string_view wh
   bool overflow = false;
   if (field.quoted || !parse_real_text(field.text, value, &overflow)) {
     report(DiagCode::expected_number, field,
-           fmt::format("expected a number for {}, got '{}'", what, field.text));
+           fmt::format("expected a number for {}, got '{}'", what, shown(field.text)));
     return std::nullopt;
   }
   if (overflow) {
     report(DiagCode::value_out_of_range, field,
-           fmt::format("{} '{}' does not fit a double-precision number", what, field.text));
+           fmt::format("{} '{}' does not fit a double-precision number", what, shown(field.text)));
     return std::nullopt;
   }
   if (field.had_inner_blank) {
     report(DiagCode::blank_in_field, field,
-           fmt::format("blank in '{}' ignored; the value is {}", field.text, field.text));
+           fmt::format("blank in '{}' ignored; the value is {}", shown(field.text), shown(field.text)));
   }
   return value;
 }
@@ -207,7 +215,7 @@ std::optional<Name> BlockContext::name(const Field& field, std::string_view what
   }
   if (field.text.rfind("__", 0) == 0) {
     report(DiagCode::invalid_name, field,
-           fmt::format("names starting with '__' are reserved ('{}')", field.text));
+           fmt::format("names starting with '__' are reserved ('{}')", shown(field.text)));
     return std::nullopt;
   }
   if (field.quoted) {
@@ -220,7 +228,7 @@ std::optional<Name> BlockContext::name(const Field& field, std::string_view what
   if (!is_unquoted_name(field.text)) {
     report(DiagCode::expected_name, field,
            fmt::format("expected a name for {}, got '{}' (quote names that contain other "
-                       "characters)", what, field.text));
+                       "characters)", what, shown(field.text)));
     return std::nullopt;
   }
   if (field.had_inner_blank) {
@@ -235,7 +243,7 @@ std::optional<TargetRef> BlockContext::label_ref(const Field& field, std::string
   std::optional<TargetRef> ref = target(field, what);
   if (ref && !ref->is_label) {
     report(DiagCode::expected_integer, field,
-           fmt::format("expected a {} label, got '{}'", what, field.text));
+           fmt::format("expected a {} label, got '{}'", what, shown(field.text)));
     return std::nullopt;
   }
   return ref;
@@ -295,7 +303,7 @@ std::optional<TargetRef> BlockContext::target(const Field& field, std::string_vi
       ref.instance_display = std::string(instance);
       if (instance.empty() || item.empty()) {
         report(DiagCode::expected_name, field,
-               fmt::format("expected a {} label or set name, got '{}'", what, field.text));
+               fmt::format("expected a {} label or set name, got '{}'", what, shown(field.text)));
         return std::nullopt;
       }
     }
@@ -312,7 +320,7 @@ std::optional<TargetRef> BlockContext::target(const Field& field, std::string_vi
         label = static_cast<std::int64_t>(real_value);
       } else {
         report(DiagCode::expected_name, field,
-               fmt::format("expected a {} label or set name, got '{}'", what, field.text));
+               fmt::format("expected a {} label or set name, got '{}'", what, shown(field.text)));
         return std::nullopt;
       }
     }
@@ -328,7 +336,7 @@ std::optional<TargetRef> BlockContext::target(const Field& field, std::string_vi
   if (!ref.instance_key.empty() || !field.quoted) {
     if (!is_unquoted_name(item) && !field.quoted) {
       report(DiagCode::expected_name, field,
-             fmt::format("expected a {} label or set name, got '{}'", what, field.text));
+             fmt::format("expected a {} label or set name, got '{}'", what, shown(field.text)));
       return std::nullopt;
     }
   }

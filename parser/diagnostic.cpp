@@ -60,7 +60,11 @@ void append_located(std::string& out, SourceLoc loc, std::string_view severity,
   std::string_view line = sources.line_text(loc);
   if (line.empty() || line.size() > 400) return;
   out += ' ';
-  for (char c : line) out += (static_cast<unsigned char>(c) < 0x20 && c != '\t') ? ' ' : c;
+  // Control and non-ASCII bytes are shown as '?' so that binary input cannot garble a terminal.
+  for (char c : line) {
+    const auto u = static_cast<unsigned char>(c);
+    out += c == '\t' ? c : ((u < 0x20 || u >= 0x7f) ? '?' : c);
+  }
   out += "\n ";
   for (std::uint32_t i = 1; i < loc.column && i <= line.size(); ++i) {
     out += line[i - 1] == '\t' ? '\t' : ' ';

@@ -3,9 +3,9 @@
 // combination, orientation points, spring data lines) into SectionModel; everything that needs
 // the elements (element kinds, CONN2D2, the spring's element type, references to other
 // definitions) is checked by validate_sections.
-#include <cmath>
-
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "parser/block_context.hpp"
 #include "parser/expression.hpp"
@@ -42,9 +42,9 @@ class OrientationHandler : public KeywordHandler {
     orientation_.part = ctx.position().part;
     bool supported = true;
     if (auto system = params.enum_value("SYSTEM"); !system.empty() && system != "RECTANGULAR") {
-      ctx.report(DiagCode::unsupported_orientation, params.loc("SYSTEM", true),
-                 fmt::format("SYSTEM={} is not supported for connector and spring orientations",
-                             system));
+      ctx.report(
+          DiagCode::unsupported_orientation, params.loc("SYSTEM", true),
+          fmt::format("SYSTEM={} is not supported for connector and spring orientations", system));
       supported = false;
     }
     if (auto definition = params.enum_value("DEFINITION"); definition == "OFFSET TO NODES") {
@@ -112,8 +112,7 @@ class OrientationHandler : public KeywordHandler {
       return;
     }
     orientation_.data_ok = seen_points_ && points_ok_ && rotation_ok_;
-    if (orientation_.data_ok &&
-        orientation_.definition == Orientation::Definition::Coordinates) {
+    if (orientation_.data_ok && orientation_.definition == Orientation::Definition::Coordinates) {
       TriadStatus status =
           orientation_triad(orientation_.a, orientation_.b, orientation_.c, orientation_.axis,
                             orientation_.angle_degrees, orientation_.triad);
@@ -329,7 +328,8 @@ class ConnectorSectionHandler : public KeywordHandler {
         // connection-types.md §1.5 rule 4: clinch runs implicit static steps only.
         ctx.report(DiagCode::accelerometer_converted, field,
                    fmt::format("connection type '{}' is converted to CARTESIAN in a static "
-                               "analysis", info->name));
+                               "analysis",
+                               info->name));
         info = &converted_type();
       }
       infos.push_back(info);
@@ -359,12 +359,14 @@ class ConnectorSectionHandler : public KeywordHandler {
       message = fmt::format("assembled connection type '{}' cannot be combined with '{}'",
                             assembled.name, other.name);
     } else if (first.kind == second.kind) {
-      message = fmt::format("connection types '{}' and '{}' are both {}", first.name, second.name,
-                            first.kind == ConnectionKind::Translational ? "translational"
-                                                                         : "rotational");
+      message =
+          fmt::format("connection types '{}' and '{}' are both {}", first.name, second.name,
+                      first.kind == ConnectionKind::Translational ? "translational" : "rotational");
     } else if (first.kind == ConnectionKind::Rotational) {
-      message = fmt::format("the translational type '{}' must come before the rotational type "
-                            "'{}'", second.name, first.name);
+      message = fmt::format(
+          "the translational type '{}' must come before the rotational type "
+          "'{}'",
+          second.name, first.name);
     } else {
       return true;
     }
@@ -379,8 +381,8 @@ class ConnectorSectionHandler : public KeywordHandler {
     }
     for (std::size_t k = 0; k < fields.size() && k < 2; ++k) {
       if (fields[k].empty()) continue;
-      if (auto name = ctx.name(fields[k], k == 0 ? "orientation at node a"
-                                                 : "orientation at node b")) {
+      if (auto name =
+              ctx.name(fields[k], k == 0 ? "orientation at node a" : "orientation at node b")) {
         section_.orientations[k] = *name;
       }
     }
@@ -402,12 +404,12 @@ class ConnectorSectionHandler : public KeywordHandler {
         if (use != OrientationUse::Ignored) all_ignore = false;
         if (use == OrientationUse::Required && given.empty() && !defaulted) {
           defaulted = true;  // once per end, naming the first type that needs it
-          ctx.report(DiagCode::orientation_defaulted, section_.type_locs[k],
-                     fmt::format("connection type '{}' needs an orientation at node {}; {} are "
-                                 "used",
-                                 info->name, node,
-                                 end == 0 ? "the global axes"
-                                          : "the initial directions at node a"));
+          ctx.report(
+              DiagCode::orientation_defaulted, section_.type_locs[k],
+              fmt::format("connection type '{}' needs an orientation at node {}; {} are "
+                          "used",
+                          info->name, node,
+                          end == 0 ? "the global axes" : "the initial directions at node a"));
         }
       }
       if (!given.empty() && all_ignore) {
@@ -526,7 +528,8 @@ class SpringHandler : public KeywordHandler {
         ctx.report(DiagCode::spring_dof_line, field.loc,
                    field.empty() ? std::string("missing DOF on the *SPRING DOF line")
                                  : fmt::format("expected an integer DOF on the *SPRING DOF line, "
-                                               "got '{}'", field.text));
+                                               "got '{}'",
+                                               field.text));
         spring_.first_line_ok = false;
         return;
       }
@@ -567,8 +570,8 @@ class SpringHandler : public KeywordHandler {
 // ---------------------------------------------------------------------------------------------
 // *SECTION CONTROLS (keywords.md §5): only the values matching behaviors.md §7.4.
 
-constexpr std::string_view kSectionControlsParams[] = {"NAME", "ELEMENTDELETION",
-                                                       "MAXDEGRADATION", "VISCOSITY"};
+constexpr std::string_view kSectionControlsParams[] = {"NAME", "ELEMENTDELETION", "MAXDEGRADATION",
+                                                       "VISCOSITY"};
 
 class SectionControlsHandler : public KeywordHandler {
  public:
@@ -606,9 +609,9 @@ class SectionControlsHandler : public KeywordHandler {
                      fmt::format("MAX DEGRADATION {} is out of range (0, 1]", field.text));
           ok = false;
         } else if (*value != 1.0) {
-          ctx.report(DiagCode::unsupported_option, field,
-                     fmt::format("MAX DEGRADATION={} is not supported by clinch (only 1.0)",
-                                 field.text));
+          ctx.report(
+              DiagCode::unsupported_option, field,
+              fmt::format("MAX DEGRADATION={} is not supported by clinch (only 1.0)", field.text));
           ok = false;
         }
       } else {
@@ -665,7 +668,9 @@ std::vector<KeywordSpec> section_keyword_specs() {
   orientation.level = KeywordLevel::ModelGeometry;
   orientation.params = {
       {"NAME", ParamKind::Value, true},
-      {"SYSTEM", ParamKind::Enum, false,
+      {"SYSTEM",
+       ParamKind::Enum,
+       false,
        {"RECTANGULAR", "CYLINDRICAL", "SPHERICAL", "Z RECTANGULAR", "USER"}},
       {"DEFINITION", ParamKind::Enum, false, {"COORDINATES", "NODES", "OFFSET TO NODES"}},
       {"LOCAL DIRECTIONS", ParamKind::OptionalValue},

@@ -23,7 +23,7 @@ enum class V1Support : std::uint8_t { Supported, Converted, Unsupported };
 struct ConnectionTypeInfo {
   std::string_view name;  // canonical spelling of the master table ("SLIDE-PLANE")
   ConnectionKind kind;
-  ComponentMask available;     // 3-D (CONN3D2)
+  ComponentMask available;  // 3-D (CONN3D2)
   ComponentMask constrained;
   OrientationUse orientation_a;
   OrientationUse orientation_b;

@@ -42,13 +42,13 @@ struct Orientation {
   Vec3 a{}, b{}, c{};
   std::array<TargetRef, 3> nodes;  // NODES: na, nb, nc (nc optional)
   bool has_node_c = false;
-  SourceLoc a_loc, b_loc;          // first field of point a and of point b (E0706)
-  int axis = 1;                    // data line 2: extra rotation about local axis `axis`
+  SourceLoc a_loc, b_loc;  // first field of point a and of point b (E0706)
+  int axis = 1;            // data line 2: extra rotation about local axis `axis`
   double angle_degrees = 0;
-  bool data_ok = false;            // data line 1 was read without errors
-  bool valid = false;              // the triad is defined (filled by validation for NODES)
+  bool data_ok = false;  // data line 1 was read without errors
+  bool valid = false;    // the triad is defined (filled by validation for NODES)
   Triad triad{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
-  bool used = false;               // referenced by a section or spring (W0501 otherwise)
+  bool used = false;  // referenced by a section or spring (W0501 otherwise)
 };
 
 // *SECTION CONTROLS (keywords.md §5). v1 accepts only the values that match behaviors.md §7.4.
@@ -62,23 +62,23 @@ struct SectionControls {
 };
 
 struct ConnectorSection {
-  TargetRef elset;             // ELSET= (scope: the part where the section is written)
+  TargetRef elset;  // ELSET= (scope: the part where the section is written)
   SourceLoc keyword_loc;
-  Name behavior;               // BEHAVIOR= (empty: none); loc = the value
+  Name behavior;                     // BEHAVIOR= (empty: none); loc = the value
   std::int32_t behavior_index = -1;  // into BehaviorModel::behaviors, set by validation
-  Name controls;               // CONTROLS=
+  Name controls;                     // CONTROLS=
   std::int32_t controls_index = -1;  // into SectionModel::controls, set by validation
   // The connection: one assembled type, or up to one translational and one rotational basic
   // type (canonical names, e.g. "CARTESIAN", "CARDAN"; empty when absent). ACCELEROMETER is
   // stored as CARTESIAN (connection-types.md §1.5 rule 4).
   std::vector<std::string> type_names;
-  SourceLoc type_loc;          // first field of data line 1
+  SourceLoc type_loc;                // first field of data line 1
   std::vector<SourceLoc> type_locs;  // each type field, parallel to type_names
   // 3-D masks after reading; validation replaces them by the CONN2D2 masks for 2-D sections.
   ComponentMask available = 0;
   ComponentMask constrained = 0;
-  bool valid = false;          // the type line was understood
-  bool two_d = false;          // the elements are CONN2D2 (filled by validation)
+  bool valid = false;  // the type line was understood
+  bool two_d = false;  // the elements are CONN2D2 (filled by validation)
   // Line 2: [a, b], always two entries (empty names where blank or absent).
   std::vector<Name> orientations = std::vector<Name>(2);
   // Resolved orientations at a and b (−1: none/default), filled by validation.
@@ -93,38 +93,38 @@ struct SpringValue {
   SourceLoc loc;
 };
 struct SpringLine {
-  SourceLoc loc;                     // column 1 of the line
-  std::vector<SpringValue> values;   // numbers in field order (property lines)
-  bool ok = true;                    // every field was a number
+  SourceLoc loc;                    // column 1 of the line
+  std::vector<SpringValue> values;  // numbers in field order (property lines)
+  bool ok = true;                   // every field was a number
 };
 
 struct SpringProperty {
   TargetRef elset;
   SourceLoc keyword_loc;
   bool nonlinear = false;
-  Name orientation;                  // ORIENTATION= (empty: global axes)
-  SourceLoc orientation_param_loc;   // the parameter name (W0702)
+  Name orientation;                     // ORIENTATION= (empty: global axes)
+  SourceLoc orientation_param_loc;      // the parameter name (W0702)
   std::int32_t orientation_index = -1;  // filled by validation
   // First data line (the DOF line position).
   bool has_first_line = false;
   bool first_line_blank = false;
-  bool first_line_real = false;      // holds a real number: SPRINGA property line (W0703)
-  bool first_line_ok = true;         // integers only (when not real-like)
+  bool first_line_real = false;  // holds a real number: SPRINGA property line (W0703)
+  bool first_line_ok = true;     // integers only (when not real-like)
   SourceLoc first_line_loc;
   std::vector<std::int64_t> first_line_integers;
   std::vector<SourceLoc> first_line_locs;
-  SpringLine first_line_as_property; // the first line read as numbers (when real-like)
-  bool data_ok = true;               // false: the block was rejected (only ELSET is used)
+  SpringLine first_line_as_property;       // the first line read as numbers (when real-like)
+  bool data_ok = true;                     // false: the block was rejected (only ELSET is used)
   std::vector<SpringLine> property_lines;  // data lines 2…
   // Filled by validation.
   ElementType type = ElementType::SpringA;
-  std::array<int, 2> dofs{0, 0};     // SPRING1: dofs[0]; SPRING2: both
-  double stiffness = 0;              // linear
+  std::array<int, 2> dofs{0, 0};  // SPRING1: dofs[0]; SPRING2: both
+  double stiffness = 0;           // linear
   struct Point {
     double force = 0, delta = 0;
     SourceLoc loc;
   };
-  std::vector<Point> table;          // nonlinear: F at Δ, Δ strictly increasing
+  std::vector<Point> table;  // nonlinear: F at Δ, Δ strictly increasing
   bool valid = false;
   std::vector<std::int32_t> elements;
 };

@@ -2,13 +2,13 @@
 // that need the complete geometry. Resolves the element sets of *CONNECTOR SECTION and *SPRING,
 // fills section_of_element / spring_of_element, resolves BEHAVIOR=, CONTROLS= and orientation
 // names, applies the CONN2D2 rules, and gives the check-time warnings of connection-types.md §2.2.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <map>
 #include <tuple>
-
-#include <fmt/format.h>
 
 #include "parser/diagnostic.hpp"
 #include "parser/lexer.hpp"
@@ -74,9 +74,9 @@ struct ElementGroup {
   }
 };
 
-std::string more_text(std::size_t count, std::string_view what) {
+std::string more_text(std::size_t count, std::string_view where) {
   if (count <= 1) return {};
-  return fmt::format(" (and {} more {})", count - 1, what);
+  return fmt::format(" (and {} more {}{})", count - 1, count == 2 ? "element" : "elements", where);
 }
 
 class SectionValidator {
@@ -147,9 +147,10 @@ class SectionValidator {
     const Element& later = model_.elements[static_cast<std::size_t>(std::max(first_2d, first_3d))];
     const Element& earlier =
         model_.elements[static_cast<std::size_t>(std::min(first_2d, first_3d))];
-    sink_.report(DiagCode::mixed_dimensions, later.keyword_loc(),
-                 later_is_2d ? "CONN2D2 elements cannot be mixed with CONN3D2 elements"
-                             : "CONN3D2 elements cannot be mixed with CONN2D2 elements")
+    sink_
+        .report(DiagCode::mixed_dimensions, later.keyword_loc(),
+                later_is_2d ? "CONN2D2 elements cannot be mixed with CONN3D2 elements"
+                            : "CONN3D2 elements cannot be mixed with CONN2D2 elements")
         .notes.push_back({earlier.keyword_loc(), fmt::format("{} elements are defined here",
                                                              element_type_name(earlier.type))});
   }
@@ -173,17 +174,17 @@ class SectionValidator {
       const Part& part = model_.parts[static_cast<std::size_t>(orientation.part)];
       const std::int32_t index = part.node_index.find(ref.label);
       if (index == LabelIndex::kMissing || static_cast<std::size_t>(index) >= part.nodes.size()) {
-        sink_.report(DiagCode::undefined_node, ref.loc,
-                     fmt::format("node {} is not defined in part '{}'", ref.label,
-                                 part.name.display));
+        sink_.report(
+            DiagCode::undefined_node, ref.loc,
+            fmt::format("node {} is not defined in part '{}'", ref.label, part.name.display));
         return;
       }
       // Part coordinates: each instance turns the triad (placed_triad).
       *points[static_cast<std::size_t>(k)] = part.nodes[static_cast<std::size_t>(index)].x;
     }
-    const TriadStatus status = orientation_triad(orientation.a, orientation.b, orientation.c,
-                                                 orientation.axis, orientation.angle_degrees,
-                                                 orientation.triad);
+    const TriadStatus status =
+        orientation_triad(orientation.a, orientation.b, orientation.c, orientation.axis,
+                          orientation.angle_degrees, orientation.triad);
     if (status == TriadStatus::PointAAtOrigin) {
       sink_.report(DiagCode::degenerate_geometry, orientation.a_loc,
                    fmt::format("orientation '{}': point a coincides with the origin c",
@@ -265,13 +266,14 @@ class SectionValidator {
     }
     for (const auto& [first_section, group] : duplicates) {
       const Element& element = model_.elements[static_cast<std::size_t>(group.first)];
-      sink_.report(DiagCode::duplicate_section, section.keyword_loc,
-                   fmt::format("element {} already has a *CONNECTOR SECTION{}",
-                               element_label(element), more_text(group.count, "elements")))
-          .notes.push_back({model_.sections.connector_sections[static_cast<std::size_t>(
-                                                                   first_section)]
-                                .keyword_loc,
-                            "first *CONNECTOR SECTION is here"});
+      sink_
+          .report(DiagCode::duplicate_section, section.keyword_loc,
+                  fmt::format("element {} already has a *CONNECTOR SECTION{}",
+                              element_label(element), more_text(group.count, "")))
+          .notes.push_back(
+              {model_.sections.connector_sections[static_cast<std::size_t>(first_section)]
+                   .keyword_loc,
+               "first *CONNECTOR SECTION is here"});
     }
     resolve_behavior(section);
     resolve_controls(section);
@@ -302,9 +304,9 @@ class SectionValidator {
       }
       return;  // its definition already failed: no second error here (input-syntax.md §10)
     }
-    Diagnostic& d =
-        sink_.report(DiagCode::undefined_behavior, section.behavior.loc,
-                     fmt::format("undefined connector behavior '{}'", written_name(section.behavior)));
+    Diagnostic& d = sink_.report(
+        DiagCode::undefined_behavior, section.behavior.loc,
+        fmt::format("undefined connector behavior '{}'", written_name(section.behavior)));
     std::vector<std::string> candidates;
     for (const ConnectorBehavior& b : behaviors.behaviors) {
       if (b.referable) candidates.push_back(b.name.display);
@@ -340,8 +342,7 @@ class SectionValidator {
       if (section.two_d && !info->allowed_2d) {
         sink_.report(DiagCode::type_dimension_mismatch,
                      k < section.type_locs.size() ? section.type_locs[k] : section.type_loc,
-                     fmt::format("connection type '{}' is not available for CONN2D2",
-                                 info->name));
+                     fmt::format("connection type '{}' is not available for CONN2D2", info->name));
         section.valid = false;
       }
     }
@@ -358,10 +359,11 @@ class SectionValidator {
       const Vec3& e3 = orientation.triad[2];
       if (std::fabs(e3[0]) > 1e-8 || std::fabs(e3[1]) > 1e-8 ||
           std::fabs(std::fabs(e3[2]) - 1.0) > 1e-8) {
-        sink_.report(DiagCode::degenerate_geometry, section.orientations[end].loc,
-                     fmt::format("orientation '{}' is used by CONN2D2 elements, but its local "
-                                 "3-axis is not the global z axis",
-                                 orientation.name.display))
+        sink_
+            .report(DiagCode::degenerate_geometry, section.orientations[end].loc,
+                    fmt::format("orientation '{}' is used by CONN2D2 elements, but its local "
+                                "3-axis is not the global z axis",
+                                orientation.name.display))
             .notes.push_back({orientation.keyword_loc, "orientation defined here"});
       }
     }
@@ -415,8 +417,8 @@ class SectionValidator {
 
   // Per-element checks of connection-types.md §2.2 (AXIAL, LINK, RADIAL-THRUST).
   void check_element_geometry(const ConnectorSection& section) {
-    const bool axial = std::find(section.type_names.begin(), section.type_names.end(),
-                                 "AXIAL") != section.type_names.end();
+    const bool axial = std::find(section.type_names.begin(), section.type_names.end(), "AXIAL") !=
+                       section.type_names.end();
     const bool link = std::find(section.type_names.begin(), section.type_names.end(), "LINK") !=
                       section.type_names.end();
     const bool radial = std::find(section.type_names.begin(), section.type_names.end(),
@@ -435,8 +437,7 @@ class SectionValidator {
       if (axial && !has_orientation && l0 <= tolerance_) axial_group.add(index);
       if (link && l0 <= tolerance_) link_group.add(index);
       if (radial && (!ori_a || ori_a->valid)) {
-        const Vec3 e3 =
-            ori_a ? placed_triad(model_, *ori_a, element.instance)[2] : Vec3{0, 0, 1};
+        const Vec3 e3 = ori_a ? placed_triad(model_, *ori_a, element.instance)[2] : Vec3{0, 0, 1};
         const double along = dot(e3, d0);
         const Vec3 radial_part = {d0[0] - along * e3[0], d0[1] - along * e3[1],
                                   d0[2] - along * e3[2]};
@@ -445,14 +446,12 @@ class SectionValidator {
         }
       }
     }
-    const SourceLoc section_loc = section.type_loc.valid() ? section.type_loc
-                                                           : section.keyword_loc;
+    const SourceLoc section_loc = section.type_loc.valid() ? section.type_loc : section.keyword_loc;
     auto report = [&](const ElementGroup& group, DiagCode code, const std::string& text) {
       if (group.first < 0) return;
       const Element& element = model_.elements[static_cast<std::size_t>(group.first)];
-      Diagnostic& d = sink_.report(code, element.loc(), text + more_text(group.count,
-                                                                         "elements of this "
-                                                                         "section"));
+      Diagnostic& d =
+          sink_.report(code, element.loc(), text + more_text(group.count, " of this section"));
       d.notes.push_back({section_loc, "section defined here"});
     };
     auto label_of = [&](const ElementGroup& group) {
@@ -525,9 +524,10 @@ class SectionValidator {
     }
     for (const auto& [first, group] : duplicates) {
       const Element& element = model_.elements[static_cast<std::size_t>(group.first)];
-      sink_.report(DiagCode::duplicate_section, spring.keyword_loc,
-                   fmt::format("element {} already has a *SPRING{}", element_label(element),
-                               more_text(group.count, "elements")))
+      sink_
+          .report(DiagCode::duplicate_section, spring.keyword_loc,
+                  fmt::format("element {} already has a *SPRING{}", element_label(element),
+                              more_text(group.count, "")))
           .notes.push_back({model_.sections.springs[static_cast<std::size_t>(first)].keyword_loc,
                             "first *SPRING is here"});
     }
@@ -545,8 +545,8 @@ class SectionValidator {
     for (const SpringLine* line : properties) {
       if (!line->ok) return;  // already reported by the reader
     }
-    spring.valid = spring.nonlinear ? check_table(spring, properties)
-                                    : check_linear(spring, properties);
+    spring.valid =
+        spring.nonlinear ? check_table(spring, properties) : check_linear(spring, properties);
   }
 
   // The DOF line (§7 data line 1); collects the property lines that precede the repeated ones.
@@ -590,9 +590,9 @@ class SectionValidator {
                      fmt::format("DOF {} is out of range (1-6)", dof));
         ok = false;
       } else if (model_.dimension == 2 && dof >= 3 && dof <= 5) {
-        sink_.report(DiagCode::spring_dof_line, loc,
-                     fmt::format("DOF {} does not exist in a two-dimensional model (DOFs 1, 2, 6)",
-                                 dof));
+        sink_.report(
+            DiagCode::spring_dof_line, loc,
+            fmt::format("DOF {} does not exist in a two-dimensional model (DOFs 1, 2, 6)", dof));
         ok = false;
       } else {
         spring.dofs[k] = static_cast<int>(dof);
@@ -682,8 +682,8 @@ class SectionValidator {
     } else if (0 > t.front().delta) {
       for (std::size_t k = 0; k + 1 < t.size(); ++k) {
         if (0 <= t[k + 1].delta) {
-          f0 = t[k].force + (t[k + 1].force - t[k].force) * (0 - t[k].delta) /
-                                (t[k + 1].delta - t[k].delta);
+          f0 = t[k].force +
+               (t[k + 1].force - t[k].force) * (0 - t[k].delta) / (t[k + 1].delta - t[k].delta);
           break;
         }
       }
@@ -727,8 +727,8 @@ class SectionValidator {
     for (std::size_t e = 0; e < model_.elements.size(); ++e) {
       const Element& element = model_.elements[e];
       const bool connector = is_connector(element.type);
-      const bool has = connector ? sections.section_of_element[e] >= 0
-                                 : sections.spring_of_element[e] >= 0;
+      const bool has =
+          connector ? sections.section_of_element[e] >= 0 : sections.spring_of_element[e] >= 0;
       if (has || (connector ? connector_set_failed_ : spring_set_failed_)) continue;
       auto key = std::make_tuple(element.file, element.keyword_line, connector);
       auto [it, inserted] = by_block.emplace(key, missing.size());
@@ -737,11 +737,11 @@ class SectionValidator {
     }
     for (const Missing& m : missing) {
       const Element& element = model_.elements[static_cast<std::size_t>(m.group.first)];
-      sink_.report(DiagCode::missing_section, m.loc,
-                   fmt::format("{} element {} has no {}{}", m.connector ? "connector" : "spring",
-                               element_label(element),
-                               m.connector ? "*CONNECTOR SECTION" : "*SPRING",
-                               more_text(m.group.count, "elements of this *ELEMENT block")));
+      sink_.report(
+          DiagCode::missing_section, m.loc,
+          fmt::format("{} element {} has no {}{}", m.connector ? "connector" : "spring",
+                      element_label(element), m.connector ? "*CONNECTOR SECTION" : "*SPRING",
+                      more_text(m.group.count, " of this *ELEMENT block")));
     }
   }
 
@@ -754,8 +754,6 @@ class SectionValidator {
 
 }  // namespace
 
-void validate_sections(Model& model, DiagnosticSink& sink) {
-  SectionValidator(model, sink).run();
-}
+void validate_sections(Model& model, DiagnosticSink& sink) { SectionValidator(model, sink).run(); }
 
 }  // namespace clinch

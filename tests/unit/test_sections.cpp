@@ -103,7 +103,7 @@ struct Row {
   OrientationUse a, b;
   bool three_d_only;
   V1Support v1;
-  const char* available_2d;    // nullptr: not allowed on CONN2D2
+  const char* available_2d;  // nullptr: not allowed on CONN2D2
   const char* constrained_2d;
 };
 
@@ -188,8 +188,7 @@ TEST(ConnectionTypes, AssembledTypesAreTheUnionOfTheirParts) {
   };
   for (const Case& c : {Case{"BEAM", "JOIN", "ALIGN"}, Case{"WELD", "JOIN", "ALIGN"},
                         Case{"BUSHING", "PROJECTION CARTESIAN", "PROJECTION FLEXION-TORSION"},
-                        Case{"CYLINDRICAL", "SLOT", "REVOLUTE"},
-                        Case{"HINGE", "JOIN", "REVOLUTE"},
+                        Case{"CYLINDRICAL", "SLOT", "REVOLUTE"}, Case{"HINGE", "JOIN", "REVOLUTE"},
                         Case{"PLANAR", "SLIDE-PLANE", "REVOLUTE"},
                         Case{"TRANSLATOR", "SLOT", "ALIGN"}, Case{"UJOINT", "JOIN", "UNIVERSAL"}}) {
     SCOPED_TRACE(c.assembled);
@@ -256,8 +255,7 @@ TEST(OrientationTriad, GeneralPoints) {
   expect_vec(t[2], {1 / r3, -1 / r3, 1 / r3}, "e3");
   // The origin c shifts both points: the same triad.
   Triad shifted;
-  ASSERT_EQ(orientation_triad({2, 3, -1}, {1, 3, 0}, {1, 2, -1}, 1, 0, shifted),
-            TriadStatus::Ok);
+  ASSERT_EQ(orientation_triad({2, 3, -1}, {1, 3, 0}, {1, 2, -1}, 1, 0, shifted), TriadStatus::Ok);
   for (int k = 0; k < 3; ++k) expect_vec(shifted[k], t[k], "shifted");
 }
 
@@ -310,10 +308,8 @@ TEST(OrientationTriad, DegenerateInputs) {
   Triad t;
   EXPECT_EQ(orientation_triad({1, 1, 1}, {0, 1, 0}, {1, 1, 1}, 1, 0, t),
             TriadStatus::PointAAtOrigin);
-  EXPECT_EQ(orientation_triad({1, 0, 0}, {3, 0, 0}, {0, 0, 0}, 1, 0, t),
-            TriadStatus::PointBOnAxis);
-  EXPECT_EQ(orientation_triad({1, 0, 0}, {0, 0, 0}, {0, 0, 0}, 1, 0, t),
-            TriadStatus::PointBOnAxis);
+  EXPECT_EQ(orientation_triad({1, 0, 0}, {3, 0, 0}, {0, 0, 0}, 1, 0, t), TriadStatus::PointBOnAxis);
+  EXPECT_EQ(orientation_triad({1, 0, 0}, {0, 0, 0}, {0, 0, 0}, 1, 0, t), TriadStatus::PointBOnAxis);
   EXPECT_EQ(orientation_triad({1, 0, 0}, {-2, 0, 0}, {0, 0, 0}, 1, 0, t),
             TriadStatus::PointBOnAxis);
 }
@@ -321,7 +317,8 @@ TEST(OrientationTriad, DegenerateInputs) {
 TEST(OrientationTriad, ReadFromTheDeck) {
   auto p = parse(two_nodes() +
                  "*ORIENTATION, NAME=\"Datum csys-1\"\n 1., 1., 0., 0., 1., 1.\n 3, 30.\n"
-                 "*CONNECTOR SECTION, ELSET=C\n CARTESIAN\n \"Datum csys-1\"\n" + kStep);
+                 "*CONNECTOR SECTION, ELSET=C\n CARTESIAN\n \"Datum csys-1\"\n" +
+                 kStep);
   ASSERT_EQ(p->model.sections.orientations.size(), 1u);
   const Orientation& o = p->model.sections.orientations[0];
   EXPECT_TRUE(o.valid);
@@ -337,12 +334,13 @@ TEST(OrientationTriad, ReadFromTheDeck) {
 }
 
 TEST(OrientationTriad, NodesDefinition) {
-  auto p = parse("*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n3, 1., 1., 0.\n4, 0., 1., 1.\n"
-                 "*ELEMENT, TYPE=CONN3D2, ELSET=C\n1, 1, 2\n"
-                 "*ORIENTATION, NAME=ON, DEFINITION=NODES\n 3, 4, 1\n"
-                 "*ORIENTATION, NAME=BAD, DEFINITION=NODES\n 2, 2\n"
-                 "*CONNECTOR SECTION, ELSET=C\n SLOT\n ON, BAD\n" +
-                 std::string(kStep));
+  auto p = parse(
+      "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n3, 1., 1., 0.\n4, 0., 1., 1.\n"
+      "*ELEMENT, TYPE=CONN3D2, ELSET=C\n1, 1, 2\n"
+      "*ORIENTATION, NAME=ON, DEFINITION=NODES\n 3, 4, 1\n"
+      "*ORIENTATION, NAME=BAD, DEFINITION=NODES\n 2, 2\n"
+      "*CONNECTOR SECTION, ELSET=C\n SLOT\n ON, BAD\n" +
+      std::string(kStep));
   const Orientation& on = p->model.sections.orientations.at(0);
   ASSERT_TRUE(on.valid) << p->dump();
   const double r2 = std::sqrt(2.0), r6 = std::sqrt(6.0);
@@ -357,9 +355,11 @@ TEST(OrientationTriad, NodesDefinition) {
 // *CONNECTOR SECTION reading and validation
 
 TEST(ConnectorSection, StoresTypesMasksAndReferences) {
-  auto p = parse(two_nodes() + "*ORIENTATION, NAME=OX\n1., 0., 0., 0., 1., 0.\n"
+  auto p = parse(two_nodes() +
+                 "*ORIENTATION, NAME=OX\n1., 0., 0., 0., 1., 0.\n"
                  "*CONNECTOR SECTION, ELSET=C, BEHAVIOR=B\n slot, Cardan\n OX, OX\n"
-                 "*CONNECTOR BEHAVIOR, NAME=B\n" + kStep);
+                 "*CONNECTOR BEHAVIOR, NAME=B\n" +
+                 kStep);
   ASSERT_EQ(p->model.sections.connector_sections.size(), 1u);
   const ConnectorSection& s = p->model.sections.connector_sections[0];
   EXPECT_TRUE(s.valid);
@@ -379,8 +379,10 @@ TEST(ConnectorSection, StoresTypesMasksAndReferences) {
 }
 
 TEST(ConnectorSection, Conn2d2UsesComponents126AndSetsTheDimension) {
-  auto p = parse("*NODE\n1, 0., 0.\n2, 1., 0.\n*ELEMENT, TYPE=CONN2D2, ELSET=C\n1, 1, 2\n"
-                 "*CONNECTOR SECTION, ELSET=C\n CARTESIAN, ROTATION\n" + std::string(kStep));
+  auto p = parse(
+      "*NODE\n1, 0., 0.\n2, 1., 0.\n*ELEMENT, TYPE=CONN2D2, ELSET=C\n1, 1, 2\n"
+      "*CONNECTOR SECTION, ELSET=C\n CARTESIAN, ROTATION\n" +
+      std::string(kStep));
   const ConnectorSection& s = p->model.sections.connector_sections.at(0);
   EXPECT_EQ(p->model.dimension, 2);
   EXPECT_TRUE(s.two_d);
@@ -389,8 +391,10 @@ TEST(ConnectorSection, Conn2d2UsesComponents126AndSetsTheDimension) {
   EXPECT_EQ(s.constrained, 0);
   EXPECT_EQ(p->sink.error_count(), 0u) << p->dump();
 
-  auto beam = parse("*NODE\n1, 0., 0.\n2, 1., 0.\n*ELEMENT, TYPE=CONN2D2, ELSET=C\n1, 1, 2\n"
-                    "*CONNECTOR SECTION, ELSET=C\n BEAM\n" + std::string(kStep));
+  auto beam = parse(
+      "*NODE\n1, 0., 0.\n2, 1., 0.\n*ELEMENT, TYPE=CONN2D2, ELSET=C\n1, 1, 2\n"
+      "*CONNECTOR SECTION, ELSET=C\n BEAM\n" +
+      std::string(kStep));
   EXPECT_EQ(beam->model.sections.connector_sections.at(0).constrained, mask_of("126"));
   EXPECT_EQ(beam->model.sections.connector_sections.at(0).available, 0);
 }
@@ -437,10 +441,11 @@ TEST(ConnectorSection, EachCombinationRuleError) {
 TEST(ConnectorSection, TypeInvalidOnConn2d2) {
   for (const char* type : {"CARDAN", "SLIDE-PLANE", "HINGE", "BUSHING", "EULER"}) {
     SCOPED_TRACE(type);
-    auto p = parse("*NODE\n1, 0., 0.\n2, 1., 0.\n*ELEMENT, TYPE=CONN2D2, ELSET=C\n1, 1, 2\n"
-                   "*ORIENTATION, NAME=OX\n1., 0., 0., 0., 1., 0.\n"
-                   "*CONNECTOR SECTION, ELSET=C\n " +
-                   std::string(type) + "\n OX\n" + kStep);
+    auto p = parse(
+        "*NODE\n1, 0., 0.\n2, 1., 0.\n*ELEMENT, TYPE=CONN2D2, ELSET=C\n1, 1, 2\n"
+        "*ORIENTATION, NAME=OX\n1., 0., 0., 0., 1., 0.\n"
+        "*CONNECTOR SECTION, ELSET=C\n " +
+        std::string(type) + "\n OX\n" + kStep);
     const Diagnostic& d = p->one(DiagCode::type_dimension_mismatch);
     expect_at(d, 9, 2);
     EXPECT_FALSE(p->model.sections.connector_sections.at(0).valid);
@@ -457,10 +462,11 @@ TEST(ConnectorSection, AccelerometerBecomesCartesian) {
 }
 
 TEST(ConnectorSection, MixedDimensionsAndMissingSections) {
-  auto p = parse("*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n"
-                 "*ELEMENT, TYPE=CONN3D2, ELSET=A\n1, 1, 2\n"
-                 "*ELEMENT, TYPE=CONN2D2, ELSET=B\n2, 1, 2\n3, 2, 1\n" +
-                 std::string(kStep));
+  auto p = parse(
+      "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n"
+      "*ELEMENT, TYPE=CONN3D2, ELSET=A\n1, 1, 2\n"
+      "*ELEMENT, TYPE=CONN2D2, ELSET=B\n2, 1, 2\n3, 2, 1\n" +
+      std::string(kStep));
   expect_at(p->one(DiagCode::mixed_dimensions), 6, 1);
   const Diagnostic& missing = *p->with(DiagCode::missing_section).at(1);
   expect_at(missing, 6, 1);
@@ -470,15 +476,16 @@ TEST(ConnectorSection, MixedDimensionsAndMissingSections) {
 }
 
 TEST(ConnectorSection, PartLevelSectionAppliesToEveryInstance) {
-  auto p = parse("*PART, NAME=P\n*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n"
-                 "*ELEMENT, TYPE=CONN3D2, ELSET=C\n1, 1, 2\n"
-                 "*ORIENTATION, NAME=O\n0., 1., 0., -1., 0., 0.\n"
-                 "*CONNECTOR SECTION, ELSET=C\n SLOT\n O\n*END PART\n"
-                 "*ASSEMBLY, NAME=A\n*INSTANCE, NAME=I1, PART=P\n*END INSTANCE\n"
-                 "*INSTANCE, NAME=I2, PART=P\n*END INSTANCE\n"
-                 "*ELEMENT, TYPE=CONN3D2, ELSET=W\n9, I1.1, I2.2\n"
-                 "*CONNECTOR SECTION, ELSET=W\n SLOT\n O\n*END ASSEMBLY\n" +
-                 std::string(kStep));
+  auto p = parse(
+      "*PART, NAME=P\n*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n"
+      "*ELEMENT, TYPE=CONN3D2, ELSET=C\n1, 1, 2\n"
+      "*ORIENTATION, NAME=O\n0., 1., 0., -1., 0., 0.\n"
+      "*CONNECTOR SECTION, ELSET=C\n SLOT\n O\n*END PART\n"
+      "*ASSEMBLY, NAME=A\n*INSTANCE, NAME=I1, PART=P\n*END INSTANCE\n"
+      "*INSTANCE, NAME=I2, PART=P\n*END INSTANCE\n"
+      "*ELEMENT, TYPE=CONN3D2, ELSET=W\n9, I1.1, I2.2\n"
+      "*CONNECTOR SECTION, ELSET=W\n SLOT\n O\n*END ASSEMBLY\n" +
+      std::string(kStep));
   const auto& sections = p->model.sections.connector_sections;
   ASSERT_EQ(sections.size(), 2u);
   EXPECT_EQ(sections[0].elements.size(), 2u);  // one element per instance
@@ -491,14 +498,18 @@ TEST(ConnectorSection, PartLevelSectionAppliesToEveryInstance) {
 }
 
 TEST(ConnectorSection, OrientationDefaultedAndIgnored) {
-  auto p = parse(two_nodes() + "*ORIENTATION, NAME=OX\n1., 0., 0., 0., 1., 0.\n"
-                 "*CONNECTOR SECTION, ELSET=C\n HINGE\n , OX\n" + kStep);
+  auto p = parse(two_nodes() +
+                 "*ORIENTATION, NAME=OX\n1., 0., 0., 0., 1., 0.\n"
+                 "*CONNECTOR SECTION, ELSET=C\n HINGE\n , OX\n" +
+                 kStep);
   const Diagnostic& defaulted = p->one(DiagCode::orientation_defaulted);
   expect_at(defaulted, 9, 2);
   EXPECT_EQ(defaulted.severity, Severity::Warning);
   EXPECT_TRUE(p->with(DiagCode::orientation_ignored).empty());
-  auto q = parse(two_nodes() + "*ORIENTATION, NAME=OX\n1., 0., 0., 0., 1., 0.\n"
-                 "*CONNECTOR SECTION, ELSET=C\n JOIN\n , OX\n" + kStep);
+  auto q = parse(two_nodes() +
+                 "*ORIENTATION, NAME=OX\n1., 0., 0., 0., 1., 0.\n"
+                 "*CONNECTOR SECTION, ELSET=C\n JOIN\n , OX\n" +
+                 kStep);
   expect_at(q->one(DiagCode::orientation_ignored), 10, 4);
 }
 
@@ -506,8 +517,10 @@ TEST(ConnectorSection, OrientationDefaultedAndIgnored) {
 // *SPRING
 
 TEST(Spring, LinearSpringaWithBlankDofLine) {
-  auto p = parse("*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n*ELEMENT, TYPE=SPRINGA, ELSET=S\n"
-                 "1, 1, 2\n*SPRING, ELSET=S\n\n10.\n" + std::string(kStep));
+  auto p = parse(
+      "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n*ELEMENT, TYPE=SPRINGA, ELSET=S\n"
+      "1, 1, 2\n*SPRING, ELSET=S\n\n10.\n" +
+      std::string(kStep));
   ASSERT_EQ(p->model.sections.springs.size(), 1u);
   const SpringProperty& s = p->model.sections.springs[0];
   EXPECT_TRUE(s.valid) << p->dump();
@@ -518,9 +531,11 @@ TEST(Spring, LinearSpringaWithBlankDofLine) {
 }
 
 TEST(Spring, Spring2DofsAndTable) {
-  auto p = parse("*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n*ELEMENT, TYPE=SPRING2, ELSET=S\n"
-                 "1, 1, 2\n*SPRING, ELSET=S, NONLINEAR\n1, 4\n-10., -1.\n0., 0.\n\n"
-                 "20., 1.\n" + std::string(kStep));
+  auto p = parse(
+      "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n*ELEMENT, TYPE=SPRING2, ELSET=S\n"
+      "1, 1, 2\n*SPRING, ELSET=S, NONLINEAR\n1, 4\n-10., -1.\n0., 0.\n\n"
+      "20., 1.\n" +
+      std::string(kStep));
   const SpringProperty& s = p->model.sections.springs.at(0);
   EXPECT_TRUE(s.valid) << p->dump();
   EXPECT_EQ(s.dofs[0], 1);
@@ -533,9 +548,10 @@ TEST(Spring, Spring2DofsAndTable) {
 
 TEST(Spring, TableChecks) {
   // Not increasing: at the Δ field of the offending line.
-  auto p = parse("*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n*ELEMENT, TYPE=SPRINGA, ELSET=S\n"
-                 "1, 1, 2\n*SPRING, ELSET=S, NONLINEAR\n\n0., 0.\n5., 1.\n6.,   1.\n" +
-                 std::string(kStep));
+  auto p = parse(
+      "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n*ELEMENT, TYPE=SPRINGA, ELSET=S\n"
+      "1, 1, 2\n*SPRING, ELSET=S, NONLINEAR\n\n0., 0.\n5., 1.\n6.,   1.\n" +
+      std::string(kStep));
   const Diagnostic& d = p->one(DiagCode::table_not_increasing);
   expect_at(d, 10, 7);
   EXPECT_NE(d.message.find("relative displacements must increase (1.0 after 1.0)"),
@@ -543,36 +559,42 @@ TEST(Spring, TableChecks) {
   EXPECT_FALSE(p->model.sections.springs.at(0).valid);
 
   // F(0) by interpolation: (−10 at −1, 30 at 1) gives 10 at 0.
-  auto w = parse("*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n*ELEMENT, TYPE=SPRINGA, ELSET=S\n"
-                 "1, 1, 2\n*SPRING, ELSET=S, NONLINEAR\n\n-10., -1.\n30., 1.\n" +
-                 std::string(kStep));
+  auto w = parse(
+      "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n*ELEMENT, TYPE=SPRINGA, ELSET=S\n"
+      "1, 1, 2\n*SPRING, ELSET=S, NONLINEAR\n\n-10., -1.\n30., 1.\n" +
+      std::string(kStep));
   const Diagnostic& offset = w->one(DiagCode::nonlinear_elasticity_offset);
   EXPECT_NE(offset.message.find("force 10.0 at zero"), std::string::npos) << offset.message;
   expect_at(offset, 8, 1);
 
   // Table entirely at positive Δ: F(0) is the first force (constant extrapolation).
-  auto e = parse("*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n*ELEMENT, TYPE=SPRINGA, ELSET=S\n"
-                 "1, 1, 2\n*SPRING, ELSET=S, NONLINEAR\n\n0., 1.\n10., 2.\n" +
-                 std::string(kStep));
+  auto e = parse(
+      "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n*ELEMENT, TYPE=SPRINGA, ELSET=S\n"
+      "1, 1, 2\n*SPRING, ELSET=S, NONLINEAR\n\n0., 1.\n10., 2.\n" +
+      std::string(kStep));
   EXPECT_TRUE(e->with(DiagCode::nonlinear_elasticity_offset).empty()) << e->dump();
 
   // One point only.
-  auto one = parse("*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n*ELEMENT, TYPE=SPRINGA, ELSET=S\n"
-                   "1, 1, 2\n*SPRING, ELSET=S, NONLINEAR\n\n0., 0.\n" + std::string(kStep));
+  auto one = parse(
+      "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n*ELEMENT, TYPE=SPRINGA, ELSET=S\n"
+      "1, 1, 2\n*SPRING, ELSET=S, NONLINEAR\n\n0., 0.\n" +
+      std::string(kStep));
   expect_at(one->one(DiagCode::table_not_increasing), 8, 1);
 }
 
 TEST(Spring, CalculixDecksWithoutBlankLine) {
-  auto p = parse("*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n*ELEMENT, TYPE=SPRINGA, ELSET=S\n"
-                 "1, 1, 2\n*SPRING, ELSET=S\n1.5e3\n" + std::string(kStep));
+  auto p = parse(
+      "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n*ELEMENT, TYPE=SPRINGA, ELSET=S\n"
+      "1, 1, 2\n*SPRING, ELSET=S\n1.5e3\n" +
+      std::string(kStep));
   expect_at(p->one(DiagCode::springa_missing_blank_line), 7, 1);
   EXPECT_DOUBLE_EQ(p->model.sections.springs.at(0).stiffness, 1500.);
   EXPECT_TRUE(p->model.sections.springs.at(0).valid);
 }
 
 TEST(Spring, ExternalCalculixDecksAreClean) {
-  for (const char* name : {"ccx-spring1.inp", "ccx-spring2.inp", "ccx-spring6.inp",
-                           "ccx-spring7.inp"}) {
+  for (const char* name :
+       {"ccx-spring1.inp", "ccx-spring2.inp", "ccx-spring6.inp", "ccx-spring7.inp"}) {
     SCOPED_TRACE(name);
     std::ifstream in(std::string(CLINCH_SHARED_DIR) + "/external-decks/" + name);
     ASSERT_TRUE(in.good());
@@ -589,9 +611,11 @@ TEST(Spring, ExternalCalculixDecksAreClean) {
 // *SECTION CONTROLS
 
 TEST(SectionControls, DefaultsAndReference) {
-  auto p = parse(two_nodes() + "*SECTION CONTROLS, NAME=SC, ELEMENT DELETION=YES, "
+  auto p = parse(two_nodes() +
+                 "*SECTION CONTROLS, NAME=SC, ELEMENT DELETION=YES, "
                  "MAX DEGRADATION=1.0, VISCOSITY=0.\n"
-                 "*CONNECTOR SECTION, ELSET=C, CONTROLS=sc\n AXIAL\n" + kStep);
+                 "*CONNECTOR SECTION, ELSET=C, CONTROLS=sc\n AXIAL\n" +
+                 kStep);
   ASSERT_EQ(p->model.sections.controls.size(), 1u);
   EXPECT_TRUE(p->model.sections.controls[0].used);
   EXPECT_EQ(p->model.sections.connector_sections.at(0).controls_index, 0);
