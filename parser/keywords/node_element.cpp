@@ -145,6 +145,8 @@ class ElementHandler : public KeywordHandler {
     element.keyword_line = ctx.keyword().loc.line;
     const auto index = static_cast<std::int32_t>(part_->elements.size());
     bool ok = true;
+    // Qualified node fields are kept aside until the element is accepted.
+    std::vector<Part::QualifiedNode> qualified;
     for (int slot = 0; slot < info_->nodes; ++slot) {
       const std::size_t k = static_cast<std::size_t>(slot) + 1;
       if (k >= fields.size() || fields[k].empty()) {
@@ -165,8 +167,8 @@ class ElementHandler : public KeywordHandler {
           ok = false;
           continue;
         }
-        part_->qualified_nodes.push_back({index, slot, ref->instance_key,
-                                          ref->instance_display, ref->label, fields[k].loc});
+        qualified.push_back({index, slot, ref->instance_key, ref->instance_display, ref->label,
+                             fields[k].loc});
         element.nodes[slot] = 0;
       } else {
         element.nodes[slot] = ref->label;  // a label until finalize_geometry resolves it
@@ -179,13 +181,10 @@ class ElementHandler : public KeywordHandler {
       ctx.report(DiagCode::duplicate_element, fields[0],
                  fmt::format("element {} is already defined", element.label))
           .notes.push_back({part_->elements[existing].loc(), "previous definition is here"});
-      part_->qualified_nodes.erase(
-          std::remove_if(part_->qualified_nodes.begin(), part_->qualified_nodes.end(),
-                         [&](const Part::QualifiedNode& q) { return q.element == index; }),
-          part_->qualified_nodes.end());
       return;
     }
     part_->elements.push_back(element);
+    for (Part::QualifiedNode& q : qualified) part_->qualified_nodes.push_back(std::move(q));
     if (set_) set_->members.push_back(index);
   }
 

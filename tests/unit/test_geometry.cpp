@@ -132,3 +132,21 @@ TEST(Geometry, UndefinedReferencesNameTheField) {
 
 }  // namespace
 }  // namespace clinch
+
+namespace clinch {
+namespace {
+
+// Found by fuzzing: an element line whose qualified node field was read before a later field
+// failed left a dangling qualified reference behind.
+TEST(Geometry, RejectedElementLeavesNoQualifiedReference) {
+  auto r = read("*NODE\n1, 0., 0., 0.\n*ELEMENT, TYPE=CONN3D2\n11, bolt1-4.477, 1E*dn\n");
+  ASSERT_EQ(r->model.elements.size(), 0u);
+  bool bad_field = false;
+  for (const Diagnostic& d : r->sink.diagnostics()) {
+    if (d.loc.line == 4 && d.loc.column == 18) bad_field = true;
+  }
+  EXPECT_TRUE(bad_field) << listing(*r);
+}
+
+}  // namespace
+}  // namespace clinch
