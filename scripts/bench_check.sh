@@ -7,22 +7,23 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 sizes=("$@")
 ((${#sizes[@]})) || sizes=(10000 100000 1000000)
-[ -x build/clinch ] && [ -x build/generate_connector_deck ] || bash scripts/setup.sh >/dev/null
+bin=${CLINCH_BUILD_DIR:-build}
+[ -x "$bin/clinch" ] && [ -x "$bin/generate_connector_deck" ] || bash scripts/setup.sh >/dev/null
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 median() { sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
 measure() {  # deck → "seconds kilobytes" per run, 5 runs
   for run in 1 2 3 4 5; do
-    /usr/bin/time -f "%e %M" -o "$dir/time" build/clinch check "$1" >/dev/null 2>&1 || true
-    cat "$dir/time"
+    /usr/bin/time -f "%e %M" -o "$dir/time" "$bin/clinch" check "$1" >/dev/null 2>&1 || true
+    tail -n 1 "$dir/time"
   done
 }
-build/generate_connector_deck 1 > "$dir/base.inp"
+"$bin/generate_connector_deck" 1 > "$dir/base.inp"
 base_kb=$(measure "$dir/base.inp" | awk '{print $2}' | median)
 awk -v kb="$base_kb" 'BEGIN { printf "baseline peak RSS (1 connector): %.1f MB\n", kb / 1024 }'
 printf "%10s %10s %10s %10s %12s %10s %12s\n" connectors deck_MB median_s MB_per_s peak_RSS_MB RSS/deck "(RSS-base)/deck"
 for n in "${sizes[@]}"; do
-  build/generate_connector_deck "$n" > "$dir/deck.inp"
+  "$bin/generate_connector_deck" "$n" > "$dir/deck.inp"
   bytes=$(stat -c %s "$dir/deck.inp")
   measure "$dir/deck.inp" > "$dir/runs"
   secs=$(awk '{print $1}' "$dir/runs" | median)
