@@ -176,7 +176,10 @@ void replay_set_operations(Model& model, std::int32_t part_index, DiagnosticSink
   // Duplicates within a set are dropped (input-syntax.md §7.4); members in ascending order.
   for (auto* sets : {&part.node_sets, &part.element_sets}) {
     for (auto& [key, set] : *sets) {
-      std::sort(set.members.begin(), set.members.end());
+      // Members usually arrive in order (GENERATE, label lists): sorting is then skipped.
+      if (!std::is_sorted(set.members.begin(), set.members.end())) {
+        std::sort(set.members.begin(), set.members.end());
+      }
       set.members.erase(std::unique(set.members.begin(), set.members.end()), set.members.end());
     }
   }
