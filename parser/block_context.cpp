@@ -111,7 +111,7 @@ bool parse_real_text(std::string_view text, double& value, bool* overflow) {
   return ec == std::errc() && ptr == buffer + length;
 }
 
-std::string BlockContext::keyword_display() const { return "*" + std::string(spec_.name); }
+std::string BlockContext::keyword_display() const { return fmt::format("*{}", spec_.name); }
 
 Diagnostic& BlockContext::report(DiagCode code, SourceLoc loc, std::string message) {
   return sink_.report(code, loc, std::move(message));

@@ -310,14 +310,14 @@ class Reader {
         return;
       }
     }
-    if (auto guess = closest_match("*" + line.spelled, registry_.display_names())) {
+    if (auto guess = closest_match(fmt::format("*{}", line.spelled), registry_.display_names())) {
       d.notes.push_back({line.loc, fmt::format("did you mean '{}'?", *guess)});
     }
   }
 
   // Checks where a keyword stands (input-syntax.md §7.1, §8); false when the block is skipped.
   bool check_level(const KeywordSpec& spec, const KeywordLine& line) {
-    const std::string kw = "*" + std::string(spec.name);
+    const std::string kw = fmt::format("*{}", spec.name);
     const ReaderPosition& p = position_;
     auto wrong_level = [&](std::string message) {
       sink_.report(DiagCode::wrong_level, line.loc, std::move(message));
@@ -386,7 +386,7 @@ class Reader {
   // Generic parameter checks of input-syntax.md §2 against the spec.
   bool validate_params(const KeywordSpec& spec, const KeywordLine& line, ParamSet& out) {
     const std::size_t errors_before = sink_.error_count();
-    const std::string kw = "*" + std::string(spec.name);
+    const std::string kw = fmt::format("*{}", spec.name);
     std::vector<const ParamSpec*> seen_specs;
     for (const KeywordParam& param : line.params) {
       const ParamSpec* match = nullptr;

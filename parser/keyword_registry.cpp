@@ -1,5 +1,7 @@
 #include "parser/keyword_registry.hpp"
 
+#include <fmt/format.h>
+
 #include "parser/keywords/keyword_families.hpp"
 
 namespace clinch {
@@ -20,7 +22,7 @@ const KeywordRegistry& KeywordRegistry::instance() {
 void KeywordRegistry::add(KeywordSpec spec) {
   auto owned = std::make_unique<KeywordSpec>(std::move(spec));
   by_name_[fold_name(owned->name)] = owned.get();
-  display_names_.push_back("*" + std::string(owned->name));
+  display_names_.push_back(fmt::format("*{}", owned->name));
   specs_.push_back(std::move(owned));
 }
 

@@ -9,6 +9,7 @@
 #include <regex>
 #include <sstream>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "parser/deck_reader.hpp"
@@ -96,7 +97,7 @@ TEST_P(DiagnosticDeck, ProducesExactlyTheExpectedDiagnostics) {
   for (const Expectation& e : expectations) {
     EXPECT_TRUE(e.met) << "expected " << (e.severity == Severity::Error ? "error" : "warning")
                        << " not produced: " << sources.file(e.file).display_name << ":"
-                       << e.line << (e.column ? ":" + std::to_string(e.column) : "")
+                       << e.line << (e.column ? fmt::format(":{}", e.column) : std::string())
                        << " {{" << e.text << "}}";
   }
 }

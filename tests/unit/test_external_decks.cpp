@@ -77,7 +77,9 @@ TEST(ExternalDecks, BushingFragmentNamesTheUndefinedInstances) {
   EXPECT_TRUE(has(*c, DiagCode::undefined_instance, 18, "'bolt1-4'"));
   // The column of the qualified field on "9, 20, bolt1-3.477".
   for (const Diagnostic& d : c->sink.diagnostics()) {
-    if (d.code == DiagCode::undefined_instance && d.loc.line == 8) EXPECT_EQ(d.loc.column, 8u);
+    if (d.code == DiagCode::undefined_instance && d.loc.line == 8) {
+      EXPECT_EQ(d.loc.column, 8u);
+    }
   }
 }
 

@@ -125,8 +125,12 @@ TEST(Geometry, UndefinedReferencesNameTheField) {
   EXPECT_NE(std::find(codes.begin(), codes.end(), DiagCode::undefined_node), codes.end());
   EXPECT_NE(std::find(codes.begin(), codes.end(), DiagCode::undefined_set), codes.end());
   for (const Diagnostic& d : r->sink.diagnostics()) {
-    if (d.code == DiagCode::undefined_node) EXPECT_EQ(d.loc.column, 4u);
-    if (d.code == DiagCode::undefined_set) EXPECT_EQ(d.loc.column, 8u);
+    if (d.code == DiagCode::undefined_node) {
+      EXPECT_EQ(d.loc.column, 4u);
+    }
+    if (d.code == DiagCode::undefined_set) {
+      EXPECT_EQ(d.loc.column, 8u);
+    }
   }
 }
 
