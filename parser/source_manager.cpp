@@ -26,11 +26,15 @@ std::optional<std::uint32_t> SourceManager::load(const std::string& path, Source
     if (error) *error = std::strerror(errno);
     return std::nullopt;
   }
-  // Read in one go when the size is known (a regular file), so the text is allocated once.
+  // Read straight into the text when the size is known (a regular file): one allocation, one
+  // copy. Anything left after that (a file that grew) is appended in chunks.
   std::string text;
   std::error_code size_error;
   const auto size = std::filesystem::file_size(path, size_error);
-  if (!size_error) text.reserve(static_cast<std::size_t>(size) + 1);
+  if (!size_error && size > 0) {
+    text.resize(static_cast<std::size_t>(size));
+    text.resize(std::fread(text.data(), 1, text.size(), handle));
+  }
   char buffer[1 << 16];
   std::size_t got;
   while ((got = std::fread(buffer, 1, sizeof buffer, handle)) > 0) text.append(buffer, got);
