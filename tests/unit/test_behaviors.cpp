@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "parser/deck_reader.hpp"
+#include "tests/unit/checked_deck.hpp"
 #include "parser/diagnostic.hpp"
 #include "parser/source_manager.hpp"
 #include "src/model/model.hpp"
@@ -19,35 +20,9 @@
 namespace clinch {
 namespace {
 
-struct Parsed {
-  SourceManager sources;
-  Model model;
-  DiagnosticSink sink;
-
+struct Parsed : CheckedDeck {
   const ConnectorBehavior& behavior(std::size_t i = 0) const {
     return model.behaviors.behaviors.at(i);
-  }
-  std::vector<const Diagnostic*> with(DiagCode code) const {
-    std::vector<const Diagnostic*> out;
-    for (const Diagnostic& d : sink.diagnostics()) {
-      if (d.code == code) out.push_back(&d);
-    }
-    return out;
-  }
-  // The one diagnostic of `code`; fails the test if there is not exactly one.
-  const Diagnostic& one(DiagCode code) const {
-    static const Diagnostic kNone{};
-    auto found = with(code);
-    EXPECT_EQ(found.size(), 1u) << "code " << diag_code_id(code) << ": " << dump();
-    return found.empty() ? kNone : *found.front();
-  }
-  std::string dump() const {
-    std::string out;
-    for (const Diagnostic& d : sink.diagnostics()) {
-      out += "\n  " + std::string(diag_code_id(d.code)) + " " + std::to_string(d.loc.line) + ":" +
-             std::to_string(d.loc.column) + " " + d.message;
-    }
-    return out;
   }
 };
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "parser/deck_reader.hpp"
+#include "tests/unit/checked_deck.hpp"
 #include "parser/diagnostic.hpp"
 #include "parser/source_manager.hpp"
 #include "src/model/model.hpp"
@@ -17,31 +18,8 @@
 namespace clinch {
 namespace {
 
-struct Deck {
-  SourceManager sources;
-  Model model;
-  DiagnosticSink sink;
-
-  std::vector<const Diagnostic*> with(DiagCode code) const {
-    std::vector<const Diagnostic*> out;
-    for (const Diagnostic& d : sink.diagnostics()) {
-      if (d.code == code) out.push_back(&d);
-    }
-    return out;
-  }
-  const Diagnostic* first(DiagCode code) const {
-    auto all = with(code);
-    return all.empty() ? nullptr : all.front();
-  }
+struct Deck : CheckedDeck {
   const ConnectorBehavior& behavior() const { return model.behaviors.behaviors.at(0); }
-  std::string dump() const {
-    std::string out;
-    for (const Diagnostic& d : sink.diagnostics()) {
-      out += std::string(diag_code_name(d.code)) + " " + std::to_string(d.loc.line) + ":" +
-             std::to_string(d.loc.column) + " " + d.message + "\n";
-    }
-    return out;
-  }
 };
 
 std::unique_ptr<Deck> read(const std::string& body) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "parser/deck_reader.hpp"
+#include "tests/unit/checked_deck.hpp"
 #include "parser/diagnostic.hpp"
 #include "parser/source_manager.hpp"
 #include "src/model/model.hpp"
@@ -19,22 +20,7 @@
 namespace clinch {
 namespace {
 
-struct Deck {
-  SourceManager sources;
-  Model model;
-  DiagnosticSink sink;
-
-  std::vector<const Diagnostic*> with(DiagCode code) const {
-    std::vector<const Diagnostic*> out;
-    for (const Diagnostic& d : sink.diagnostics()) {
-      if (d.code == code) out.push_back(&d);
-    }
-    return out;
-  }
-  const Diagnostic* first(DiagCode code) const {
-    auto all = with(code);
-    return all.empty() ? nullptr : all.front();
-  }
+struct Deck : CheckedDeck {
   // W0501 about a derived component (the behaviour itself may be unused in these decks).
   const Diagnostic* unused_derived() const {
     for (const Diagnostic* d : with(DiagCode::defined_but_unused)) {
@@ -44,15 +30,6 @@ struct Deck {
   }
   const ConnectorBehavior& behavior(std::size_t i = 0) const {
     return model.behaviors.behaviors.at(i);
-  }
-  // Every diagnostic, for failure messages.
-  std::string dump() const {
-    std::string out;
-    for (const Diagnostic& d : sink.diagnostics()) {
-      out += std::string(diag_code_name(d.code)) + " " + std::to_string(d.loc.line) + ":" +
-             std::to_string(d.loc.column) + " " + d.message + "\n";
-    }
-    return out;
   }
 };
 

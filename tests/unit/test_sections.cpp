@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "parser/deck_reader.hpp"
+#include "tests/unit/checked_deck.hpp"
 #include "parser/diagnostic.hpp"
 #include "parser/source_manager.hpp"
 #include "src/model/connection_types.hpp"
@@ -23,24 +24,7 @@ namespace {
 // ---------------------------------------------------------------------------------------------
 // Helpers
 
-struct Parsed {
-  SourceManager sources;
-  Model model;
-  DiagnosticSink sink;
-
-  std::vector<const Diagnostic*> with(DiagCode code) const {
-    std::vector<const Diagnostic*> out;
-    for (const Diagnostic& d : sink.diagnostics()) {
-      if (d.code == code) out.push_back(&d);
-    }
-    return out;
-  }
-  const Diagnostic& one(DiagCode code) const {
-    static const Diagnostic kNone{};
-    auto found = with(code);
-    EXPECT_EQ(found.size(), 1u) << "code " << diag_code_id(code) << ": " << dump();
-    return found.empty() ? kNone : *found.front();
-  }
+struct Parsed : CheckedDeck {
   // Every diagnostic except the ones listed (for "nothing else was reported" checks).
   std::size_t count_other_than(std::initializer_list<DiagCode> codes) const {
     std::size_t n = 0;
@@ -48,14 +32,6 @@ struct Parsed {
       if (std::find(codes.begin(), codes.end(), d.code) == codes.end()) ++n;
     }
     return n;
-  }
-  std::string dump() const {
-    std::string out;
-    for (const Diagnostic& d : sink.diagnostics()) {
-      out += "\n  " + std::string(diag_code_id(d.code)) + " " + std::to_string(d.loc.line) + ":" +
-             std::to_string(d.loc.column) + " " + d.message;
-    }
-    return out;
   }
 };
 
