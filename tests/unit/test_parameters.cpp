@@ -1,6 +1,7 @@
 // Unit tests of the *PARAMETER pre-pass (input-syntax.md §6.2, §6.4): file-order evaluation,
 // the spot weld example, every E04xx/W04xx the pre-pass reports with its location and notes,
 // and the no-cascade rule.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -288,8 +289,7 @@ TEST(Parameters, EvaluateIsIdempotentAndScales) {
   ParameterTable table;
   table.add_line({"p0 = 0", SourceLoc{0, 1, 1}});
   for (std::uint32_t k = 1; k <= 5000; ++k) {
-    table.add_line({"p" + std::to_string(k) + " = p" + std::to_string(k - 1) + " + 1",
-                    SourceLoc{0, k + 1, 1}});
+    table.add_line({fmt::format("p{} = p{} + 1", k, k - 1), SourceLoc{0, k + 1, 1}});
   }
   DiagnosticSink sink;
   table.evaluate(sink);
