@@ -1,15 +1,37 @@
-// The clinch command line (cli-contract.md): `check` today; `run` and `compare` arrive with the
-// solver. Usage errors exit with 3.
+// The clinch command line (cli-contract.md): `run`, `check` and `compare`. Usage errors exit
+// with 3.
 #include <iostream>
 
 #include <CLI/CLI.hpp>
 
 #include "src/cli/check_command.hpp"
+#include "src/cli/compare_command.hpp"
+#include "src/cli/run_command.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"clinch: implicit analysis of connector elements from Abaqus-style keyword decks"};
   app.set_version_flag("--version", std::string("clinch ") + CLINCH_VERSION);
   app.require_subcommand(1);
+
+  clinch::RunCommandOptions run_options;
+  std::string solver = "auto";
+  CLI::App* run = app.add_subcommand(
+      "run", "Run every step of a deck; writes <job>.history.csv, <job>.sta and <job>.log; exit "
+             "0 = completed, 1 = deck errors (nothing run), 2 = stopped early, 3 = usage or I/O "
+             "error");
+  run->add_option("DECK", run_options.deck, "the deck (.inp)")->required();
+  run->add_option("--out", run_options.out_dir, "output directory (created if missing)")
+      ->capture_default_str();
+  run->add_option("--job", run_options.job, "job name (default: the deck's name without .inp)");
+  run->add_flag("--quiet", run_options.quiet, "print nothing but warnings and errors");
+  run->add_flag("--check-tangent", run_options.check_tangent,
+                "compare the assembled tangent with finite differences of the residual at the "
+                "first iteration of each increment and log the worst entries (small decks)");
+  run->add_option("--solver", solver,
+                  "linear solver: auto (CHOLMOD for SPD systems, UMFPACK otherwise), cholmod, "
+                  "umfpack or dense")
+      ->check(CLI::IsMember({"auto", "cholmod", "umfpack", "dense"}))
+      ->capture_default_str();
 
   std::string deck;
   std::string format = "text";
@@ -19,6 +41,29 @@ int main(int argc, char** argv) {
   check->add_option("DECK", deck, "the deck (.inp)")->required();
   check->add_option("--format", format, "diagnostic format: text (stderr) or json (stdout)")
       ->check(CLI::IsMember({"text", "json"}));
+
+  clinch::CompareArguments compare_arguments;
+  CLI::App* compare = app.add_subcommand(
+      "compare",
+      "Compare two history tables column by column: rows matched by total_time, the result "
+      "interpolated linearly at the golden times; a value passes when |r - g| <= atol + rtol * "
+      "max(|g|, largest |g| of the column). Prints the worst deviation of each column; exit 0 = "
+      "all pass, 1 = a column fails or is missing, 3 = usage or I/O error");
+  compare->add_option("RESULT", compare_arguments.result_path, "the history table to check (.csv)")
+      ->required();
+  compare->add_option("GOLDEN", compare_arguments.golden_path, "the reference history table (.csv)")
+      ->required();
+  const CLI::Validator tolerance(
+      [](std::string& text) { return clinch::check_tolerance(text); }, "TOLERANCE");
+  compare->add_option("--rtol", compare_arguments.rtol, "relative tolerance")
+      ->check(tolerance)
+      ->capture_default_str();
+  compare->add_option("--atol", compare_arguments.atol, "absolute tolerance")
+      ->check(tolerance)
+      ->capture_default_str();
+  compare->add_option("--columns", compare_arguments.columns,
+                      "compare only the golden columns whose whole name matches this "
+                      "ECMAScript regular expression (default: all)");
 
   try {
     app.parse(argc, argv);
@@ -32,9 +77,17 @@ int main(int argc, char** argv) {
     app.exit(e);
     return 3;
   }
+  if (run->parsed()) {
+    run_options.solver = solver == "cholmod"   ? clinch::SolverChoice::Cholmod
+                         : solver == "umfpack" ? clinch::SolverChoice::Umfpack
+                         : solver == "dense"   ? clinch::SolverChoice::Dense
+                                               : clinch::SolverChoice::Automatic;
+    return clinch::run_deck(run_options);
+  }
   if (check->parsed()) {
     return clinch::run_check(deck, format == "json" ? clinch::DiagnosticFormat::Json
                                                     : clinch::DiagnosticFormat::Text);
   }
+  if (compare->parsed()) return clinch::run_compare(compare_arguments);
   return 3;
 }

@@ -1,5 +1,6 @@
 #include "src/model/active_dofs.hpp"
 
+#include "src/model/connection_types.hpp"
 #include "src/model/model.hpp"
 
 namespace clinch {
@@ -14,11 +15,13 @@ DofMask dof_bit(int dof) {
   return dof >= 1 && dof <= 6 ? static_cast<DofMask>(1u << (dof - 1)) : 0;
 }
 
-// connection-types.md §1.1: a connector activates the rotations of its nodes, except AXIAL,
-// LINK and JOIN, which never do (JOIN only *uses* rotations that something else activated).
-// Elements without a valid section are taken to use every DOF, so that the errors about the
-// section are not followed by warnings about DOFs.
-DofMask connector_dofs(const Model& model, std::int32_t element) {
+// connection-types.md §1.1: a connector activates the rotations of a node when one of its types
+// allows an orientation at that end (table §2.1, ori a / ori b) or uses the node's rotation,
+// except AXIAL, LINK and JOIN, which never do (JOIN only *uses* rotations that something else
+// activated). So CARTESIAN, SLOT, SLIDE-PLANE and RADIAL-THRUST (orientation ignored at b)
+// activate the rotations of node a only. Elements without a valid section are taken to use every
+// DOF, so that the errors about the section are not followed by warnings about DOFs.
+DofMask connector_dofs(const Model& model, std::int32_t element, int slot) {
   const auto& sections = model.sections;
   if (element < 0 || static_cast<std::size_t>(element) >= sections.section_of_element.size()) {
     return kAll3D;
@@ -28,7 +31,13 @@ DofMask connector_dofs(const Model& model, std::int32_t element) {
   const ConnectorSection& section = sections.connector_sections[static_cast<std::size_t>(s)];
   if (!section.valid || section.type_names.empty()) return kAll3D;
   for (const std::string& type : section.type_names) {
-    if (type != "AXIAL" && type != "LINK" && type != "JOIN") return kAll3D;
+    if (type == "AXIAL" || type == "LINK" || type == "JOIN") continue;
+    const ConnectionTypeInfo* info = find_connection_type(type);
+    if (!info) return kAll3D;
+    const OrientationUse use = slot == 0 ? info->orientation_a : info->orientation_b;
+    if (use != OrientationUse::Ignored || info->kind != ConnectionKind::Translational) {
+      return kAll3D;
+    }
   }
   return kTranslations3D;
 }
@@ -58,9 +67,10 @@ DofMask element_dofs(const Model& model, std::int32_t element, int slot) {
   const bool two_d = model.dimension == 2;
   switch (e.type) {
     case ElementType::Conn3D2:
-      return two_d ? kAll2D : connector_dofs(model, element);
+      return two_d ? (connector_dofs(model, element, slot) == kAll3D ? kAll2D : kTranslations2D)
+                   : connector_dofs(model, element, slot);
     case ElementType::Conn2D2:
-      return kAll2D;
+      return connector_dofs(model, element, slot) == kAll3D ? kAll2D : kTranslations2D;
     case ElementType::SpringA:
       return two_d ? kTranslations2D : kTranslations3D;
     case ElementType::Spring1:

@@ -209,11 +209,11 @@ TEST(History, OpNewRemovesEarlierBoundaryConditions) {
 TEST(History, NamedTypesIn2DApplyOnlyDofs126) {
   auto r = read_text(
       "*NODE\n1, 0., 0.\n2, 1., 0.\n*ELEMENT, TYPE=CONN2D2, ELSET=C\n1, 1, 2\n"
-      "*CONNECTOR SECTION, ELSET=C\nCARTESIAN\n*BOUNDARY\n1, ENCASTRE\n2, XSYMM\n"
-      "*STEP\n*STATIC\n*CONNECTOR MOTION\nC, 1, 0.1\n*END STEP\n");
+      "*CONNECTOR SECTION, ELSET=C\nROTATION\n*BOUNDARY\n1, ENCASTRE\n2, XSYMM\n"
+      "*STEP\n*STATIC\n*CONNECTOR MOTION\nC, 6, 0.1\n*END STEP\n");
   EXPECT_EQ(r->sink.diagnostics().size(), 0u) << r->listing();
   ASSERT_EQ(r->model.history.steps[0].motions.size(), 1u);
-  EXPECT_EQ(r->model.history.steps[0].motions[0].component, 1);
+  EXPECT_EQ(r->model.history.steps[0].motions[0].component, 6);
 }
 
 TEST(History, ModelDataMotionAndBlocks) {

@@ -1,0 +1,190 @@
+#!/usr/bin/env bash
+# clinch against CalculiX (Debian calculix-ccx 2.20) on the lattice decks of
+# decks/bench/generate_lattice.cpp (decks/bench/README.md): for each size and law, median wall time
+# and peak RSS of 3 runs (1 run when a run takes longer than LATTICE_SLOW_S seconds), Newton
+# iterations, the reaction's relative error against the closed form, and the clinch/CalculiX
+# ratios; then clinch's time per Newton iteration against one factorization plus solve.
+# Usage: scripts/bench_lattice.sh [sizes...]   (default: 10 15 20 30 40)
+# Environment: CLINCH_BUILD_DIR (default build), LATTICE_LAWS (default "linear nonlinear"),
+# LATTICE_AXIAL=0 to skip the clinch-only CONN3D2 rows, LATTICE_RUNS (3), LATTICE_SLOW_S (60),
+# LATTICE_KEEP=DIR to keep decks and outputs in DIR.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+sizes=("$@")
+((${#sizes[@]})) || sizes=(10 15 20 30 40)
+read -r -a laws <<< "${LATTICE_LAWS:-linear nonlinear}"
+runs=${LATTICE_RUNS:-3}
+slow=${LATTICE_SLOW_S:-60}
+bin=${CLINCH_BUILD_DIR:-build}
+if [ ! -x "$bin/generate_lattice" ]; then
+  echo "bench_lattice: $bin/generate_lattice is missing (build it first: scripts/setup.sh)" >&2
+  exit 3
+fi
+if ! command -v ccx >/dev/null; then
+  echo "bench_lattice: installing calculix-ccx" >&2
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get install -y -qq calculix-ccx >/dev/null 2>&1 ||
+    { apt-get update -qq && apt-get install -y -qq calculix-ccx >/dev/null; }
+fi
+if [ -n "${LATTICE_KEEP:-}" ]; then
+  dir=$LATTICE_KEEP
+  mkdir -p "$dir"
+else
+  dir=$(mktemp -d)
+  trap 'rm -rf "$dir"' EXIT
+fi
+dir=$(cd "$dir" && pwd)
+bin=$(cd "$bin" && pwd)
+
+median() { sort -g | awk '{a[NR]=$1} END {if (NR) print a[int((NR+1)/2)]; else print "nan"}'; }
+field() { sed -n "s/^ *\"$2\": *\"\{0,1\}\([^\",]*\).*/\1/p" "$1"; }  # flat JSON → value
+relative_error() { awk -v r="$1" -v ref="$2" 'BEGIN {
+  if (r == "" || r == "nan") { print "nan"; exit }
+  d = (r - ref) / ref; printf "%.2e\n", (d < 0 ? -d : d) }'; }
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN {printf "%.3f", (b > 0 ? a / b : 0)}'; }
+
+# One timed run in directory $1: "<wall s> <peak kB> <user s> <system s> <exit status>".
+timed() {
+  local wd=$1
+  shift
+  local status=0
+  (cd "$wd" && /usr/bin/time -f "%e %M %U %S" -o time.txt "$@" >stdout.txt 2>stderr.txt) ||
+    status=$?
+  echo "$(tail -n 1 "$wd/time.txt") $status"
+}
+
+# CalculiX prints " iteration N" once per equilibrium iteration (cut-back attempts included) and
+# the reaction total as the line after "total force (fx,fy,fz) for set XMAX", at every increment.
+ccx_iterations() { grep -c '^ iteration' "$1/stdout.txt" || true; }
+ccx_reaction() { awk '/total force \(fx,fy,fz\) for set XMAX/ {take = 1; next}
+                      take && NF {value = $1; take = 0} END {print (value == "" ? "nan" : value)}' \
+                     "$1/job.dat" 2>/dev/null || echo nan; }
+
+# clinch's <job>.sta (cli-contract.md): one line per attempt; the last three fields are times and
+# the one before them is "total iterations" (the cut-back flag column may be blank).
+clinch_iterations() { awk '$1 ~ /^[0-9]+$/ {sum += $(NF - 3)} END {print sum + 0}' "$1/job.sta"; }
+clinch_completed() { [ "$(tail -n 1 "$1/job.sta" 2>/dev/null)" = COMPLETED ]; }
+clinch_reaction() {
+  awk -F, 'NR == 1 {for (i = 1; i <= NF; ++i) if (toupper($i) == "RF1@XMAX") c = i; next}
+           {last = $c} END {print (c && last != "" ? last : "nan")}' "$1/job.history.csv" \
+    2>/dev/null || echo nan
+}
+# TODO(solver-report): `clinch run` does not report its linear-solver time yet. Once it writes a
+# line "factorize+solve: X s" (one CHOLMOD factorization plus solve of the run's last tangent) to
+# <job>.log, this picks it up; pass the option that enables it through CLINCH_RUN_FLAGS
+# (e.g. CLINCH_RUN_FLAGS=--solver-report).
+clinch_factorize_solve() {
+  sed -n 's/.*factorize+solve: *\([0-9.eE+-]*\) *s.*/\1/p' "$1/job.log" 2>/dev/null | tail -n 1
+}
+
+# Runs one code on one deck up to $runs times and prints "<median wall s> <median CPU s>
+# <median MB> <iterations> <reaction> <factorize+solve s or ->", or "failed".
+measure() {
+  local code=$1 deck=$2 wd=$3
+  local times=() cpus=() rss=() ok=1 run secs kb user sys status
+  for ((run = 1; run <= runs; ++run)); do
+    rm -rf "$wd" && mkdir -p "$wd"
+    if [ "$code" = ccx ]; then
+      cp "$deck" "$wd/job.inp"
+      read -r secs kb user sys status < <(timed "$wd" ccx -i job)
+      grep -q 'total force' "$wd/job.dat" 2>/dev/null || ok=0
+    else
+      # shellcheck disable=SC2086
+      read -r secs kb user sys status < <(timed "$wd" "$bin/clinch" run "$deck" --out "$wd" \
+                                             --job job ${CLINCH_RUN_FLAGS:-})
+      { [ "$status" = 0 ] && clinch_completed "$wd"; } || ok=0
+    fi
+    ((ok)) || break
+    times+=("$secs")
+    cpus+=("$(awk -v u="$user" -v s="$sys" 'BEGIN {print u + s}')")
+    rss+=("$kb")
+    awk -v s="$secs" -v slow="$slow" 'BEGIN {exit !(s > slow)}' && break
+  done
+  if ((!ok)); then
+    echo failed
+    return
+  fi
+  local its reaction fs=-
+  if [ "$code" = ccx ]; then
+    its=$(ccx_iterations "$wd")
+    reaction=$(ccx_reaction "$wd")
+  else
+    its=$(clinch_iterations "$wd")
+    reaction=$(clinch_reaction "$wd")
+    fs=$(clinch_factorize_solve "$wd")
+    fs=${fs:--}
+  fi
+  echo "$(printf '%s\n' "${times[@]}" | median) $(printf '%s\n' "${cpus[@]}" | median)" \
+    "$(printf '%s\n' "${rss[@]}" | median | awk '{printf "%.1f", $1 / 1024}') $its $reaction $fs"
+}
+
+ccx_version=$(ccx -v 2>/dev/null | grep -o 'Version [0-9.]*' | head -n 1) || true
+echo "lattice benchmark: $(nproc) cores, load average $(cut -d ' ' -f 1-3 /proc/loadavg)," \
+  "CalculiX ${ccx_version:-?}, medians of $runs runs (1 run above ${slow} s)"
+results=$dir/results.txt
+: > "$results"
+for law in "${laws[@]}"; do
+  for n in "${sizes[@]}"; do
+    elements=(springa)
+    [ "${LATTICE_AXIAL:-1}" = 0 ] || elements+=(axial)
+    for element in "${elements[@]}"; do
+      deck=$dir/lattice-$element-$law-$n.inp
+      ref=$dir/lattice-$element-$law-$n.json
+      "$bin/generate_lattice" --n "$n" --element "$element" --law "$law" --out "$deck" \
+        --reference "$ref"
+      exact=$(field "$ref" reaction)
+      dofs=$(field "$ref" free_dofs)
+      ccx_row="n/a"
+      [ "$element" = springa ] && ccx_row=$(measure ccx "$deck" "$dir/ccx-$element-$law-$n")
+      clinch_row=$(measure clinch "$deck" "$dir/clinch-$element-$law-$n")
+      echo "$law $element $n $dofs $exact | $ccx_row | $clinch_row" >> "$results"
+      echo "  done: $law $element N=$n (ccx: $ccx_row; clinch: $clinch_row)" >&2
+    done
+  done
+done
+
+row_format="%-9s %-7s %3s %6s | %8s %8s %7s %4s %8s | %8s %8s %7s %4s %8s | %6s %6s %6s\n"
+# shellcheck disable=SC2059
+printf "\n$row_format" law element N dofs ccx_s ccx_cpu ccx_MB it err clinch_s cl_cpu cl_MB it \
+  err t_rat cpu_r m_rat
+while IFS='|' read -r head ccx clinch; do
+  read -r law element n dofs exact <<< "$head"
+  read -r x_s x_cpu x_mb x_it x_r _ <<< "$ccx"
+  read -r c_s c_cpu c_mb c_it c_r _ <<< "$clinch"
+  x_err=-; c_err=-; t_rat=-; cpu_rat=-; m_rat=-
+  if [ "$x_s" = failed ]; then x_s="CalculiX failed"; x_cpu=""; x_mb=""; x_it=""; x_r=""; fi
+  if [ "$x_s" = n/a ]; then x_s=-; x_cpu=-; x_mb=-; x_it=-; fi
+  [ -n "${x_r:-}" ] && x_err=$(relative_error "$x_r" "$exact")
+  if [ "$c_s" = failed ]; then
+    c_s="clinch run failed"; c_cpu=""; c_mb=""; c_it=""
+  else
+    c_err=$(relative_error "$c_r" "$exact")
+    if [[ "$x_s" =~ ^[0-9.]+$ ]]; then
+      t_rat=$(ratio "$c_s" "$x_s")
+      cpu_rat=$(ratio "$c_cpu" "$x_cpu")
+      m_rat=$(ratio "$c_mb" "$x_mb")
+    fi
+  fi
+  # shellcheck disable=SC2059
+  printf "$row_format" "$law" "$element" "$n" "$dofs" "$x_s" "${x_cpu:-}" "${x_mb:-}" "${x_it:-}" \
+    "$x_err" "$c_s" "${c_cpu:-}" "${c_mb:-}" "${c_it:-}" "$c_err" "$t_rat" "$cpu_rat" "$m_rat"
+done < "$results"
+echo "s: median wall time, cpu: median user+system time, MB: median peak RSS, it: Newton"
+echo "iterations, err: |R - R_exact|/|R_exact| against the closed form (CalculiX prints 7 digits,"
+echo "so it resolves errors down to about 5e-7). Ratios: clinch/CalculiX (target: t_rat <= 0.2)."
+threads=$(grep -m 1 -o 'Using up to [0-9]* cpu(s) for spooles' "$dir"/ccx-*/stdout.txt 2>/dev/null |
+  head -n 1 | grep -o '[0-9]* cpu(s)') || true
+echo "CalculiX used ${threads:-? cpu(s)} for SPOOLES; load average at the end:" \
+  "$(cut -d ' ' -f 1-3 /proc/loadavg)."
+
+printf "\n%-9s %-7s %3s | %12s %16s %8s\n" law element N clinch_s/it factorize+solve ratio
+while IFS='|' read -r head _ clinch; do
+  read -r law element n _ <<< "$head"
+  read -r ls _ _ li _ fs <<< "$clinch"
+  [ "$ls" = failed ] && continue
+  awk -v l="$law" -v e="$element" -v n="$n" -v s="$ls" -v i="$li" -v f="${fs:--}" 'BEGIN {
+    per = i > 0 ? s / i : 0
+    if (f == "-") printf "%-9s %-7s %3s | %12.4f %16s %8s\n", l, e, n, per, "not reported", "-"
+    else printf "%-9s %-7s %3s | %12.4f %16.4f %8.2f\n", l, e, n, per, f, (f > 0 ? per / f : 0) }'
+done < "$results"
+echo "clinch_s/it is the whole run's wall time over its Newton iterations (target: ratio <= 1.5)."

@@ -1,0 +1,288 @@
+#include "src/assembly/analysis_plan.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "parser/diagnostic.hpp"
+#include "src/assembly/sparsity_pattern.hpp"
+#include "src/behavior/elastic_behavior.hpp"
+#include "src/model/orientation_triad.hpp"
+
+namespace clinch {
+namespace {
+
+constexpr DofMask kRotationDofs = 0b111000;
+
+Vector3 to_vector(const Vec3& v) { return {v[0], v[1], v[2]}; }
+
+Matrix3 to_matrix(const Triad& t) {
+  Matrix3 m;
+  for (int k = 0; k < 3; ++k) m.col(k) = to_vector(t[static_cast<std::size_t>(k)]);
+  return m;
+}
+
+// Behaviour options that clinch run does not integrate yet: the run refuses the deck instead of
+// ignoring them (issue scope: elasticity, reference, stops and locks).
+std::string unsupported_behavior(const ConnectorBehavior& b) {
+  if (!b.plasticities.empty()) return "*CONNECTOR PLASTICITY";
+  if (!b.damage_initiations.empty()) return "*CONNECTOR DAMAGE INITIATION";
+  if (!b.frictions.empty()) return "*CONNECTOR FRICTION";
+  if (!b.failures.empty()) return "*CONNECTOR FAILURE";
+  return {};
+}
+
+// Components a *CONNECTOR MOTION of any step (or model data) prescribes, per element.
+std::vector<ComponentMask> motion_components(const Model& model) {
+  std::vector<ComponentMask> mask(model.elements.size(), 0);
+  DiagnosticSink quiet;
+  std::vector<std::int32_t> targets;
+  auto add = [&](const ConnectorCondition& c) {
+    targets.clear();
+    if (!resolve_elements(model, c.target, targets, quiet)) return;
+    for (std::int32_t e : targets) mask[static_cast<std::size_t>(e)] |= component_bit(c.component);
+  };
+  for (const ConnectorCondition& c : model.history.model_motions) add(c);
+  for (const Step& step : model.history.steps) {
+    for (const ConnectorCondition& c : step.motions) add(c);
+  }
+  return mask;
+}
+
+double bounding_box_diagonal(const Model& model) {
+  if (model.nodes.empty()) return 0;
+  Vector3 lo = to_vector(model.nodes[0].x), hi = lo;
+  for (const Node& n : model.nodes) {
+    lo = lo.cwiseMin(to_vector(n.x));
+    hi = hi.cwiseMax(to_vector(n.x));
+  }
+  return (hi - lo).norm();
+}
+
+class PlanBuilder {
+ public:
+  PlanBuilder(const Model& model, AnalysisPlan& plan) : model_(model), plan_(plan) {}
+
+  bool build(std::string* error) {
+    plan_.dofs = DofMap(active_dofs(model_));
+    plan_.two_d = model_.dimension == 2;
+    plan_.connector_of_element.assign(model_.elements.size(), -1);
+    plan_.spring_of_element.assign(model_.elements.size(), -1);
+    motions_ = motion_components(model_);
+    length_tolerance_ = 1e-8 * std::max(1.0, bounding_box_diagonal(model_));
+    section_behavior_.assign(model_.sections.connector_sections.size(), nullptr);
+    section_behavior_built_.assign(model_.sections.connector_sections.size(), false);
+    for (const SpringProperty& spring : model_.sections.springs) {
+      plan_.spring_laws.push_back(spring.valid ? std::optional<SpringLaw>(SpringLaw(spring))
+                                               : std::nullopt);
+    }
+    for (std::size_t e = 0; e < model_.elements.size(); ++e) {
+      const Element& element = model_.elements[e];
+      const bool ok = is_connector(element.type) ? add_connector(static_cast<std::int32_t>(e), error)
+                                                 : add_spring(static_cast<std::int32_t>(e), error);
+      if (!ok) return false;
+    }
+    build_pattern();
+    return true;
+  }
+
+ private:
+  const Behavior* behavior_of_section(std::int32_t s) {
+    const auto index = static_cast<std::size_t>(s);
+    if (!section_behavior_built_[index]) {
+      section_behavior_built_[index] = true;
+      const ConnectorSection& section = model_.sections.connector_sections[index];
+      if (section.behavior_index >= 0) {
+        const ConnectorBehavior& b =
+            model_.behaviors.behaviors[static_cast<std::size_t>(section.behavior_index)];
+        plan_.behaviors.push_back(make_elastic_behavior(b, section.available));
+        section_behavior_[index] = plan_.behaviors.back().get();
+      }
+    }
+    return section_behavior_[index];
+  }
+
+  bool add_connector(std::int32_t e, std::string* error) {
+    const Element& element = model_.elements[static_cast<std::size_t>(e)];
+    const std::int32_t s = model_.sections.section_of_element[static_cast<std::size_t>(e)];
+    const ConnectorSection& section = model_.sections.connector_sections[static_cast<std::size_t>(s)];
+    const ConnectorBehavior* behavior =
+        section.behavior_index >= 0
+            ? &model_.behaviors.behaviors[static_cast<std::size_t>(section.behavior_index)]
+            : nullptr;
+    if (behavior) {
+      if (std::string what = unsupported_behavior(*behavior); !what.empty()) {
+        *error = fmt::format("connector behavior '{}' uses {}, which clinch run does not "
+                             "support yet (clinch check validates it)",
+                             behavior->name.display, what);
+        return false;
+      }
+    }
+    ConnectorRecord r;
+    r.element = e;
+    r.section = s;
+    r.nodes = element.nodes;
+    r.available = section.available;
+    r.constrained = section.constrained;
+
+    ConnectorSetup setup;
+    setup.type_names = section.type_names;
+    const std::int32_t a = element.nodes[0], b = element.nodes[1];
+    const Vector3 xa = a >= 0 ? to_vector(model_.nodes[static_cast<std::size_t>(a)].x) : Vector3{};
+    const Vector3 xb = b >= 0 ? to_vector(model_.nodes[static_cast<std::size_t>(b)].x) : xa;
+    setup.xa0 = a >= 0 ? xa : xb;  // a ground end sits at the other node (connection-types.md §1.2)
+    setup.xb0 = xb;
+    setup.ea0 = Matrix3::Identity();
+    for (int end = 0; end < 2; ++end) {
+      const std::int32_t o = section.orientation_index[static_cast<std::size_t>(end)];
+      if (o < 0) continue;
+      const Orientation& orientation = model_.sections.orientations[static_cast<std::size_t>(o)];
+      const Matrix3 triad = to_matrix(placed_triad(model_, orientation, element.instance));
+      (end == 0 ? setup.ea0 : setup.eb0) = triad;
+      (end == 0 ? setup.has_orientation_a : setup.has_orientation_b) = true;
+    }
+    if (!setup.has_orientation_b) setup.eb0 = setup.ea0;  // §1.3 default at b
+    setup.rotations_a = a >= 0 && (plan_.dofs.active(a) & kRotationDofs) != 0;
+    setup.two_d = section.two_d;
+    setup.length_tolerance = length_tolerance_;
+    std::string why;
+    std::optional<ConnectorKinematics> kinematics = ConnectorKinematics::create(setup, &why);
+    if (!kinematics) {
+      *error = fmt::format("connector element {}: {}",
+                           qualified_label(model_, element.instance, element.label), why);
+      return false;
+    }
+    plan_.length_scale = std::max(plan_.length_scale, (setup.xb0 - setup.xa0).norm());
+    r.kinematics = plan_.kinematics.size();
+    r.reference = kinematics->initial_position();
+    plan_.kinematics.push_back(std::move(*kinematics));
+    r.behavior = behavior_of_section(s);
+
+    ComponentMask multiplied = r.constrained | motions_[static_cast<std::size_t>(e)];
+    if (behavior) {
+      r.rigid = rigid_components(*behavior, r.available);
+      multiplied |= r.rigid;
+      if (behavior->reference) {
+        for (int i = 0; i < 6; ++i) {
+          const auto& v = behavior->reference->value[static_cast<std::size_t>(i)];
+          if (v && has_component(r.available, i + 1)) r.reference[i] = *v;
+        }
+      }
+      for (const ConnectorStop& stop : behavior->stops) {
+        if (!has_component(r.available, stop.component)) continue;
+        r.stops[static_cast<std::size_t>(stop.component - 1)] = {stop.lower, stop.upper};
+        multiplied |= component_bit(stop.component);
+      }
+      for (const ConnectorLock& lock : behavior->locks) {
+        const ComponentMask locks =
+            lock.locked == 0 ? r.available : (component_bit(lock.locked) & r.available);
+        r.locks.push_back({lock.component, locks, lock.bounds});
+        multiplied |= locks;
+      }
+    }
+    for (int c = 0; c < 12; ++c) {
+      const std::int32_t node = c < 6 ? a : b;
+      const int eq = plan_.dofs.equation(node, c % 6 + 1);
+      if (eq < 0) continue;
+      r.columns[static_cast<std::size_t>(r.column_count++)] = static_cast<std::int8_t>(c);
+      r.local.equation[static_cast<std::size_t>(r.local.count++)] = eq;
+    }
+    for (int i = 1; i <= 6; ++i) {
+      if (!has_component(multiplied, i)) continue;
+      r.multiplier_components[static_cast<std::size_t>(r.multiplier_count++)] =
+          static_cast<std::int8_t>(i);
+      r.local.equation[static_cast<std::size_t>(r.local.count++)] = plan_.dofs.add_multiplier(i >= 4);
+      plan_.has_multipliers = true;
+    }
+    r.history = plan_.history_size;
+    if (r.behavior) plan_.history_size += static_cast<std::size_t>(r.behavior->history_size());
+    plan_.connector_of_element[static_cast<std::size_t>(e)] =
+        static_cast<std::int32_t>(plan_.connectors.size());
+    plan_.connectors.push_back(std::move(r));
+    return true;
+  }
+
+  bool add_spring(std::int32_t e, std::string* /*error*/) {
+    const Element& element = model_.elements[static_cast<std::size_t>(e)];
+    const std::int32_t p = model_.sections.spring_of_element[static_cast<std::size_t>(e)];
+    const SpringProperty& property = model_.sections.springs[static_cast<std::size_t>(p)];
+    SpringRecord r;
+    r.element = e;
+    r.type = element.type;
+    r.nodes = element.nodes;
+    r.law = static_cast<std::size_t>(p);
+    int first_dof = 1;
+    if (element.type == ElementType::SpringA) {
+      r.d0 = to_vector(model_.nodes[static_cast<std::size_t>(r.nodes[1])].x) -
+             to_vector(model_.nodes[static_cast<std::size_t>(r.nodes[0])].x);
+    } else {
+      // keywords.md §7: DOF d means the global axis, or local axis e_d of the orientation.
+      Triad triad{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+      if (property.orientation_index >= 0) {
+        const Orientation& o =
+            model_.sections.orientations[static_cast<std::size_t>(property.orientation_index)];
+        triad = placed_triad(model_, o, element.instance);
+      }
+      const int slots = element.type == ElementType::Spring1 ? 1 : 2;
+      for (int k = 0; k < slots; ++k) {
+        const int dof = property.dofs[static_cast<std::size_t>(k)];
+        r.rotational = dof >= 4;
+        r.direction[static_cast<std::size_t>(k)] =
+            to_vector(triad[static_cast<std::size_t>((dof - 1) % 3)]);
+      }
+      first_dof = r.rotational ? 4 : 1;
+    }
+    for (int c = 0; c < 6; ++c) {
+      const int eq = plan_.dofs.equation(r.nodes[static_cast<std::size_t>(c / 3)], first_dof + c % 3);
+      if (eq < 0) continue;
+      r.columns[static_cast<std::size_t>(r.column_count++)] = static_cast<std::int8_t>(c);
+      r.local.equation[static_cast<std::size_t>(r.local.count++)] = eq;
+    }
+    plan_.spring_of_element[static_cast<std::size_t>(e)] =
+        static_cast<std::int32_t>(plan_.springs.size());
+    plan_.springs.push_back(r);
+    return true;
+  }
+
+  void build_pattern() {
+    SparsityBuilder builder(plan_.dofs.equations());
+    auto couple = [&](const LocalEquations& l) {
+      builder.couple(std::span<const int>(l.equation.data(), static_cast<std::size_t>(l.count)));
+    };
+    for (const ConnectorRecord& r : plan_.connectors) couple(r.local);
+    for (const SpringRecord& r : plan_.springs) couple(r.local);
+    plan_.pattern = builder.build();
+    auto place = [&](LocalEquations& l) {
+      l.positions = plan_.positions.size();
+      for (int j = 0; j < l.count; ++j) {
+        for (int i = 0; i <= j; ++i) {
+          plan_.positions.push_back(entry_position(plan_.pattern, l.equation[static_cast<std::size_t>(i)],
+                                                   l.equation[static_cast<std::size_t>(j)]));
+        }
+      }
+    };
+    for (ConnectorRecord& r : plan_.connectors) place(r.local);
+    for (SpringRecord& r : plan_.springs) place(r.local);
+    plan_.diagonal.resize(static_cast<std::size_t>(plan_.pattern.n));
+    for (int i = 0; i < plan_.pattern.n; ++i) {
+      plan_.diagonal[static_cast<std::size_t>(i)] = entry_position(plan_.pattern, i, i);
+    }
+  }
+
+  const Model& model_;
+  AnalysisPlan& plan_;
+  std::vector<ComponentMask> motions_;
+  std::vector<const Behavior*> section_behavior_;
+  std::vector<bool> section_behavior_built_;
+  double length_tolerance_ = 1e-8;
+};
+
+}  // namespace
+
+std::optional<AnalysisPlan> build_analysis_plan(const Model& model, std::string* error) {
+  AnalysisPlan plan;
+  if (!PlanBuilder(model, plan).build(error)) return std::nullopt;
+  return plan;
+}
+
+}  // namespace clinch

@@ -1,0 +1,100 @@
+// The analysis plan (ARCHITECTURE.md principle 7): what a run needs from the model, built once.
+// Active DOFs and their equations, one record per connector and spring with its kinematics,
+// behaviour, equations and scatter positions, one multiplier per connector component that can
+// ever be constrained (connection constraints, RIGID elasticity, stops, locks, connector motions),
+// and the fixed sparsity pattern. Nothing here changes during the analysis.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "src/assembly/dof_map.hpp"
+#include "src/behavior/behavior.hpp"
+#include "src/behavior/spring_law.hpp"
+#include "src/kinematics/connector_kinematics.hpp"
+#include "src/linalg/linear_solver.hpp"
+#include "src/model/model.hpp"
+
+namespace clinch {
+
+constexpr int kMaxLocalEquations = 18;  // 12 nodal columns + 6 multipliers
+
+// The equations of one element, in local order, and where its entries go in the matrix.
+struct LocalEquations {
+  std::array<int, kMaxLocalEquations> equation{};
+  int count = 0;
+  std::size_t positions = 0;  // offset of count·(count+1)/2 upper-triangle positions in the plan
+};
+
+struct ConnectorStopLimits {
+  std::optional<double> lower, upper;  // on the position p_i (behaviors.md §5.1)
+};
+
+struct ConnectorLockRule {
+  int component = 0;  // tested component
+  ComponentMask locks = 0;
+  ConnectorCriterionBounds bounds;
+};
+
+struct ConnectorRecord {
+  std::int32_t element = 0;  // global element index
+  std::int32_t section = 0;
+  std::array<std::int32_t, 2> nodes{kGround, kGround};
+  std::size_t kinematics = 0;  // into AnalysisPlan::kinematics
+  const Behavior* behavior = nullptr;
+  ComponentMask available = 0, constrained = 0, rigid = 0;
+  Vector6 reference = Vector6::Zero();  // ref_i: u = p − ref (behaviors.md §3)
+  std::array<ConnectorStopLimits, 6> stops;
+  std::vector<ConnectorLockRule> locks;
+  // Local columns 0…11 of [u_a, θ_a, u_b, θ_b] that have an equation, in order; then the
+  // components that own a multiplier.
+  std::array<std::int8_t, 12> columns{};
+  int column_count = 0;
+  std::array<std::int8_t, 6> multiplier_components{};
+  int multiplier_count = 0;
+  LocalEquations local;
+  std::size_t history = 0;  // offset of the behaviour's history
+};
+
+struct SpringRecord {
+  std::int32_t element = 0;
+  ElementType type = ElementType::SpringA;
+  std::array<std::int32_t, 2> nodes{kGround, kGround};
+  std::size_t law = 0;  // into AnalysisPlan::spring_laws
+  // SPRINGA: the initial vector between the nodes. SPRING1/2: the direction of the DOF at each
+  // node (global axis or the orientation's local axis), and whether it is a rotation.
+  Vector3 d0 = Vector3::Zero();
+  std::array<Vector3, 2> direction{Vector3::Zero(), Vector3::Zero()};
+  bool rotational = false;
+  LocalEquations local;
+  std::array<std::int8_t, 6> columns{};  // SPRINGA: 0–2 node 1, 3–5 node 2; SPRING1/2: 0–2 / 3–5
+  int column_count = 0;
+};
+
+struct AnalysisPlan {
+  DofMap dofs;
+  std::vector<ConnectorKinematics> kinematics;
+  std::vector<std::unique_ptr<Behavior>> behaviors;  // one per section that has elasticity
+  std::vector<ConnectorRecord> connectors;
+  std::vector<std::int32_t> connector_of_element;  // global element → connector record (−1)
+  std::vector<std::optional<SpringLaw>> spring_laws;  // per *SPRING (empty when invalid)
+  std::vector<SpringRecord> springs;
+  std::vector<std::int32_t> spring_of_element;
+  std::vector<int> positions;  // scatter positions of every element, see LocalEquations
+  std::vector<int> diagonal;   // position of each equation's diagonal entry
+  SparseMatrix pattern;
+  std::size_t history_size = 0;
+  double length_scale = 1.0;  // L̄: largest initial connector length (keywords.md §16)
+  bool two_d = false;
+  bool symmetric = true;
+  bool has_multipliers = false;
+};
+
+// Builds the plan of a validated model (no errors). Returns nullopt with `error` when the model
+// asks for something clinch run cannot do yet.
+std::optional<AnalysisPlan> build_analysis_plan(const Model& model, std::string* error);
+
+}  // namespace clinch

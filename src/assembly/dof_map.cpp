@@ -1,0 +1,34 @@
+#include "src/assembly/dof_map.hpp"
+
+namespace clinch {
+
+DofMap::DofMap(std::vector<DofMask> active) : active_(std::move(active)) {
+  first_.resize(active_.size(), -1);
+  for (std::size_t n = 0; n < active_.size(); ++n) {
+    first_[n] = node_equations_;
+    for (int dof = 1; dof <= 6; ++dof) {
+      if (!(active_[n] & (1u << (dof - 1)))) continue;
+      node_of_.push_back(static_cast<std::int32_t>(n));
+      field_.push_back(dof <= 3 ? EquationField::Translation : EquationField::Rotation);
+      ++node_equations_;
+    }
+  }
+}
+
+int DofMap::add_multiplier(bool rotational) {
+  field_.push_back(rotational ? EquationField::RotationalMultiplier
+                              : EquationField::TranslationalMultiplier);
+  node_of_.push_back(-1);
+  return static_cast<int>(field_.size()) - 1;
+}
+
+int DofMap::dof_of(int equation) const {
+  const std::int32_t node = node_of(equation);
+  if (node < 0) return 0;
+  for (int dof = 1; dof <= 6; ++dof) {
+    if (this->equation(node, dof) == equation) return dof;
+  }
+  return 0;
+}
+
+}  // namespace clinch

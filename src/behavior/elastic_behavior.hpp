@@ -1,0 +1,23 @@
+// Connector elasticity as a Behavior (behaviors.md §4): linear uncoupled, nonlinear uncoupled
+// (a force–motion table) and coupled linear stiffness, restricted to the components the
+// connection type makes available. RIGID elasticity is not a law but a constraint, so the plan
+// asks for its components separately and the assembler enforces them (§4.4).
+#pragma once
+
+#include <memory>
+
+#include "src/behavior/behavior.hpp"
+#include "src/model/behavior_model.hpp"
+
+namespace clinch {
+
+// The elastic law of `behavior` on the components in `available`; nullptr when the behaviour has
+// no non-rigid elasticity on an available component. The model must have passed validation.
+std::unique_ptr<Behavior> make_elastic_behavior(const ConnectorBehavior& behavior,
+                                                ComponentMask available);
+
+// Components of `available` that a RIGID elasticity of `behavior` holds (§4.4: with COMPONENT=,
+// that component; otherwise the listed ones, or every available one when none is listed).
+ComponentMask rigid_components(const ConnectorBehavior& behavior, ComponentMask available);
+
+}  // namespace clinch

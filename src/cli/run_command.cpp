@@ -1,0 +1,115 @@
+#include "src/cli/run_command.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+
+#include "parser/deck_reader.hpp"
+#include "src/assembly/analysis_plan.hpp"
+#include "src/assembly/connector_system.hpp"
+#include "src/output/history_columns.hpp"
+#include "src/solver/step_driver.hpp"
+
+namespace clinch {
+namespace {
+
+constexpr int kExitCompleted = 0, kExitDeckErrors = 1, kExitStopped = 2, kExitUsage = 3;
+
+std::string count_of(std::size_t n, const char* what) {
+  return fmt::format("{} {}{}", n, what, n == 1 ? "" : "s");
+}
+
+}  // namespace
+
+int run_deck(const RunCommandOptions& options) {
+  namespace fs = std::filesystem;
+  const auto start = std::chrono::steady_clock::now();
+  SourceManager sources;
+  DiagnosticSink sink;
+  Model model;
+  std::string io_error;
+  if (read_deck_file(options.deck, sources, model, sink, &io_error) == ReadStatus::IoError) {
+    std::cerr << "clinch: error: " << io_error << "\n";
+    return kExitUsage;
+  }
+  const std::string job =
+      options.job.empty() ? fs::path(options.deck).stem().string() : options.job;
+  std::error_code ec;
+  fs::create_directories(options.out_dir, ec);
+  if (ec) {
+    std::cerr << fmt::format("clinch: error: cannot create output directory '{}': {}\n",
+                             options.out_dir, ec.message());
+    return kExitUsage;
+  }
+  const fs::path base = fs::path(options.out_dir) / job;
+  RunLog log(options.quiet ? nullptr : &std::cout, &std::cerr);
+  std::string error;
+  if (!log.open(base.string() + ".log", &error)) {
+    std::cerr << "clinch: error: " << error << "\n";
+    return kExitUsage;
+  }
+  sink.sort_by_location();
+  for (const Diagnostic& d : sink.diagnostics()) {
+    const std::string text = render_text(d, sources);
+    if (d.severity == Severity::Error) log.error(text);
+    else log.warning(text);
+  }
+  if (sink.has_errors()) {
+    log.error(fmt::format("{}: {}, {}; nothing was run", options.deck,
+                          count_of(sink.error_count(), "error"),
+                          count_of(sink.warning_count(), "warning")));
+    return kExitDeckErrors;
+  }
+  std::optional<AnalysisPlan> plan = build_analysis_plan(model, &error);
+  if (!plan) {
+    log.error(fmt::format("{}: error: {}", options.deck, error));
+    return kExitDeckErrors;
+  }
+  const int node_equations = plan->dofs.node_equations();
+  log.info(fmt::format("{}: {} nodes, {} connectors, {} springs; {} active DOFs ({:.3g} per node), "
+                       "{} multipliers",
+                       options.deck, model.nodes.size(), plan->connectors.size(),
+                       plan->springs.size(), node_equations,
+                       model.nodes.empty() ? 0.0 : double(node_equations) / model.nodes.size(),
+                       plan->dofs.equations() - node_equations));
+  ConnectorSystem system(model, *plan);
+  HistoryColumns columns(model, *plan);
+  HistoryTable table;
+  StatusFile status;
+  if (!table.open(base.string() + ".history.csv", columns.names(), &error) ||
+      !status.open(base.string() + ".sta", &error)) {
+    log.error(error);
+    return kExitUsage;
+  }
+  std::unique_ptr<LinearSolver> solver =
+      make_linear_solver(options.solver, plan->symmetric, !plan->has_multipliers);
+  if (solver->analyze(plan->pattern, &error) != LinearStatus::Ok) {
+    log.error(fmt::format("linear solver analysis failed: {}", error));
+    status.write_failed(error, 1, 0, 0.0);
+    return kExitStopped;
+  }
+  log.info(fmt::format("linear solver: {} ({} equations, {} stored entries)", solver->name(),
+                       plan->pattern.n, plan->pattern.values.size()));
+  Progress progress = Progress::for_stderr(options.quiet);
+  RunOutputs outputs{table, columns, status, log, progress};
+  const RunResult result =
+      run_analysis(model, system, *solver, outputs, RunOptions{options.check_tangent});
+  progress.finish();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const std::string summary = fmt::format("{}, {}, {} in {:.3f} s",
+                                          count_of(static_cast<std::size_t>(result.increments), "increment"),
+                                          count_of(static_cast<std::size_t>(result.iterations), "iteration"),
+                                          count_of(static_cast<std::size_t>(result.cutbacks), "cutback"),
+                                          seconds);
+  if (!result.completed) {
+    log.error(fmt::format("{}: FAILED after {}", job, summary));
+    return kExitStopped;
+  }
+  log.info(fmt::format("{}: COMPLETED: {}", job, summary));
+  return kExitCompleted;
+}
+
+}  // namespace clinch

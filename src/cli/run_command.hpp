@@ -1,0 +1,23 @@
+// `clinch run DECK.inp [--out DIR] [--job NAME]` (cli-contract.md): read and validate the deck,
+// build the analysis plan, run every step, and write <job>.history.csv, <job>.sta and <job>.log.
+// Exit 0 completed, 1 deck errors (nothing run), 2 stopped early, 3 usage or I/O error.
+#pragma once
+
+#include <string>
+
+#include "src/linalg/linear_solver.hpp"
+
+namespace clinch {
+
+struct RunCommandOptions {
+  std::string deck;
+  std::string out_dir = ".";
+  std::string job;  // empty: the deck's file name without .inp
+  bool quiet = false;
+  bool check_tangent = false;
+  SolverChoice solver = SolverChoice::Automatic;
+};
+
+int run_deck(const RunCommandOptions& options);
+
+}  // namespace clinch

@@ -1,0 +1,44 @@
+#include "src/linalg/linear_solver.hpp"
+
+#include <stdexcept>
+
+#include "src/linalg/cholmod_solver.hpp"
+#include "src/linalg/dense_solver.hpp"
+#include "src/linalg/umfpack_solver.hpp"
+
+namespace clinch {
+
+const char* to_string(LinearStatus status) {
+  switch (status) {
+    case LinearStatus::Ok:
+      return "ok";
+    case LinearStatus::Singular:
+      return "singular";
+    case LinearStatus::NotPositiveDefinite:
+      return "not positive definite";
+    case LinearStatus::Failure:
+      return "failure";
+  }
+  return "unknown";
+}
+
+std::unique_ptr<LinearSolver> make_linear_solver(SolverChoice choice, bool symmetric,
+                                                 bool positive_definite) {
+  const bool spd = symmetric && positive_definite;
+  switch (choice) {
+    case SolverChoice::Automatic:
+      if (spd) return std::make_unique<CholmodSolver>();
+      return std::make_unique<UmfpackSolver>();
+    case SolverChoice::Cholmod:
+      if (!symmetric) throw std::invalid_argument("CHOLMOD needs a symmetric matrix");
+      return std::make_unique<CholmodSolver>();
+    case SolverChoice::Umfpack:
+      return std::make_unique<UmfpackSolver>();
+    case SolverChoice::Dense:
+      return std::make_unique<DenseSolver>(spd ? DenseSolver::Method::Cholesky
+                                               : DenseSolver::Method::Lu);
+  }
+  throw std::invalid_argument("unknown linear solver choice");
+}
+
+}  // namespace clinch

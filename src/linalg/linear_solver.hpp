@@ -1,0 +1,47 @@
+// The linear solver Newton sees (ARCHITECTURE.md "Key interfaces"): analyze the sparsity pattern
+// once per step structure, factorize every iteration, solve. Numerical trouble (a zero or
+// negative pivot, a non-finite entry) is a status naming the equation at fault, so that the
+// caller can name the node and dof (connection-types.md §1.1).
+#pragma once
+
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+
+#include "src/linalg/sparse_matrix.hpp"
+
+namespace clinch {
+
+enum class LinearStatus { Ok, Singular, NotPositiveDefinite, Failure };
+
+const char* to_string(LinearStatus status);
+
+class LinearSolver {
+ public:
+  virtual ~LinearSolver() = default;
+  // "cholmod", "umfpack" or "dense".
+  virtual const char* name() const = 0;
+  // Symbolic analysis (ordering, elimination tree) of the pattern; values are not read. Once
+  // per pattern. A malformed pattern throws std::invalid_argument (a bug of its builder).
+  virtual LinearStatus analyze(const SparseMatrix& pattern, std::string* message) = 0;
+  // Numeric factorization of a matrix with the analysed pattern, every iteration.
+  virtual LinearStatus factorize(const SparseMatrix& k, std::string* message) = 0;
+  // Solves with the last successful factorization (calling it without one is a bug and throws
+  // std::logic_error). `x` may not alias `b`.
+  virtual LinearStatus solve(const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                             std::string* message) = 0;
+  // Row/column of the zero or negative pivot reported by the last failed factorize, −1 if
+  // unknown or if the last factorize succeeded.
+  virtual int failed_pivot() const = 0;
+};
+
+enum class SolverChoice { Automatic, Cholmod, Umfpack, Dense };
+
+// Automatic: CHOLMOD for symmetric positive definite systems, UMFPACK otherwise (symmetric
+// indefinite KKT systems with Lagrange multipliers, connection-types.md §3.8; softening and
+// unsymmetric tangents, behaviors.md §7.4). Dense: Cholesky when symmetric and positive definite,
+// LU otherwise. Asking for CHOLMOD on an unsymmetric system throws std::invalid_argument.
+std::unique_ptr<LinearSolver> make_linear_solver(SolverChoice choice, bool symmetric,
+                                                 bool positive_definite);
+
+}  // namespace clinch

@@ -1,0 +1,63 @@
+#include "src/linalg/sparse_matrix.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace clinch {
+
+void validate_pattern(const SparseMatrix& m) {
+  if (m.n < 0 || m.col_ptr.size() != static_cast<std::size_t>(m.n) + 1 || m.col_ptr[0] != 0) {
+    throw std::invalid_argument(
+        fmt::format("sparse matrix of order {}: {} column pointers", m.n, m.col_ptr.size()));
+  }
+  const auto nnz = static_cast<std::size_t>(m.nonzeros());
+  if (m.row_idx.size() != nnz || m.values.size() != nnz) {
+    throw std::invalid_argument(
+        fmt::format("sparse matrix with {} entries: {} row indices, {} values", nnz,
+                    m.row_idx.size(), m.values.size()));
+  }
+  const int last_row = m.n - 1;
+  for (int j = 0; j < m.n; ++j) {
+    if (m.col_ptr[j + 1] < m.col_ptr[j]) {
+      throw std::invalid_argument(fmt::format("column {}: decreasing column pointer", j));
+    }
+    for (int p = m.col_ptr[j]; p < m.col_ptr[j + 1]; ++p) {
+      const int i = m.row_idx[p];
+      const bool in_range = i >= 0 && i <= (m.symmetric_upper ? j : last_row);
+      if (!in_range || (p > m.col_ptr[j] && i <= m.row_idx[p - 1])) {
+        throw std::invalid_argument(
+            fmt::format("column {}: row index {} out of range or out of order", j, i));
+      }
+    }
+  }
+}
+
+std::vector<int> diagonal_positions(const SparseMatrix& m) {
+  std::vector<int> positions(m.n, -1);
+  for (int j = 0; j < m.n; ++j) {
+    for (int p = m.col_ptr[j]; p < m.col_ptr[j + 1]; ++p) {
+      if (m.row_idx[p] == j) positions[j] = p;
+    }
+  }
+  return positions;
+}
+
+int first_non_finite(const SparseMatrix& m) {
+  for (std::size_t p = 0; p < m.values.size(); ++p) {
+    if (!std::isfinite(m.values[p])) return static_cast<int>(p);
+  }
+  return -1;
+}
+
+bool row_and_column_are_zero(const SparseMatrix& m, int j) {
+  for (int c = 0; c < m.n; ++c) {
+    for (int p = m.col_ptr[c]; p < m.col_ptr[c + 1]; ++p) {
+      if ((c == j || m.row_idx[p] == j) && m.values[p] != 0.0) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace clinch

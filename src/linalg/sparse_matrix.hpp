@@ -1,0 +1,36 @@
+// The global tangent in compressed sparse column form. The assembler builds the pattern once per
+// step structure and scatters values into it every iteration; the linear solvers read it
+// (ARCHITECTURE.md "Performance by design"). Helpers here check a pattern once, at analysis.
+#pragma once
+
+#include <vector>
+
+namespace clinch {
+
+// Square, int32 indices, row indices strictly increasing within each column. When
+// `symmetric_upper` is set only the upper triangle (row <= column) is stored and the matrix is
+// the symmetric matrix it stands for.
+struct SparseMatrix {
+  int n = 0;
+  std::vector<int> col_ptr, row_idx;
+  std::vector<double> values;
+  bool symmetric_upper = false;
+
+  int nonzeros() const { return col_ptr.empty() ? 0 : col_ptr.back(); }
+};
+
+// Throws std::invalid_argument when the arrays do not form a valid pattern of the kind above
+// (sizes, ranges, sorted rows, no lower entry in upper storage): a malformed pattern is a bug of
+// its builder, not a numerical condition.
+void validate_pattern(const SparseMatrix& m);
+
+// Index into `values` of each diagonal entry, −1 where the pattern has none.
+std::vector<int> diagonal_positions(const SparseMatrix& m);
+
+// Index into `values` of the first entry that is NaN or infinite, −1 if every value is finite.
+int first_non_finite(const SparseMatrix& m);
+
+// True when row and column j of the (symmetric or full) matrix hold only zero values.
+bool row_and_column_are_zero(const SparseMatrix& m, int j);
+
+}  // namespace clinch

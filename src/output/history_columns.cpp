@@ -1,0 +1,287 @@
+#include "src/output/history_columns.hpp"
+
+#include <algorithm>
+
+#include "parser/diagnostic.hpp"
+#include "src/model/output_variables.hpp"
+
+namespace clinch {
+namespace {
+
+std::string set_label(const TargetRef& set, bool element) {
+  if (set.is_label) return describe(set, element);
+  return set.instance_display.empty() ? set.set_display
+                                      : set.instance_display + "." + set.set_display;
+}
+
+// Connector quantities of output-variables.md §2 that clinch run produces; every other connector
+// identifier (plasticity, damage, friction, damping, velocities) is 0 for the behaviours a run
+// accepts.
+double connector_value(const ConnectorOutput& out, const std::string& variable, int component) {
+  if (component < 1) return 0.0;
+  const int i = component - 1;
+  if (variable == "CTF") return out.total[i];
+  if (variable == "CEF") return out.elastic[i];
+  if (variable == "CRF") return out.multiplier[i];
+  if (variable == "CCF") return out.applied[i];
+  if (variable == "CU") return out.change[i];
+  if (variable == "CCU" || variable == "CUE") return out.constitutive[i];
+  if (variable == "CP") return out.position[i];
+  if (variable == "CSLST") return out.status[static_cast<std::size_t>(i)];
+  return 0.0;
+}
+
+}  // namespace
+
+HistoryColumns::HistoryColumns(const Model& model, const AnalysisPlan& plan)
+    : model_(model), plan_(plan), active_(active_dofs(model)) {
+  expand_steps();
+}
+
+std::size_t HistoryColumns::column(const std::string& name, Column c) {
+  const auto it = std::find(names_.begin(), names_.end(), name);
+  if (it != names_.end()) return static_cast<std::size_t>(it - names_.begin());
+  names_.push_back(name);
+  columns_.push_back(std::move(c));
+  return columns_.size() - 1;
+}
+
+void HistoryColumns::expand_steps() {
+  bool any_request = false;
+  for (const Step& step : model_.history.steps) {
+    for (const OutputRequest& r : step.outputs) any_request |= !r.field;
+    any_request |= !step.prints.empty();
+  }
+  // Requests carry over (keywords.md §13, §17, §18): OP=NEW drops earlier *OUTPUT requests,
+  // REPLACE the one with the same name; the first *NODE PRINT (*EL PRINT) of a step replaces the
+  // earlier ones.
+  std::vector<const OutputRequest*> outputs;
+  std::vector<const PrintRequest*> node_prints, element_prints;
+  for (const Step& step : model_.history.steps) {
+    bool new_node_prints = false, new_element_prints = false;
+    for (const OutputRequest& r : step.outputs) {
+      if (r.field) continue;
+      if (r.op == OutputRequest::Op::New) outputs.clear();
+      if (r.op == OutputRequest::Op::Replace) {
+        std::erase_if(outputs, [&](const OutputRequest* o) { return o->name.key == r.name.key; });
+      }
+      outputs.push_back(&r);
+    }
+    for (const PrintRequest& p : step.prints) {
+      bool& replaced = p.node ? new_node_prints : new_element_prints;
+      std::vector<const PrintRequest*>& list = p.node ? node_prints : element_prints;
+      if (!replaced) list.clear();
+      replaced = true;
+      list.push_back(&p);
+    }
+    std::vector<const PrintRequest*> prints = node_prints;
+    prints.insert(prints.end(), element_prints.begin(), element_prints.end());
+    step_requests_.push_back(expand_step(outputs, prints, !any_request));
+  }
+}
+
+std::vector<HistoryColumns::Request> HistoryColumns::expand_step(
+    const std::vector<const OutputRequest*>& outputs,
+    const std::vector<const PrintRequest*>& prints, bool default_request) {
+  std::vector<Request> requests;
+  DiagnosticSink quiet;
+  std::vector<std::int32_t> members;
+  auto default_columns = [&](Request& request) {
+    // output-variables.md §4: CTF, CU, then the variables of the behaviours in use, per
+    // connector in label order.
+    std::vector<std::int32_t> connectors;
+    for (const ConnectorRecord& r : plan_.connectors) connectors.push_back(r.element);
+    std::sort(connectors.begin(), connectors.end(), [&](std::int32_t a, std::int32_t b) {
+      const Element& ea = model_.elements[static_cast<std::size_t>(a)];
+      const Element& eb = model_.elements[static_cast<std::size_t>(b)];
+      return std::tie(ea.instance, ea.label) < std::tie(eb.instance, eb.label);
+    });
+    for (std::int32_t e : connectors) {
+      const ConnectorRecord& r = plan_.connectors[static_cast<std::size_t>(
+          plan_.connector_of_element[static_cast<std::size_t>(e)])];
+      std::vector<std::string> variables = {"CTF", "CU"};
+      bool stops = !r.locks.empty();
+      for (const ConnectorStopLimits& s : r.stops) stops |= s.lower || s.upper;
+      if (stops) variables.insert(variables.end(), {"CRF", "CSLST"});
+      for (const std::string& v : variables) {
+        OutputIdentifier id;
+        id.variable = v;
+        id.components = 0b111111;
+        element_columns(id, {e}, request, false, false, "");
+      }
+    }
+  };
+  for (const OutputRequest* r : outputs) {
+    Request request;
+    request.frequency = r->frequency;
+    if (r->variables != OutputRequest::Variables::Listed) default_columns(request);
+    for (const ElementOutputRequest& block : r->elements) {
+      members.clear();
+      if (!block.has_elset || !resolve_elements(model_, block.elset, members, quiet)) continue;
+      for (const OutputIdentifier& id : block.identifiers) {
+        element_columns(id, members, request, false, false, "");
+      }
+    }
+    for (const NodeOutputRequest& block : r->nodes) {
+      members.clear();
+      if (!block.has_nset || !resolve_nodes(model_, block.nset, members, quiet)) continue;
+      for (const OutputIdentifier& id : block.identifiers) {
+        node_columns(id, members, request, false, false, "");
+      }
+    }
+    requests.push_back(std::move(request));
+  }
+  for (const PrintRequest* p : prints) {
+    Request request;
+    request.frequency = p->frequency;
+    members.clear();
+    const bool ok = p->has_set && (p->node ? resolve_nodes(model_, p->set, members, quiet)
+                                           : resolve_elements(model_, p->set, members, quiet));
+    if (ok) {
+      const bool totals = p->totals != PrintRequest::Totals::No;
+      const bool only = p->totals == PrintRequest::Totals::Only;
+      const std::string set = set_label(p->set, !p->node);
+      for (const OutputIdentifier& id : p->identifiers) {
+        if (p->node) node_columns(id, members, request, totals, only, set);
+        else element_columns(id, members, request, totals, only, set);
+      }
+    }
+    requests.push_back(std::move(request));
+  }
+  if (default_request) {
+    Request request;
+    default_columns(request);
+    requests.push_back(std::move(request));
+  }
+  return requests;
+}
+
+void HistoryColumns::element_columns(const OutputIdentifier& id,
+                                     const std::vector<std::int32_t>& elements, Request& request,
+                                     bool totals, bool totals_only, const std::string& set) {
+  const OutputVariableInfo* info = output_variable_info(id.variable);
+  if (!info || info->producer == OutputProducer::Derived) return;
+  const bool spring_variable = info->kind == OutputKind::Spring;
+  std::array<Column, 7> sums;
+  for (std::int32_t e : elements) {
+    const Element& element = model_.elements[static_cast<std::size_t>(e)];
+    if (is_spring(element.type) != spring_variable) continue;
+    const std::string where = qualified_label(model_, element.instance, element.label);
+    if (spring_variable) {
+      const Term term{Source::Spring, plan_.spring_of_element[static_cast<std::size_t>(e)]};
+      sums[1].terms.push_back(term);
+      if (!totals_only) {
+        request.columns.push_back(
+            column(output_column_label(id.variable, 1) + "@" + where, {id.variable, 1, {term}}));
+      }
+      continue;
+    }
+    const std::int32_t c = plan_.connector_of_element[static_cast<std::size_t>(e)];
+    if (c < 0) continue;
+    const ConnectorRecord& r = plan_.connectors[static_cast<std::size_t>(c)];
+    const Term term{Source::Connector, c};
+    if (id.components == 0) {
+      if (!totals_only) {
+        request.columns.push_back(column(id.variable + "@" + where, {id.variable, 0, {term}}));
+      }
+      continue;
+    }
+    const ComponentMask defined = r.available | r.constrained;
+    for (int k = 1; k <= 6; ++k) {
+      if (!(id.components & defined & (1u << (k - 1)))) continue;
+      sums[static_cast<std::size_t>(k)].terms.push_back(term);
+      if (!totals_only) {
+        request.columns.push_back(
+            column(output_column_label(id.variable, k) + "@" + where, {id.variable, k, {term}}));
+      }
+    }
+  }
+  if (!totals) return;
+  for (int k = 1; k <= 6; ++k) {
+    Column& sum = sums[static_cast<std::size_t>(k)];
+    if (sum.terms.empty()) continue;
+    sum.variable = id.variable;
+    sum.component = k;
+    request.columns.push_back(column(output_column_label(id.variable, k) + "@" + set, sum));
+  }
+}
+
+void HistoryColumns::node_columns(const OutputIdentifier& id, const std::vector<std::int32_t>& nodes,
+                                  Request& request, bool totals, bool totals_only,
+                                  const std::string& set) {
+  std::array<Column, 7> sums;
+  for (std::int32_t n : nodes) {
+    // A DOF that is not active at the node has no column (output-variables.md §3).
+    const auto components = static_cast<std::uint8_t>(id.components & active_[static_cast<std::size_t>(n)]);
+    const Node& node = model_.nodes[static_cast<std::size_t>(n)];
+    const std::string where = qualified_label(model_, node.instance, node.label);
+    const Term term{Source::Node, n};
+    for (int k = 1; k <= 6; ++k) {
+      if (!(components & (1u << (k - 1)))) continue;
+      sums[static_cast<std::size_t>(k)].terms.push_back(term);
+      if (!totals_only) {
+        request.columns.push_back(
+            column(output_column_label(id.variable, k) + "@" + where, {id.variable, k, {term}}));
+      }
+    }
+  }
+  if (!totals) return;
+  for (int k = 1; k <= 6; ++k) {
+    Column& sum = sums[static_cast<std::size_t>(k)];
+    if (sum.terms.empty()) continue;
+    sum.variable = id.variable;
+    sum.component = k;
+    request.columns.push_back(column(output_column_label(id.variable, k) + "@" + set, sum));
+  }
+}
+
+void HistoryColumns::begin_step(std::size_t step) { step_ = step; }
+
+bool HistoryColumns::due(int increment, bool last) const {
+  if (increment == 0) return true;
+  for (const Request& r : step_requests_[step_]) {
+    if (r.frequency > 0 && (last || increment % r.frequency == 0)) return true;
+  }
+  return false;
+}
+
+double HistoryColumns::value(const Column& c, ConnectorSystem& system) {
+  double sum = 0;
+  for (const Term& t : c.terms) {
+    switch (t.source) {
+      case Source::Connector:
+        sum += connector_value(system.connector_output(static_cast<std::size_t>(t.index)),
+                               c.variable, c.component);
+        break;
+      case Source::Spring: {
+        double force = 0, delta = 0;
+        system.spring_output(static_cast<std::size_t>(t.index), force, delta);
+        sum += c.variable == "S" ? force : c.variable == "E" ? delta : 0.0;
+        break;
+      }
+      case Source::Node:
+        if (c.variable == "U" || c.variable == "UT" || c.variable == "UR") {
+          sum += system.nodal_value(t.index, c.component);
+        } else if (c.variable == "RF" || c.variable == "RT" || c.variable == "RM") {
+          sum += system.reaction(t.index, c.component);
+        } else if (c.variable == "CF" || c.variable == "CM") {
+          sum += system.applied_load(t.index, c.component);
+        }
+        break;
+    }
+  }
+  return sum;
+}
+
+void HistoryColumns::evaluate(ConnectorSystem& system, int increment, bool last,
+                              std::vector<double>& values) {
+  values.resize(columns_.size(), 0.0);
+  for (const Request& r : step_requests_[step_]) {
+    const bool request_due =
+        increment == 0 || (r.frequency > 0 && (last || increment % r.frequency == 0));
+    if (!request_due) continue;
+    for (std::size_t c : r.columns) values[c] = value(columns_[c], system);
+  }
+}
+
+}  // namespace clinch

@@ -1,0 +1,64 @@
+// Which history columns a run writes and how each gets its value (cli-contract.md "History
+// table", output-variables.md §1–§4, keywords.md §17–§18): requests carried across steps (OP,
+// print replacement), expanded to `<VAR>@<where>` columns over the union of all steps, the
+// default request when the deck has none, and per-request FREQUENCY with repetition of values
+// that are not due.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "src/assembly/connector_system.hpp"
+#include "src/model/model.hpp"
+
+namespace clinch {
+
+class HistoryColumns {
+ public:
+  HistoryColumns(const Model& model, const AnalysisPlan& plan);
+
+  const std::vector<std::string>& names() const { return names_; }
+  // Makes the requests of step `step` (0-based) current.
+  void begin_step(std::size_t step);
+  // True when a row is due at increment `increment` of the current step (`last`: the step's last).
+  bool due(int increment, bool last) const;
+  // Fills `values` (one per column) for the current state; columns of requests that are not due
+  // keep their previous value.
+  void evaluate(ConnectorSystem& system, int increment, bool last, std::vector<double>& values);
+
+ private:
+  enum class Source : std::uint8_t { Connector, Spring, Node };
+  struct Term {  // one contribution to a column (a total sums several)
+    Source source = Source::Connector;
+    std::int32_t index = 0;  // connector record, spring record, or global node
+  };
+  struct Column {
+    std::string variable;  // canonical identifier
+    int component = 0;     // 1…6, 0 for scalars
+    std::vector<Term> terms;
+  };
+  struct Request {
+    int frequency = 1;
+    std::vector<std::size_t> columns;
+  };
+  std::size_t column(const std::string& name, Column column);
+  void expand_steps();
+  std::vector<Request> expand_step(const std::vector<const OutputRequest*>& outputs,
+                                   const std::vector<const PrintRequest*>& prints,
+                                   bool default_request);
+  void element_columns(const OutputIdentifier& id, const std::vector<std::int32_t>& elements,
+                       Request& request, bool totals, bool totals_only, const std::string& set);
+  void node_columns(const OutputIdentifier& id, const std::vector<std::int32_t>& nodes,
+                    Request& request, bool totals, bool totals_only, const std::string& set);
+  double value(const Column& column, ConnectorSystem& system);
+
+  const Model& model_;
+  const AnalysisPlan& plan_;
+  std::vector<DofMask> active_;
+  std::vector<std::string> names_;
+  std::vector<Column> columns_;
+  std::vector<std::vector<Request>> step_requests_;
+  std::size_t step_ = 0;
+};
+
+}  // namespace clinch

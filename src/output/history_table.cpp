@@ -1,0 +1,55 @@
+#include "src/output/history_table.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <iterator>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace clinch {
+
+bool HistoryTable::open(const std::filesystem::path& path, std::vector<std::string> columns,
+                        std::string* error) {
+  out_.open(path, std::ios::out | std::ios::trunc | std::ios::binary);
+  if (!out_) {
+    *error = fmt::format("cannot write '{}': {}", path.string(), std::strerror(errno));
+    return false;
+  }
+  columns_ = std::move(columns);
+  line_.clear();
+  for (const char* key : kKeyColumns) {
+    if (!line_.empty()) line_ += ',';
+    line_ += key;
+  }
+  for (const std::string& column : columns_) {
+    line_ += ',';
+    line_ += column;
+  }
+  line_ += '\n';
+  out_ << line_ << std::flush;
+  if (!out_) {
+    *error = fmt::format("cannot write '{}': {}", path.string(), std::strerror(errno));
+    return false;
+  }
+  return true;
+}
+
+bool HistoryTable::write_row(int step, int increment, double step_time, double total_time,
+                             std::span<const double> values) {
+  if (values.size() != columns_.size()) {
+    throw std::logic_error(
+        fmt::format("history row with {} values for {} columns", values.size(), columns_.size()));
+  }
+  // fmt's default double format is the shortest string that reads back to the same value
+  // (cli-contract.md: round-trip precision).
+  line_.clear();
+  auto out = std::back_inserter(line_);
+  fmt::format_to(out, "{},{},{},{}", step, increment, step_time, total_time);
+  for (double v : values) fmt::format_to(out, ",{}", v);
+  line_ += '\n';
+  out_ << line_ << std::flush;
+  return static_cast<bool>(out_);
+}
+
+}  // namespace clinch

@@ -1,0 +1,38 @@
+// The history table `<job>.history.csv` (cli-contract.md "History table"): one header row, then
+// one row per converged increment, written and flushed as the step driver reports it so that a
+// run that stops early keeps every converged increment.
+#pragma once
+
+#include <filesystem>
+#include <fstream>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace clinch {
+
+class HistoryTable {
+ public:
+  // The four key columns that open every history table (cli-contract.md).
+  static constexpr const char* kKeyColumns[] = {"step", "increment", "step_time", "total_time"};
+
+  // Creates (truncates) `path` and writes the header: the key columns, then `columns`. On failure
+  // returns false and sets `error` (an I/O error: the caller exits with 3).
+  bool open(const std::filesystem::path& path, std::vector<std::string> columns,
+            std::string* error);
+
+  // Appends one row; `values` holds one value per column given to open(). Numbers are written in
+  // shortest round-trip form. Returns false if the stream failed (disk full, ...).
+  bool write_row(int step, int increment, double step_time, double total_time,
+                 std::span<const double> values);
+
+  bool is_open() const { return out_.is_open(); }
+  const std::vector<std::string>& columns() const { return columns_; }
+
+ private:
+  std::ofstream out_;
+  std::vector<std::string> columns_;
+  std::string line_;  // reused row buffer
+};
+
+}  // namespace clinch

@@ -1,0 +1,54 @@
+#include "src/output/run_log.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <ostream>
+
+#include <fmt/format.h>
+
+namespace clinch {
+
+bool RunLog::open(const std::filesystem::path& path, std::string* error) {
+  out_.open(path, std::ios::out | std::ios::trunc | std::ios::binary);
+  if (!out_) {
+    *error = fmt::format("cannot write '{}': {}", path.string(), std::strerror(errno));
+    return false;
+  }
+  return true;
+}
+
+void RunLog::info(std::string_view text) { emit(text, info_echo_); }
+
+void RunLog::warning(std::string_view text) { emit(text, warning_echo_); }
+
+void RunLog::error(std::string_view text) { emit(text, warning_echo_); }
+
+void RunLog::iteration(const IterationRecord& r) {
+  // Norms in scientific notation with 6 digits: enough to read the convergence rate, and every
+  // line keeps the same width.
+  auto at = [](const std::string& where) {
+    return where.empty() ? std::string() : fmt::format(" at {}", where);
+  };
+  emit(fmt::format("step {} increment {} attempt {} iteration {}: residual {:.6e} (largest "
+                   "{:.6e}{}), correction {:.6e} (largest {:.6e}{}), constraint violation {:.6e}",
+                   r.step, r.increment, r.attempt, r.iteration, r.residual_norm, r.largest_residual,
+                   at(r.largest_residual_at), r.correction_norm, r.largest_correction,
+                   at(r.largest_correction_at), r.constraint_violation),
+       nullptr);
+}
+
+void RunLog::emit(std::string_view text, std::ostream* echo) {
+  const bool needs_newline = text.empty() || text.back() != '\n';
+  if (out_.is_open()) {
+    out_ << text;
+    if (needs_newline) out_ << '\n';
+    out_.flush();
+  }
+  if (echo != nullptr) {
+    *echo << text;
+    if (needs_newline) *echo << '\n';
+    echo->flush();
+  }
+}
+
+}  // namespace clinch

@@ -1,0 +1,43 @@
+// The status file `<job>.sta` (cli-contract.md): one fixed-width line per increment attempt as the
+// step driver makes it, flushed at once, and a last line that says how the run ended.
+#pragma once
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <string_view>
+
+namespace clinch {
+
+// One increment attempt, as the step driver reports it.
+struct IncrementAttempt {
+  int step = 0;
+  int increment = 0;
+  int attempt = 0;        // 1 for the first try of an increment, 2.. after cutbacks
+  bool cut_back = false;  // this attempt failed and the increment was cut back
+  int equilibrium_iterations = 0;
+  int total_iterations = 0;  // equilibrium iterations plus those spent on status changes
+  double total_time = 0.0;
+  double step_time = 0.0;
+  double time_increment = 0.0;
+};
+
+class StatusFile {
+ public:
+  // Creates (truncates) `path` and writes the header. On failure returns false and sets `error`.
+  bool open(const std::filesystem::path& path, std::string* error);
+
+  void write_attempt(const IncrementAttempt& attempt);
+  void write_completed();
+  // `FAILED: <reason> (step S, increment I, time T)`.
+  void write_failed(std::string_view reason, int step, int increment, double total_time);
+
+  bool is_open() const { return out_.is_open(); }
+
+ private:
+  void write_line(std::string_view line);
+
+  std::ofstream out_;
+};
+
+}  // namespace clinch

@@ -1,0 +1,63 @@
+#include "src/solver/newton.hpp"
+
+#include <fmt/format.h>
+
+namespace clinch {
+namespace {
+
+// I₀ rule of keywords.md §16: two consecutive increases of the residual from iteration I₀ on.
+bool diverging(const std::vector<IterationNorms>& history, int check_from) {
+  const std::size_t n = history.size();
+  if (static_cast<int>(n) <= check_from || n < 3) return false;
+  const auto r = [&](std::size_t i) {
+    return std::max(history[i].largest_residual[0], history[i].largest_residual[1]);
+  };
+  return r(n - 1) > r(n - 2) && r(n - 2) > r(n - 3);
+}
+
+}  // namespace
+
+NewtonReport solve_increment(NonlinearProblem& problem, LinearSolver& solver,
+                             const ConvergenceCriteria& criteria, const NewtonOptions& options) {
+  NewtonReport report;
+  Eigen::VectorXd residual(problem.size()), correction(problem.size());
+  SparseMatrix tangent = problem.pattern();
+  const Eigen::VectorXd* last_correction = nullptr;
+  for (int iteration = 0;; ++iteration) {
+    const EvalStatus status = problem.evaluate(residual, &tangent);
+    if (!status.ok) {
+      report.outcome = NewtonOutcome::EvaluationFailed;
+      report.message = status.message;
+      return report;
+    }
+    IterationNorms& norms = report.iterations.emplace_back();
+    problem.measure(residual, last_correction, norms);
+    if (criteria.converged(norms, iteration)) {
+      report.outcome = NewtonOutcome::Converged;
+      return report;
+    }
+    if (iteration >= options.max_iterations || diverging(report.iterations,
+                                                         options.divergence_check_from)) {
+      report.outcome = iteration >= options.max_iterations ? NewtonOutcome::TooManyIterations
+                                                           : NewtonOutcome::Diverged;
+      if (options.accept_unconverged) report.outcome = NewtonOutcome::Converged;
+      report.message = iteration >= options.max_iterations
+                           ? fmt::format("no convergence in {} iterations", iteration)
+                           : "the residual diverges";
+      return report;
+    }
+    std::string message;
+    LinearStatus linear = solver.factorize(tangent, &message);
+    if (linear == LinearStatus::Ok) linear = solver.solve(-residual, correction, &message);
+    if (linear != LinearStatus::Ok) {
+      report.outcome = NewtonOutcome::SolverFailed;
+      report.failed_pivot = solver.failed_pivot();
+      report.message = message;
+      return report;
+    }
+    problem.apply_correction(correction);
+    last_correction = &correction;
+  }
+}
+
+}  // namespace clinch

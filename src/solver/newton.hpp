@@ -1,0 +1,34 @@
+// Newton's method for one increment (ARCHITECTURE.md principle 1): assemble, test, solve,
+// update. Time incrementation and cutbacks live in the step driver; Newton only reports what
+// happened, iteration by iteration, so the log, the status file and the tests read one record.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "src/linalg/linear_solver.hpp"
+#include "src/solver/convergence_criteria.hpp"
+#include "src/solver/nonlinear_problem.hpp"
+
+namespace clinch {
+
+struct NewtonOptions {
+  int max_iterations = 16;         // I_C (keywords.md §16)
+  int divergence_check_from = 4;   // I₀: two consecutive residual increases from here on diverge
+  bool accept_unconverged = false; // DIRECT=NO STOP: return the last iterate as converged
+};
+
+enum class NewtonOutcome { Converged, Diverged, TooManyIterations, EvaluationFailed, SolverFailed };
+
+struct NewtonReport {
+  NewtonOutcome outcome = NewtonOutcome::TooManyIterations;
+  std::vector<IterationNorms> iterations;  // one record per evaluated state
+  std::string message;                     // why it failed
+  int failed_pivot = -1;                   // SolverFailed: equation of the zero pivot
+  bool converged() const { return outcome == NewtonOutcome::Converged; }
+};
+
+NewtonReport solve_increment(NonlinearProblem& problem, LinearSolver& solver,
+                             const ConvergenceCriteria& criteria, const NewtonOptions& options);
+
+}  // namespace clinch

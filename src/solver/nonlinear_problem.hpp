@@ -1,0 +1,48 @@
+// What Newton sees (ARCHITECTURE.md "Key interfaces"): a residual and a tangent with a fixed
+// sparsity pattern, a way to apply a correction, and the norms the convergence criteria of
+// *CONTROLS need. The state (displacements, rotations, multipliers, trial history) lives inside
+// the problem because rotations are updated multiplicatively under NLGEOM.
+#pragma once
+
+#include <string>
+
+#include <Eigen/Core>
+
+#include "src/linalg/linear_solver.hpp"
+
+namespace clinch {
+
+struct EvalStatus {
+  bool ok = true;
+  std::string message;  // why an element could not be evaluated (names the element)
+};
+
+// Per-field measures of one iteration (keywords.md §16): index 0 = translations and forces,
+// 1 = rotations and moments.
+struct IterationNorms {
+  double largest_residual[2] = {0, 0};   // r_max over free DOFs of the field
+  double flux[2] = {0, 0};               // q̃: mean magnitude of the nonzero nodal forces
+  double largest_correction[2] = {0, 0}; // c_max of the last correction
+  double largest_increment[2] = {0, 0};  // largest change of the solution in the increment
+  double residual_norm = 0;              // Euclidean norm over all free equations (log)
+  double correction_norm = 0;
+  double constraint_violation = 0;       // max |g| / its tolerance (≤ 1 passes)
+};
+
+class NonlinearProblem {
+ public:
+  virtual ~NonlinearProblem() = default;
+  virtual int size() const = 0;
+  virtual const SparseMatrix& pattern() const = 0;
+  // Residual F_int − F_ext (and constraint residuals) at the current state; the tangent's values
+  // into `tangent` (pattern of pattern()) when non-null.
+  virtual EvalStatus evaluate(Eigen::VectorXd& residual, SparseMatrix* tangent) = 0;
+  // Adds a Newton correction (rotations: R ← exp(Δθ̂) R under NLGEOM).
+  virtual void apply_correction(const Eigen::VectorXd& correction) = 0;
+  // Fills the residual and constraint parts of `norms`; the correction parts when `correction`
+  // is non-null.
+  virtual void measure(const Eigen::VectorXd& residual, const Eigen::VectorXd* correction,
+                       IterationNorms& norms) const = 0;
+};
+
+}  // namespace clinch

@@ -1,0 +1,221 @@
+#include "src/solver/step_conditions.hpp"
+
+#include "parser/diagnostic.hpp"
+
+namespace clinch {
+namespace {
+
+std::int64_t component_key(std::int32_t connector, int component) {
+  return static_cast<std::int64_t>(connector) * 8 + component;
+}
+
+}  // namespace
+
+StepConditions::StepConditions(const Model& model, const AnalysisPlan& plan)
+    : model_(model), plan_(plan) {
+  for (const Amplitude& a : model_.history.amplitudes) {
+    if (a.valid && !a.times.empty()) amplitudes_.emplace_back(AmplitudeFunction(a));
+    else amplitudes_.emplace_back(std::nullopt);
+  }
+}
+
+double StepConditions::Condition::value(
+    double tau, double step_time, double total_time,
+    const std::vector<std::optional<AmplitudeFunction>>& amplitudes) const {
+  switch (mode) {
+    case Mode::Ramp:
+      return start + (magnitude - start) * tau;
+    case Mode::Jump:
+      return magnitude;
+    case Mode::Amplitude:
+      return magnitude * amplitudes[static_cast<std::size_t>(amplitude)]->value(step_time, total_time);
+    case Mode::AmplitudeAbsolute:
+      return amplitudes[static_cast<std::size_t>(amplitude)]->value(step_time, total_time);
+    case Mode::Fixed:
+      return start;
+    case Mode::Hold:
+      return magnitude;
+  }
+  return magnitude;
+}
+
+// keywords.md §13, "within the step where a condition is defined".
+StepConditions::Condition StepConditions::define(const ConditionBlock& block, const Step& step,
+                                                 double magnitude, double start,
+                                                 bool prescribed_kind) const {
+  Condition c;
+  c.start = start;
+  c.magnitude = magnitude;
+  if (block.fixed) {
+    c.mode = Mode::Fixed;
+  } else if (block.amplitude_index >= 0 &&
+             amplitudes_[static_cast<std::size_t>(block.amplitude_index)]) {
+    c.amplitude = block.amplitude_index;
+    c.mode = model_.history.amplitudes[static_cast<std::size_t>(block.amplitude_index)].absolute
+                 ? Mode::AmplitudeAbsolute
+                 : Mode::Amplitude;
+  } else if (step.amplitude == StepAmplitude::Step && !(prescribed_kind && block.explicit_type)) {
+    c.mode = Mode::Jump;
+  } else {
+    c.mode = Mode::Ramp;
+  }
+  return c;
+}
+
+// keywords.md §13, "across steps": OP=NEW removes every earlier condition of the kind; a removed
+// load ramps to zero (or drops at once under AMPLITUDE=STEP); a removed prescribed condition
+// becomes the load `removed` that replaces its last reaction and decays the same way.
+void StepConditions::carry_over(Table& table, bool replaced, bool load_kind, const Step& step,
+                                Table& removed) {
+  if (!replaced) return;
+  if (load_kind) {
+    for (auto& [key, c] : table) {
+      c = Condition{Mode::Ramp, c.magnitude, 0.0, -1};
+      if (step.amplitude == StepAmplitude::Step) c.start = 0.0;
+    }
+    return;
+  }
+  for (auto& [key, c] : removed) {
+    if (step.amplitude == StepAmplitude::Step) c.start = 0.0;
+  }
+  table.clear();
+}
+
+void StepConditions::begin_step(std::size_t s, ConnectorSystem& system) {
+  const Step& step = model_.history.steps[s];
+  period_ = step.procedure ? step.procedure->period : 1.0;
+  DiagnosticSink quiet;
+  std::vector<std::int32_t> targets;
+  released_loads_.clear();
+  released_connector_loads_.clear();
+
+  if (s == 0) {
+    // Model-data conditions hold zero from time 0 (keywords.md §9, §11).
+    for (const BoundaryCondition& bc : model_.history.model_boundaries) {
+      targets.clear();
+      if (!resolve_nodes(model_, bc.target, targets, quiet)) continue;
+      for (std::int32_t node : targets) {
+        for (int dof = 1; dof <= 6; ++dof) {
+          const int eq = (bc.dofs >> (dof - 1)) & 1u ? plan_.dofs.equation(node, dof) : -1;
+          if (eq >= 0) boundaries_[eq] = Condition{Mode::Hold, 0.0, 0.0, -1};
+        }
+      }
+    }
+    for (const ConnectorCondition& m : model_.history.model_motions) {
+      targets.clear();
+      if (!resolve_elements(model_, m.target, targets, quiet)) continue;
+      for (std::int32_t e : targets) {
+        const std::int32_t c = plan_.connector_of_element[static_cast<std::size_t>(e)];
+        if (c >= 0) motions_[component_key(c, m.component)] = Condition{Mode::Hold, 0.0, 0.0, -1};
+      }
+    }
+  }
+
+  if (step.replaces(ConditionKind::Boundary)) {
+    for (const auto& [eq, c] : boundaries_) {
+      const std::int32_t node = plan_.dofs.node_of(static_cast<int>(eq));
+      const double r = system.reaction(node, plan_.dofs.dof_of(static_cast<int>(eq)));
+      // The support force the node felt becomes an applied load: F_ext + r keeps it in place.
+      released_loads_[eq] = Condition{Mode::Ramp, r, 0.0, -1};
+    }
+  }
+  if (step.replaces(ConditionKind::Motion)) {
+    for (const auto& [key, c] : motions_) {
+      const ConnectorOutput out = system.connector_output(static_cast<std::size_t>(key / 8));
+      // The constraint force λ enters CTF as +λ; a connector load enters as −CCF.
+      released_connector_loads_[key] =
+          Condition{Mode::Ramp, -out.multiplier[static_cast<int>(key % 8) - 1], 0.0, -1};
+    }
+  }
+  carry_over(boundaries_, step.replaces(ConditionKind::Boundary), false, step, released_loads_);
+  carry_over(motions_, step.replaces(ConditionKind::Motion), false, step,
+             released_connector_loads_);
+  carry_over(loads_, step.replaces(ConditionKind::Load), true, step, released_loads_);
+  carry_over(connector_loads_, step.replaces(ConditionKind::ConnectorLoad), true, step,
+             released_connector_loads_);
+
+  for (const BoundaryCondition& bc : step.boundaries) {
+    targets.clear();
+    if (!resolve_nodes(model_, bc.target, targets, quiet)) continue;
+    const ConditionBlock& block = step.blocks[static_cast<std::size_t>(bc.block)];
+    for (std::int32_t node : targets) {
+      for (int dof = 1; dof <= 6; ++dof) {
+        if (!((bc.dofs >> (dof - 1)) & 1u)) continue;
+        const int eq = plan_.dofs.equation(node, dof);
+        if (eq < 0) continue;  // inactive DOF: W0803 at check time
+        boundaries_[eq] = define(block, step, bc.magnitude, system.converged_value(eq), true);
+        released_loads_.erase(eq);
+      }
+    }
+  }
+  for (const ConcentratedLoad& load : step.loads) {
+    targets.clear();
+    if (!resolve_nodes(model_, load.target, targets, quiet)) continue;
+    const ConditionBlock& block = step.blocks[static_cast<std::size_t>(load.block)];
+    for (std::int32_t node : targets) {
+      const int eq = plan_.dofs.equation(node, load.dof);
+      if (eq < 0) continue;
+      // v₀ of a load is its value at the end of the previous step (0 when new).
+      const auto previous = loads_.find(eq);
+      const double start = previous == loads_.end()          ? 0.0
+                           : previous->second.mode == Mode::Hold ? previous->second.magnitude
+                                                                 : previous->second.start;
+      loads_[eq] = define(block, step, load.magnitude, start, false);
+    }
+  }
+  auto connector_conditions = [&](const std::vector<ConnectorCondition>& list, Table& table,
+                                  bool motion) {
+    for (const ConnectorCondition& cc : list) {
+      targets.clear();
+      if (!resolve_elements(model_, cc.target, targets, quiet)) continue;
+      const ConditionBlock& block = step.blocks[static_cast<std::size_t>(cc.block)];
+      for (std::int32_t e : targets) {
+        const std::int32_t c = plan_.connector_of_element[static_cast<std::size_t>(e)];
+        if (c < 0) continue;
+        const std::int64_t key = component_key(c, cc.component);
+        double start = 0.0;
+        if (motion) {
+          start = system.connector_output(static_cast<std::size_t>(c)).change[cc.component - 1];
+          released_connector_loads_.erase(key);
+        } else if (auto it = table.find(key); it != table.end()) {
+          start = it->second.mode == Mode::Hold ? it->second.magnitude : it->second.start;
+        }
+        table[key] = define(block, step, cc.magnitude, start, motion);
+      }
+    }
+  };
+  connector_conditions(step.motions, motions_, true);
+  connector_conditions(step.connector_loads, connector_loads_, false);
+}
+
+void StepConditions::apply(ConnectorSystem& system, double step_time, double total_time) const {
+  const double tau = period_ > 0 ? step_time / period_ : 1.0;
+  auto value = [&](const Condition& c) { return c.value(tau, step_time, total_time, amplitudes_); };
+  system.clear_conditions();
+  for (const auto& [eq, c] : boundaries_) system.prescribe(static_cast<int>(eq), value(c));
+  for (const auto& [eq, c] : loads_) system.add_load(static_cast<int>(eq), value(c));
+  for (const auto& [eq, c] : released_loads_) system.add_load(static_cast<int>(eq), value(c));
+  for (const auto& [key, c] : motions_) {
+    system.prescribe_motion(static_cast<int>(key / 8), static_cast<int>(key % 8), value(c));
+  }
+  for (const Table* table : {&connector_loads_, &released_connector_loads_}) {
+    for (const auto& [key, c] : *table) {
+      system.add_connector_load(static_cast<int>(key / 8), static_cast<int>(key % 8), value(c));
+    }
+  }
+}
+
+void StepConditions::end_step(double period, double total_time) {
+  for (Table* table : {&boundaries_, &loads_, &motions_, &connector_loads_}) {
+    for (auto& [key, c] : *table) {
+      const bool follows_total_time =
+          c.amplitude >= 0 && model_.history.amplitudes[static_cast<std::size_t>(c.amplitude)].total_time;
+      if (follows_total_time) continue;
+      c = Condition{Mode::Hold, 0.0, c.value(1.0, period, total_time, amplitudes_), -1};
+    }
+  }
+  released_loads_.clear();
+  released_connector_loads_.clear();
+}
+
+}  // namespace clinch

@@ -1,0 +1,57 @@
+// How boundary conditions, connector motions, loads and connector loads evolve within and across
+// steps (keywords.md §13): each condition is resolved to an equation or a connector component,
+// remembers how it was defined and its value at the end of the last step, and gives its value at
+// any time of the current step. OP=NEW removals turn loads into ramps to zero and removed
+// prescribed motions into decaying loads equal to their last reaction.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "src/assembly/connector_system.hpp"
+#include "src/model/model.hpp"
+#include "src/solver/amplitude_function.hpp"
+
+namespace clinch {
+
+class StepConditions {
+ public:
+  StepConditions(const Model& model, const AnalysisPlan& plan);
+
+  // Resolves the step's conditions against those carried over, reading start values (current
+  // displacements, components, reactions) from the system's converged state.
+  void begin_step(std::size_t step, ConnectorSystem& system);
+  // Pushes the values at (step time, total time) into the system. τ = step_time / period.
+  void apply(ConnectorSystem& system, double step_time, double total_time) const;
+  // Records the values at the end of the step for the next one.
+  void end_step(double period, double total_time);
+
+ private:
+  enum class Mode : std::uint8_t { Ramp, Jump, Amplitude, AmplitudeAbsolute, Fixed, Hold };
+  struct Condition {
+    Mode mode = Mode::Hold;
+    double start = 0;      // v₀
+    double magnitude = 0;  // m (Hold: the held value)
+    std::int32_t amplitude = -1;
+    double value(double tau, double step_time, double total_time,
+                 const std::vector<std::optional<AmplitudeFunction>>& amplitudes) const;
+  };
+  // Key: equation (BC, load) or connector·8 + component (motion, connector load).
+  using Table = std::map<std::int64_t, Condition>;
+
+  Condition define(const ConditionBlock& block, const Step& step, double magnitude, double start,
+                   bool prescribed_kind) const;
+  void carry_over(Table& table, bool replaced, bool load_kind, const Step& step, Table& removed);
+
+  const Model& model_;
+  const AnalysisPlan& plan_;
+  std::vector<std::optional<AmplitudeFunction>> amplitudes_;
+  Table boundaries_, loads_, motions_, connector_loads_;
+  // Removed prescribed conditions become loads that decay to zero over the step.
+  Table released_loads_, released_connector_loads_;
+  double period_ = 1.0;
+};
+
+}  // namespace clinch

@@ -1,0 +1,237 @@
+#include "src/solver/step_driver.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "src/solver/convergence_criteria.hpp"
+#include "src/solver/step_conditions.hpp"
+#include "src/solver/tangent_check.hpp"
+
+namespace clinch {
+namespace {
+
+constexpr const char* kDofNames[] = {"", "u1", "u2", "u3", "ur1", "ur2", "ur3"};
+
+// The name of the equation behind a zero pivot (connection-types.md §1.1, §3.8).
+std::string describe_equation(const Model& model, const AnalysisPlan& plan, int equation) {
+  if (equation < 0 || equation >= plan.dofs.equations()) return "the system is singular";
+  const std::int32_t node = plan.dofs.node_of(equation);
+  if (node >= 0) {
+    const Node& n = model.nodes[static_cast<std::size_t>(node)];
+    return fmt::format("singular system: DOF {} of node {} has no stiffness (add a *BOUNDARY or "
+                       "an element that restrains it)",
+                       kDofNames[plan.dofs.dof_of(equation)],
+                       qualified_label(model, n.instance, n.label));
+  }
+  for (const ConnectorRecord& r : plan.connectors) {
+    for (int j = 0; j < r.multiplier_count; ++j) {
+      if (r.local.equation[static_cast<std::size_t>(r.column_count + j)] != equation) continue;
+      const Element& e = model.elements[static_cast<std::size_t>(r.element)];
+      return fmt::format("overconstrained connector {} component {}",
+                         qualified_label(model, e.instance, e.label),
+                         r.multiplier_components[static_cast<std::size_t>(j)]);
+    }
+  }
+  return "the system is singular";
+}
+
+class Driver {
+ public:
+  Driver(const Model& model, ConnectorSystem& system, LinearSolver& solver, RunOutputs& out,
+         const RunOptions& options)
+      : model_(model),
+        plan_(system.plan()),
+        system_(system),
+        solver_(solver),
+        out_(out),
+        options_(options),
+        conditions_(model, system.plan()),
+        criteria_(model.history.steps.empty() ? Controls{} : model.history.steps[0].controls) {}
+
+  RunResult run() {
+    write_row(1, 0, 0.0, 0.0, false);
+    for (std::size_t s = 0; s < model_.history.steps.size(); ++s) {
+      if (!run_step(s)) {
+        out_.status.write_failed(result_.reason, result_.step, result_.increment, result_.time);
+        out_.log.error(fmt::format("analysis stopped: {} (step {}, increment {}, time {})",
+                                   result_.reason, result_.step, result_.increment, result_.time));
+        return result_;
+      }
+    }
+    out_.status.write_completed();
+    result_.completed = true;
+    return result_;
+  }
+
+ private:
+  void write_row(int step, int increment, double step_time, double total_time, bool last) {
+    if (!out_.columns.due(increment, last)) return;
+    out_.columns.evaluate(system_, increment, last, values_);
+    out_.table.write_row(step, increment, step_time, total_time, values_);
+  }
+
+  bool fail(std::string reason, int step, int increment) {
+    result_.reason = std::move(reason);
+    result_.step = step;
+    result_.increment = increment;
+    result_.time = total_time_;
+    return false;
+  }
+
+  // One attempt: Newton, then the stop active set (behaviors.md §5.1), re-solved until it settles.
+  NewtonReport attempt(int step, int increment, int attempt_number, int& iterations,
+                       int& changes) {
+    const TimeIncrementationControls& t = controls_->time;
+    NewtonOptions options{t.ic, t.i0, accept_unconverged_};
+    iterations = 0;
+    changes = 0;
+    for (;;) {
+      NewtonReport report = solve_increment(system_, solver_, criteria_, options);
+      for (std::size_t i = 0; i < report.iterations.size(); ++i) {
+        const IterationNorms& n = report.iterations[i];
+        IterationRecord record;
+        record.step = step;
+        record.increment = increment;
+        record.attempt = attempt_number;
+        record.iteration = iterations + static_cast<int>(i);
+        record.residual_norm = n.residual_norm;
+        record.largest_residual = std::max(n.largest_residual[0], n.largest_residual[1]);
+        record.correction_norm = n.correction_norm;
+        record.largest_correction = std::max(n.largest_correction[0], n.largest_correction[1]);
+        record.constraint_violation = n.constraint_violation;
+        out_.log.iteration(record);
+      }
+      iterations += std::max(0, static_cast<int>(report.iterations.size()) - 1);
+      if (!report.converged() || !system_.update_stops()) return report;
+      if (++changes > 8) {
+        report.outcome = NewtonOutcome::TooManyIterations;
+        report.message = "stop active set did not settle";
+        return report;
+      }
+    }
+  }
+
+  bool run_step(std::size_t s) {
+    const Step& step = model_.history.steps[s];
+    const StaticProcedure procedure = step.procedure.value_or(StaticProcedure{});
+    const int step_number = static_cast<int>(s) + 1;
+    controls_ = &step.controls;
+    // DIRECT=NO STOP accepts an increment that reaches the iteration limit (keywords.md §15).
+    accept_unconverged_ = procedure.direct && procedure.no_stop;
+    system_.set_nlgeom(step.nlgeom);
+    conditions_.begin_step(s, system_);
+    criteria_.start_step(step.controls);
+    out_.columns.begin_step(s);
+    const TimeIncrementationControls& t = step.controls.time;
+    const double period = procedure.period;
+    double dt = std::min(procedure.initial_increment, period);
+    double step_time = 0.0, previous_dt = 0.0;
+    int increment = 0, easy_in_a_row = 0;
+    while (step_time < period * (1.0 - 1e-12)) {
+      if (increment >= step.max_increments) {
+        return fail(fmt::format("too many increments (INC={})", step.max_increments),
+                    step_number, increment);
+      }
+      const double remaining = period - step_time;
+      // The last increment ends exactly at T (keywords.md §15).
+      if (dt >= remaining * (1.0 - 1e-9)) dt = remaining;
+      int cutbacks = 0;
+      for (int attempt_number = 1;; ++attempt_number) {
+        const double new_time = step_time + dt;
+        system_.set_time(total_time_ + dt, dt);
+        conditions_.apply(system_, new_time, total_time_ + dt);
+        const bool extrapolate = step.extrapolation && increment > 0 && previous_dt > 0;
+        system_.start_increment(extrapolate ? dt / previous_dt : 0.0);
+        if (options_.check_tangent) {
+          out_.log.info(check_tangent(system_, step_number, increment + 1));
+        }
+        int iterations = 0, changes = 0;
+        const NewtonReport report = attempt(step_number, increment + 1, attempt_number,
+                                            iterations, changes);
+        result_.iterations += iterations;
+        const bool converged = report.converged();
+        out_.status.write_attempt({step_number, increment + 1, attempt_number, !converged,
+                                   iterations, iterations + changes, total_time_ + dt,
+                                   new_time, dt});
+        if (converged) {
+          system_.commit();
+          criteria_.accept_increment(report.iterations.back());
+          step_time = new_time;
+          total_time_ += dt;
+          ++increment;
+          ++result_.increments;
+          previous_dt = dt;
+          const bool last = step_time >= period * (1.0 - 1e-12);
+          write_row(step_number, increment, step_time, total_time_, last);
+          // A lock engages at the converged state; its row shows the unlocked state
+          // (behaviors.md §5.2, example E5).
+          system_.engage_locks();
+          out_.progress.update(step_number, increment, total_time_);
+          if (!procedure.direct) {
+            // keywords.md §16: D_B after a hard increment, D_D after two easy ones.
+            easy_in_a_row = iterations <= t.ig ? easy_in_a_row + 1 : 0;
+            if (iterations > t.il) dt *= t.db;
+            else if (easy_in_a_row >= 2) dt *= t.dd;
+            dt = std::min(dt, procedure.max_increment);
+          }
+          break;
+        }
+        system_.revert();
+        std::string reason = report.message;
+        if (report.outcome == NewtonOutcome::SolverFailed) {
+          reason = describe_equation(model_, plan_, report.failed_pivot);
+          // A singular system does not get better with a smaller increment.
+          return fail(reason, step_number, increment + 1);
+        }
+        if (report.outcome == NewtonOutcome::EvaluationFailed && procedure.direct) {
+          return fail(reason, step_number, increment + 1);
+        }
+        if (procedure.direct) {
+          return fail(fmt::format("no convergence with fixed increments ({})", reason),
+                      step_number, increment + 1);
+        }
+        ++result_.cutbacks;
+        if (++cutbacks > t.ia) {
+          return fail(fmt::format("too many cutbacks ({}; last: {})", t.ia, reason), step_number,
+                      increment + 1);
+        }
+        dt *= report.outcome == NewtonOutcome::Diverged ? t.df : t.dc;
+        easy_in_a_row = 0;
+        if (dt < procedure.min_increment * (1.0 - 1e-12)) {
+          return fail(fmt::format("time increment {} below the minimum {} ({})", dt,
+                                  procedure.min_increment, reason),
+                      step_number, increment + 1);
+        }
+        out_.log.warning(fmt::format("step {} increment {}: {}; cutting back to {}", step_number,
+                                     increment + 1, reason, dt));
+      }
+    }
+    conditions_.end_step(period, total_time_);
+    return true;
+  }
+
+  const Model& model_;
+  const AnalysisPlan& plan_;
+  ConnectorSystem& system_;
+  LinearSolver& solver_;
+  RunOutputs& out_;
+  const RunOptions& options_;
+  StepConditions conditions_;
+  ConvergenceCriteria criteria_;
+  const Controls* controls_ = nullptr;
+  bool accept_unconverged_ = false;
+  double total_time_ = 0.0;
+  std::vector<double> values_;
+  RunResult result_;
+};
+
+}  // namespace
+
+RunResult run_analysis(const Model& model, ConnectorSystem& system, LinearSolver& solver,
+                       RunOutputs& outputs, const RunOptions& options) {
+  return Driver(model, system, solver, outputs, options).run();
+}
+
+}  // namespace clinch

@@ -1,0 +1,44 @@
+// The step driver (keywords.md §13–§16): runs every step of the deck, increment by increment —
+// automatic incrementation with cutbacks and growth, or DIRECT — calls Newton for each attempt,
+// settles the active set of stops, engages locks on converged increments, and reports each
+// attempt to the status file, each iteration to the log and each converged increment to the
+// history table. A failure stops the run with the reason, the step, the increment and the time.
+#pragma once
+
+#include <string>
+
+#include "src/assembly/connector_system.hpp"
+#include "src/linalg/linear_solver.hpp"
+#include "src/output/history_columns.hpp"
+#include "src/output/history_table.hpp"
+#include "src/output/progress.hpp"
+#include "src/output/run_log.hpp"
+#include "src/output/status_file.hpp"
+#include "src/solver/newton.hpp"
+
+namespace clinch {
+
+struct RunOutputs {
+  HistoryTable& table;
+  HistoryColumns& columns;
+  StatusFile& status;
+  RunLog& log;
+  Progress& progress;
+};
+
+struct RunOptions {
+  bool check_tangent = false;  // compare the tangent with finite differences each increment
+};
+
+struct RunResult {
+  bool completed = false;
+  std::string reason;  // why it stopped
+  int step = 0, increment = 0;
+  double time = 0;
+  int increments = 0, iterations = 0, cutbacks = 0;
+};
+
+RunResult run_analysis(const Model& model, ConnectorSystem& system, LinearSolver& solver,
+                       RunOutputs& outputs, const RunOptions& options);
+
+}  // namespace clinch

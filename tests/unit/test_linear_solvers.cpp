@@ -1,0 +1,410 @@
+// Backend parity of the linear solvers (ARCHITECTURE.md, testing habit 7): CHOLMOD, UMFPACK and
+// the dense reference run on the same systems, stored as upper triangles and as full matrices:
+// SPD, 3-D lattice, symmetric indefinite KKT (connection-types.md §3.8), unsymmetric, singular
+// (connection-types.md §1.1: the failed pivot is named), and refactorization on one pattern.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "src/linalg/cholmod_solver.hpp"
+#include "src/linalg/linear_solver.hpp"
+#include "src/linalg/model_problems.hpp"
+#include "src/linalg/pivot_checks.hpp"
+
+namespace clinch {
+
+void PrintTo(LinearStatus status, std::ostream* os) { *os << to_string(status); }
+
+namespace {
+
+enum class Storage { Upper, Full };
+
+using EigenSparse = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+// The matrix a SparseMatrix stands for, mirrored when stored as an upper triangle: residuals are
+// computed with Eigen, independently of the backends.
+EigenSparse to_eigen(const SparseMatrix& m) {
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int j = 0; j < m.n; ++j) {
+    for (int p = m.col_ptr[j]; p < m.col_ptr[j + 1]; ++p) {
+      const int i = m.row_idx[p];
+      entries.emplace_back(i, j, m.values[p]);
+      if (m.symmetric_upper && i != j) entries.emplace_back(j, i, m.values[p]);
+    }
+  }
+  EigenSparse a(m.n, m.n);
+  a.setFromTriplets(entries.begin(), entries.end());
+  return a;
+}
+
+SparseMatrix from_eigen(const EigenSparse& a, Storage storage) {
+  EigenSparse stored =
+      storage == Storage::Upper ? EigenSparse(a.triangularView<Eigen::Upper>()) : a;
+  stored.makeCompressed();
+  SparseMatrix m;
+  m.n = static_cast<int>(stored.rows());
+  m.symmetric_upper = storage == Storage::Upper;
+  m.col_ptr.assign(stored.outerIndexPtr(), stored.outerIndexPtr() + m.n + 1);
+  m.row_idx.assign(stored.innerIndexPtr(), stored.innerIndexPtr() + stored.nonZeros());
+  m.values.assign(stored.valuePtr(), stored.valuePtr() + stored.nonZeros());
+  return m;
+}
+
+// Pattern of the nonzeros of `a` plus its whole diagonal (kept even where it is zero, as the
+// assembler's pattern does).
+SparseMatrix from_dense(const Eigen::MatrixXd& a, Storage storage) {
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int j = 0; j < a.cols(); ++j) {
+    for (int i = 0; i < a.rows(); ++i) {
+      if (a(i, j) != 0.0 || i == j) entries.emplace_back(i, j, a(i, j));
+    }
+  }
+  EigenSparse s(a.rows(), a.cols());
+  s.setFromTriplets(entries.begin(), entries.end());
+  // Explicit zeros stay: neither setFromTriplets nor makeCompressed prunes.
+  return from_eigen(s, storage);
+}
+
+double relative_residual(const SparseMatrix& m, const Eigen::VectorXd& x,
+                         const Eigen::VectorXd& b) {
+  return (to_eigen(m) * x - b).norm() / b.norm();
+}
+
+// Spring chain 0–1–2–3 on ground at node 0 (k = 2, 3.5, 1.25, 0.75): SPD.
+Eigen::MatrixXd grounded_chain() {
+  const std::vector<double> k = {2.0, 3.5, 1.25, 0.75};
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(4, 4);
+  a(0, 0) = k[0];
+  for (int e = 1; e < 4; ++e) {
+    a(e - 1, e - 1) += k[e];
+    a(e, e) += k[e];
+    a(e - 1, e) -= k[e];
+    a(e, e - 1) -= k[e];
+  }
+  return a;
+}
+
+struct Case {
+  SolverChoice choice;
+  Storage storage;
+};
+
+std::string case_name(const Case& c) {
+  const char* backend = c.choice == SolverChoice::Cholmod   ? "Cholmod"
+                        : c.choice == SolverChoice::Umfpack ? "Umfpack"
+                                                            : "Dense";
+  return std::string(backend) + (c.storage == Storage::Upper ? "Upper" : "Full");
+}
+
+void PrintTo(const Case& c, std::ostream* os) { *os << case_name(c); }
+
+class LinearSolverParity : public ::testing::TestWithParam<Case> {
+ protected:
+  SolverChoice choice() const { return GetParam().choice; }
+  Storage storage() const { return GetParam().storage; }
+  bool is(SolverChoice c) const { return choice() == c; }
+
+  // Analyze and factorize `m` with a backend built for (symmetric, positive definite).
+  LinearStatus factor(const SparseMatrix& m, bool symmetric, bool positive_definite) {
+    solver_ = make_linear_solver(choice(), symmetric, positive_definite);
+    message_.clear();
+    EXPECT_EQ(solver_->analyze(m, &message_), LinearStatus::Ok) << message_;
+    return solver_->factorize(m, &message_);
+  }
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) {
+    Eigen::VectorXd x;
+    EXPECT_EQ(solver_->solve(b, x, &message_), LinearStatus::Ok) << message_;
+    return x;
+  }
+
+  std::unique_ptr<LinearSolver> solver_;
+  std::string message_;
+};
+
+TEST_P(LinearSolverParity, SmallSpdSystemHasItsKnownSolution) {
+  Eigen::MatrixXd a(5, 5);
+  a << 4.0, -1.0, 0.0, 0.5, 0.0,   //
+      -1.0, 5.0, -2.0, 0.0, 0.0,   //
+      0.0, -2.0, 6.0, -1.5, 0.25,  //
+      0.5, 0.0, -1.5, 3.0, 0.0,    //
+      0.0, 0.0, 0.25, 0.0, 2.0;
+  Eigen::VectorXd expected(5);
+  expected << 1.0, -2.0, 3.0, -4.0, 5.0;
+  const Eigen::VectorXd b = a * expected;
+  const SparseMatrix m = from_dense(a, storage());
+  ASSERT_EQ(factor(m, true, true), LinearStatus::Ok) << message_;
+  const Eigen::VectorXd x = solve(b);
+  // A backward-stable factorization leaves a residual of a few machine epsilons; the condition
+  // number is below 10, so the error of x is of the same order. 1e-12 leaves a margin of ~1e3.
+  EXPECT_LT(relative_residual(m, x, b), 1e-12);
+  EXPECT_LT((x - expected).lpNorm<Eigen::Infinity>(), 1e-12);
+  EXPECT_EQ(solver_->failed_pivot(), -1);
+}
+
+TEST_P(LinearSolverParity, LaplacianOfA3dLatticeIsSolved) {
+  const SparseMatrix upper = laplacian_3d(13);  // 2197 unknowns
+  const SparseMatrix m = from_eigen(to_eigen(upper), storage());
+  Eigen::VectorXd expected(m.n);
+  for (int i = 0; i < m.n; ++i) expected(i) = std::sin(0.37 * i) + 0.1 * (i % 7);
+  const Eigen::VectorXd b = to_eigen(m) * expected;
+  ASSERT_EQ(factor(m, true, true), LinearStatus::Ok) << message_;
+  const Eigen::VectorXd x = solve(b);
+  // Residual as above; the condition number of the lattice Laplacian is ≈ 4 (N + 1)² / π² ≈ 80,
+  // so the relative error is ~1e-14, far below 1e-11.
+  EXPECT_LT(relative_residual(m, x, b), 1e-12);
+  EXPECT_LT((x - expected).norm() / expected.norm(), 1e-11);
+}
+
+// [K Cᵀ; C 0] with the grounded chain and two constraints, u0 − u2 = g1 and u3 = g2: symmetric,
+// nonsingular, with a zero diagonal block (connection-types.md §3.8).
+Eigen::MatrixXd kkt_system() {
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(6, 6);
+  a.topLeftCorner(4, 4) = grounded_chain();
+  a(4, 0) = a(0, 4) = 1.0;
+  a(4, 2) = a(2, 4) = -1.0;
+  a(5, 3) = a(3, 5) = 1.0;
+  return a;
+}
+
+TEST_P(LinearSolverParity, SymmetricIndefiniteKktSystem) {
+  const Eigen::MatrixXd a = kkt_system();
+  Eigen::VectorXd expected(6);
+  expected << 0.1, -0.2, 0.3, 0.05, 12.0, -7.5;
+  const Eigen::VectorXd b = a * expected;
+  const SparseMatrix m = from_dense(a, storage());
+  const LinearStatus status = factor(m, true, false);
+  if (is(SolverChoice::Cholmod)) {
+    // Whatever the ordering, the first multiplier to be eliminated meets a pivot −C K⁻¹ Cᵀ ≤ 0
+    // (or its zero diagonal), before any dof of K can fail: the failed pivot is 4 or 5.
+    EXPECT_EQ(status, LinearStatus::NotPositiveDefinite) << message_;
+    EXPECT_TRUE(solver_->failed_pivot() == 4 || solver_->failed_pivot() == 5)
+        << solver_->failed_pivot();
+    EXPECT_NE(message_.find("not positive definite"), std::string::npos) << message_;
+    return;
+  }
+  ASSERT_EQ(status, LinearStatus::Ok) << message_;
+  const Eigen::VectorXd x = solve(b);
+  // Condition number ≈ 18: the error of x is ~1e-15, 1e-11 keeps a wide margin.
+  EXPECT_LT(relative_residual(m, x, b), 1e-12);
+  EXPECT_LT((x - expected).lpNorm<Eigen::Infinity>(), 1e-11);
+}
+
+TEST_P(LinearSolverParity, UnsymmetricSystem) {
+  if (is(SolverChoice::Cholmod)) GTEST_SKIP() << "CHOLMOD takes symmetric matrices only";
+  if (storage() == Storage::Upper) GTEST_SKIP() << "an unsymmetric matrix has no upper storage";
+  // The grounded chain with an unsymmetric friction-like coupling of dofs 1 and 3 (behaviors.md
+  // §7.4: unsymmetric tangents go to LU).
+  Eigen::MatrixXd a = grounded_chain();
+  a(1, 3) += 0.8;
+  a(3, 0) -= 0.6;
+  Eigen::VectorXd expected(4);
+  expected << 0.25, -1.5, 2.0, 0.75;
+  const Eigen::VectorXd b = a * expected;
+  const SparseMatrix m = from_dense(a, storage());
+  ASSERT_EQ(factor(m, false, false), LinearStatus::Ok) << message_;
+  const Eigen::VectorXd x = solve(b);
+  EXPECT_LT(relative_residual(m, x, b), 1e-12);  // as for the SPD system: cond ≈ 22
+  EXPECT_LT((x - expected).lpNorm<Eigen::Infinity>(), 1e-12);
+}
+
+TEST_P(LinearSolverParity, UnrestrainedDofIsNamed) {
+  // Dof 2 of a 5-dof system has a diagonal in the pattern but no stiffness at all (an activated,
+  // unrestrained rotation, connection-types.md §1.1): an exact zero pivot, whatever the order.
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(5, 5);
+  a.topLeftCorner(4, 4) = grounded_chain();
+  a.row(2).setZero();
+  a.col(2).setZero();
+  a(4, 4) = 3.0;
+  a(4, 1) = a(1, 4) = -0.5;
+  const SparseMatrix m = from_dense(a, storage());
+  EXPECT_EQ(factor(m, true, true), LinearStatus::Singular) << message_;
+  EXPECT_EQ(solver_->failed_pivot(), 2);
+  EXPECT_NE(message_.find("singular system: zero pivot at equation 2"), std::string::npos)
+      << message_;
+}
+
+TEST_P(LinearSolverParity, FloatingSpringIsSingularNotIndefinite) {
+  // The grounded chain and a separate spring between dofs 4 and 5 with no support: whichever of
+  // the two is eliminated second meets the pivot k − k·k/k = 0 exactly, on a positive diagonal
+  // and a nonzero line. Cholesky stops there: the value of that pivot, recovered from the
+  // columns left of it, makes the difference between singular and indefinite.
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(6, 6);
+  a.topLeftCorner(4, 4) = grounded_chain();
+  a.bottomRightCorner(2, 2) << 3.0, -3.0, -3.0, 3.0;
+  const SparseMatrix m = from_dense(a, storage());
+  EXPECT_EQ(factor(m, true, true), LinearStatus::Singular) << message_;
+  EXPECT_TRUE(solver_->failed_pivot() == 4 || solver_->failed_pivot() == 5)
+      << solver_->failed_pivot();
+}
+
+TEST_P(LinearSolverParity, RigidBodyModeIsSingular) {
+  // A free-floating lattice of springs (every node pulled only by its neighbours, stiffness
+  // varying from spring to spring) has the rigid translation in its null space. Rounding leaves
+  // the last pivot at a few machine epsilons instead of zero, which the pivot test must catch.
+  const int side = 8;
+  const SparseMatrix lattice = laplacian_3d(side);
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int j = 0; j < lattice.n; ++j) {
+    for (int p = lattice.col_ptr[j]; p < lattice.col_ptr[j + 1]; ++p) {
+      const int i = lattice.row_idx[p];
+      if (i == j) continue;
+      const double k = 1.0 + 0.37 * ((i * 7 + j * 3) % 11);
+      entries.emplace_back(i, j, -k);
+      entries.emplace_back(j, i, -k);
+      entries.emplace_back(i, i, k);
+      entries.emplace_back(j, j, k);
+    }
+  }
+  EigenSparse a(lattice.n, lattice.n);
+  a.setFromTriplets(entries.begin(), entries.end());
+  const SparseMatrix m = from_eigen(a, storage());
+  EXPECT_EQ(factor(m, true, true), LinearStatus::Singular) << message_;
+  if (!is(SolverChoice::Umfpack)) {
+    EXPECT_GE(solver_->failed_pivot(), 0);
+    EXPECT_LT(solver_->failed_pivot(), m.n);
+  }
+}
+
+TEST_P(LinearSolverParity, NegativePivotIsNotPositiveDefiniteForCholesky) {
+  // A softening dof (behaviors.md §7.4: negative tangent) decoupled from the rest: Cholesky
+  // backends stop on it; LU solves the indefinite system.
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(5, 5);
+  a.topLeftCorner(4, 4) = grounded_chain();
+  a.row(1).setZero();
+  a.col(1).setZero();
+  a(1, 1) = -450.0;
+  a(4, 4) = 2.0;
+  Eigen::VectorXd expected(5);
+  expected << 1.0, 0.5, -1.0, 2.0, -0.25;
+  const Eigen::VectorXd b = a * expected;
+  const SparseMatrix m = from_dense(a, storage());
+  const LinearStatus status = factor(m, true, true);
+  if (is(SolverChoice::Umfpack)) {
+    ASSERT_EQ(status, LinearStatus::Ok) << message_;
+    EXPECT_LT((solve(b) - expected).lpNorm<Eigen::Infinity>(),
+              1e-12);  // the chain block: cond ≈ 39
+    return;
+  }
+  EXPECT_EQ(status, LinearStatus::NotPositiveDefinite) << message_;
+  EXPECT_EQ(solver_->failed_pivot(), 1);
+}
+
+TEST_P(LinearSolverParity, RefactorizationReusesTheAnalysis) {
+  const SparseMatrix pattern = from_eigen(to_eigen(laplacian_3d(6)), storage());
+  solver_ = make_linear_solver(choice(), true, true);
+  ASSERT_EQ(solver_->analyze(pattern, &message_), LinearStatus::Ok) << message_;
+  SparseMatrix m = pattern;
+  const auto check_solve = [&](const SparseMatrix& k) {
+    ASSERT_EQ(solver_->factorize(k, &message_), LinearStatus::Ok) << message_;
+    const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(k.n, -1.0, 2.0);
+    Eigen::VectorXd x;
+    ASSERT_EQ(solver_->solve(b, x, &message_), LinearStatus::Ok) << message_;
+    EXPECT_LT(relative_residual(k, x, b), 1e-12);  // cond ≈ 20: residual of a few epsilons
+  };
+  check_solve(m);
+  // New values on the same pattern, still diagonally dominant: 8 + 0.3 (j mod 5) against at
+  // most six neighbours of −1.3.
+  for (int j = 0; j < m.n; ++j) {
+    for (int p = m.col_ptr[j]; p < m.col_ptr[j + 1]; ++p) {
+      m.values[p] = m.row_idx[p] == j ? 8.0 + 0.3 * (j % 5) : -1.3;
+    }
+  }
+  check_solve(m);
+  // A failed factorization, then recovery without a new analysis.
+  SparseMatrix singular = m;
+  const int dof = 7;
+  for (int j = 0; j < m.n; ++j) {
+    for (int p = m.col_ptr[j]; p < m.col_ptr[j + 1]; ++p) {
+      if (j == dof || m.row_idx[p] == dof) singular.values[p] = 0.0;
+    }
+  }
+  EXPECT_EQ(solver_->factorize(singular, &message_), LinearStatus::Singular);
+  EXPECT_EQ(solver_->failed_pivot(), dof);
+  check_solve(m);
+  EXPECT_EQ(solver_->failed_pivot(), -1);
+}
+
+TEST_P(LinearSolverParity, NonFiniteEntryIsAFailure) {
+  SparseMatrix m = from_dense(grounded_chain(), storage());
+  m.values[2] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(factor(m, true, true), LinearStatus::Failure);
+  EXPECT_NE(message_.find("non-finite entry"), std::string::npos) << message_;
+}
+
+TEST_P(LinearSolverParity, SolveWithoutFactorizationIsABug) {
+  solver_ = make_linear_solver(choice(), true, true);
+  Eigen::VectorXd x;
+  EXPECT_THROW(solver_->solve(Eigen::VectorXd::Ones(3), x, nullptr), std::logic_error);
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, LinearSolverParity,
+                         ::testing::Values(Case{SolverChoice::Cholmod, Storage::Upper},
+                                           Case{SolverChoice::Cholmod, Storage::Full},
+                                           Case{SolverChoice::Umfpack, Storage::Upper},
+                                           Case{SolverChoice::Umfpack, Storage::Full},
+                                           Case{SolverChoice::Dense, Storage::Upper},
+                                           Case{SolverChoice::Dense, Storage::Full}),
+                         [](const ::testing::TestParamInfo<Case>& info) {
+                           return case_name(info.param);
+                         });
+
+TEST(LinearSolverChoice, AutomaticTakesCholeskyOnlyForSpdSystems) {
+  EXPECT_STREQ(make_linear_solver(SolverChoice::Automatic, true, true)->name(), "cholmod");
+  EXPECT_STREQ(make_linear_solver(SolverChoice::Automatic, true, false)->name(), "umfpack");
+  EXPECT_STREQ(make_linear_solver(SolverChoice::Automatic, false, false)->name(), "umfpack");
+  EXPECT_STREQ(make_linear_solver(SolverChoice::Dense, false, false)->name(), "dense");
+  EXPECT_THROW(make_linear_solver(SolverChoice::Cholmod, false, false), std::invalid_argument);
+}
+
+TEST(LinearSolverChoice, MalformedPatternIsABug) {
+  SparseMatrix lower_entry = from_dense(grounded_chain(), Storage::Full);
+  lower_entry.symmetric_upper = true;  // rows below the diagonal in upper storage
+  SparseMatrix unsorted = from_dense(grounded_chain(), Storage::Full);
+  std::swap(unsorted.row_idx[0], unsorted.row_idx[1]);
+  for (SolverChoice choice : {SolverChoice::Cholmod, SolverChoice::Umfpack, SolverChoice::Dense}) {
+    const auto solver = make_linear_solver(choice, true, true);
+    EXPECT_THROW(solver->analyze(lower_entry, nullptr), std::invalid_argument);
+    EXPECT_THROW(solver->analyze(unsorted, nullptr), std::invalid_argument);
+  }
+}
+
+TEST(CholmodOrdering, KeepsTheBetterOfAmdAndMetisOnA3dLattice) {
+  CholmodSolver solver;
+  std::string message;
+  ASSERT_EQ(solver.analyze(laplacian_3d(20), &message), LinearStatus::Ok) << message;
+  const auto trials = solver.ordering_trials();
+  ASSERT_EQ(trials.size(), 2u);
+  EXPECT_STREQ(trials[0].ordering, "AMD");
+  EXPECT_STREQ(trials[1].ordering, "METIS");
+  // METIS ran (CHOLMOD built with it): both orderings produced a factor estimate.
+  EXPECT_GT(trials[0].factor_nonzeros, 0.0);
+  EXPECT_GT(trials[1].factor_nonzeros, 0.0);
+  const auto& kept = trials[0].factor_nonzeros <= trials[1].factor_nonzeros ? trials[0] : trials[1];
+  EXPECT_STREQ(solver.ordering(), kept.ordering);
+  for (const auto& trial : trials) {
+    RecordProperty(std::string("nnz_L_") + trial.ordering, std::to_string(trial.factor_nonzeros));
+  }
+  RecordProperty("kept", solver.ordering());
+}
+
+TEST(PivotChecks, ClassifiesFailedCholeskyPivots) {
+  EXPECT_EQ(classify_cholesky_failure(-1e-16, 1.0, false), LinearStatus::Singular);
+  EXPECT_EQ(classify_cholesky_failure(-1e-3, 1.0, false), LinearStatus::NotPositiveDefinite);
+  // Zero diagonal with a coupling (a multiplier): indefinite, not singular.
+  EXPECT_EQ(classify_cholesky_failure(0.0, 0.0, false), LinearStatus::NotPositiveDefinite);
+  EXPECT_EQ(classify_cholesky_failure(0.0, 0.0, true), LinearStatus::Singular);
+  EXPECT_TRUE(negligible_pivot(1e-14, 1.0));
+  EXPECT_FALSE(negligible_pivot(1e-12, 1.0));
+}
+
+}  // namespace
+}  // namespace clinch
