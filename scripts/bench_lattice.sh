@@ -69,10 +69,8 @@ clinch_reaction() {
            {last = $c} END {print (c && last != "" ? last : "nan")}' "$1/job.history.csv" \
     2>/dev/null || echo nan
 }
-# TODO(solver-report): `clinch run` does not report its linear-solver time yet. Once it writes a
-# line "factorize+solve: X s" (one CHOLMOD factorization plus solve of the run's last tangent) to
-# <job>.log, this picks it up; pass the option that enables it through CLINCH_RUN_FLAGS
-# (e.g. CLINCH_RUN_FLAGS=--solver-report).
+# `clinch run` logs "factorize+solve: X s per iteration" (the mean wall time of one
+# factorization plus solve of the run's tangents) in <job>.log.
 clinch_factorize_solve() {
   sed -n 's/.*factorize+solve: *\([0-9.eE+-]*\) *s.*/\1/p' "$1/job.log" 2>/dev/null | tail -n 1
 }

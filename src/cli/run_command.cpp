@@ -104,6 +104,14 @@ int run_deck(const RunCommandOptions& options) {
                                           count_of(static_cast<std::size_t>(result.iterations), "iteration"),
                                           count_of(static_cast<std::size_t>(result.cutbacks), "cutback"),
                                           seconds);
+  if (result.factorizations > 0) {
+    // The per-iteration cost against its floor, one factorization plus solve
+    // (scripts/bench_lattice.sh reads this line).
+    log.info(fmt::format("factorize+solve: {:.6g} s per iteration ({} factorizations); whole run: "
+                         "{:.6g} s per iteration",
+                         result.linear_seconds / result.factorizations, result.factorizations,
+                         seconds / result.factorizations));
+  }
   if (!result.completed) {
     log.error(fmt::format("{}: FAILED after {}", job, summary));
     return kExitStopped;

@@ -4,6 +4,7 @@
 
 #include "src/linalg/cholmod_solver.hpp"
 #include "src/linalg/dense_solver.hpp"
+#include "src/linalg/fallback_solver.hpp"
 #include "src/linalg/umfpack_solver.hpp"
 
 namespace clinch {
@@ -27,7 +28,7 @@ std::unique_ptr<LinearSolver> make_linear_solver(SolverChoice choice, bool symme
   const bool spd = symmetric && positive_definite;
   switch (choice) {
     case SolverChoice::Automatic:
-      if (spd) return std::make_unique<CholmodSolver>();
+      if (spd) return std::make_unique<FallbackSolver>();
       return std::make_unique<UmfpackSolver>();
     case SolverChoice::Cholmod:
       if (!symmetric) throw std::invalid_argument("CHOLMOD needs a symmetric matrix");

@@ -37,7 +37,8 @@ class LinearSolver {
 
 enum class SolverChoice { Automatic, Cholmod, Umfpack, Dense };
 
-// Automatic: CHOLMOD for symmetric positive definite systems, UMFPACK otherwise (symmetric
+// Automatic: CHOLMOD for symmetric positive definite systems (switching to UMFPACK if a
+// factorization finds the matrix indefinite, fallback_solver.hpp), UMFPACK otherwise (symmetric
 // indefinite KKT systems with Lagrange multipliers, connection-types.md §3.8; softening and
 // unsymmetric tangents, behaviors.md §7.4). Dense: Cholesky when symmetric and positive definite,
 // LU otherwise. Asking for CHOLMOD on an unsymmetric system throws std::invalid_argument.

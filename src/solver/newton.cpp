@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <chrono>
+
 namespace clinch {
 namespace {
 
@@ -47,8 +49,12 @@ NewtonReport solve_increment(NonlinearProblem& problem, LinearSolver& solver,
       return report;
     }
     std::string message;
+    const auto start = std::chrono::steady_clock::now();
     LinearStatus linear = solver.factorize(tangent, &message);
     if (linear == LinearStatus::Ok) linear = solver.solve(-residual, correction, &message);
+    report.linear_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ++report.factorizations;
     if (linear != LinearStatus::Ok) {
       report.outcome = NewtonOutcome::SolverFailed;
       report.failed_pivot = solver.failed_pivot();

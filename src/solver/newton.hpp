@@ -25,6 +25,8 @@ struct NewtonReport {
   std::vector<IterationNorms> iterations;  // one record per evaluated state
   std::string message;                     // why it failed
   int failed_pivot = -1;                   // SolverFailed: equation of the zero pivot
+  double linear_seconds = 0;               // wall time in factorize + solve
+  int factorizations = 0;
   bool converged() const { return outcome == NewtonOutcome::Converged; }
 };
 

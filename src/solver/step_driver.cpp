@@ -89,6 +89,8 @@ class Driver {
     changes = 0;
     for (;;) {
       NewtonReport report = solve_increment(system_, solver_, criteria_, options);
+      result_.linear_seconds += report.linear_seconds;
+      result_.factorizations += report.factorizations;
       for (std::size_t i = 0; i < report.iterations.size(); ++i) {
         const IterationNorms& n = report.iterations[i];
         IterationRecord record;

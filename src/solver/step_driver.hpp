@@ -36,6 +36,8 @@ struct RunResult {
   int step = 0, increment = 0;
   double time = 0;
   int increments = 0, iterations = 0, cutbacks = 0;
+  int factorizations = 0;
+  double linear_seconds = 0;  // wall time in factorize + solve
 };
 
 RunResult run_analysis(const Model& model, ConnectorSystem& system, LinearSolver& solver,

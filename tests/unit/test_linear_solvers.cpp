@@ -357,6 +357,27 @@ INSTANTIATE_TEST_SUITE_P(Backends, LinearSolverParity,
                            return case_name(info.param);
                          });
 
+// A system announced as SPD that turns out indefinite ([[1, 2], [2, 1]], eigenvalues 3 and −1)
+// is still solved: the automatic solver switches to LU. x = (1, 1) for b = (3, 3), exact in
+// binary arithmetic up to the LU's rounding (1e-14).
+TEST(LinearSolverChoice, AutomaticFallsBackToLuOnAnIndefiniteMatrix) {
+  SparseMatrix k;
+  k.n = 2;
+  k.symmetric_upper = true;
+  k.col_ptr = {0, 1, 3};
+  k.row_idx = {0, 0, 1};
+  k.values = {1.0, 2.0, 1.0};
+  auto solver = make_linear_solver(SolverChoice::Automatic, true, true);
+  std::string message;
+  ASSERT_EQ(solver->analyze(k, &message), LinearStatus::Ok) << message;
+  ASSERT_EQ(solver->factorize(k, &message), LinearStatus::Ok) << message;
+  EXPECT_STREQ(solver->name(), "umfpack");
+  Eigen::VectorXd x;
+  ASSERT_EQ(solver->solve(Eigen::Vector2d(3.0, 3.0), x, &message), LinearStatus::Ok) << message;
+  EXPECT_NEAR(x[0], 1.0, 1e-14);
+  EXPECT_NEAR(x[1], 1.0, 1e-14);
+}
+
 TEST(LinearSolverChoice, AutomaticTakesCholeskyOnlyForSpdSystems) {
   EXPECT_STREQ(make_linear_solver(SolverChoice::Automatic, true, true)->name(), "cholmod");
   EXPECT_STREQ(make_linear_solver(SolverChoice::Automatic, true, false)->name(), "umfpack");
