@@ -63,8 +63,9 @@ std::string connector_deck(const std::string& type, bool nlgeom) {
 // node's rotation block (connection-types.md §3.7), which clinch v1 leaves out. Tolerance:
 // central differences with h = 1e-6 have truncation error O(h²·|K'''|) and rounding
 // O(ε·|r|/h) ≈ 1e-10·|r|; 1e-5 of the largest entry covers both with margin (behaviors.md §1.4).
-void check_tangent_at_random_state(const std::string& type, bool nlgeom, unsigned seed) {
-  auto a = analyse(connector_deck(type, nlgeom));
+void check_tangent_at_random_state(const std::string& type, bool nlgeom, unsigned seed,
+                                   const std::string& deck = "", bool settle_stops = false) {
+  auto a = analyse(deck.empty() ? connector_deck(type, nlgeom) : deck);
   ASSERT_TRUE(a->system);
   ConnectorSystem& s = *a->system;
   s.set_nlgeom(nlgeom);
@@ -81,6 +82,10 @@ void check_tangent_at_random_state(const std::string& type, bool nlgeom, unsigne
     if (!s.is_prescribed(i)) state[i] = u(rng) * (i >= a->plan->dofs.node_equations() ? 100 : 1);
   }
   s.apply_correction(state);
+  if (settle_stops) {
+    // Activate the stops the random state violates, then solve the multipliers once.
+    ASSERT_TRUE(s.update_stops());
+  }
   SparseMatrix k = s.pattern();
   Eigen::VectorXd r(s.size()), plus(s.size()), minus(s.size());
   ASSERT_TRUE(s.evaluate(r, &k).ok);
@@ -120,6 +125,23 @@ TEST(AssembledTangent, MatchesFiniteDifferencesForEveryFamily) {
     for (bool nlgeom : {false, true}) {
       for (unsigned seed : {1u, 2u}) check_tangent_at_random_state(type, nlgeom, seed);
     }
+  }
+}
+
+// At an active stop (behaviors.md §5.4): the stop's multiplier row and the free components'
+// stiffness, with the active set frozen. A CARTESIAN connector whose components 1 and 2 carry
+// stops that the random state (|u| up to 0.2) violates by construction (limits ±0.01 about the
+// initial position x0 = e·d0).
+TEST(AssembledTangent, MatchesFiniteDifferencesAtActiveStops) {
+  const std::string deck =
+      "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n*ELEMENT, TYPE=CONN3D2, ELSET=C\n1, 1, 2\n"
+      "*CONNECTOR SECTION, ELSET=C, BEHAVIOR=B\nCARTESIAN,\n*CONNECTOR BEHAVIOR, NAME=B\n"
+      "*CONNECTOR ELASTICITY, COMPONENT=1\n1000.\n*CONNECTOR ELASTICITY, COMPONENT=2\n500.\n"
+      "*CONNECTOR ELASTICITY, COMPONENT=3\n800.\n*CONNECTOR STOP, COMPONENT=1\n0.99, 1.01\n"
+      "*CONNECTOR STOP, COMPONENT=2\n-0.01, 0.01\n*BOUNDARY\n1, 1, 6\n*STEP, NLGEOM\n*STATIC\n"
+      "*END STEP\n";
+  for (bool nlgeom : {false, true}) {
+    for (unsigned seed : {3u, 4u}) check_tangent_at_random_state("CARTESIAN", nlgeom, seed, deck, true);
   }
 }
 
