@@ -21,19 +21,6 @@ namespace {
 
 constexpr DofMask kRotationDofs = 0b111000;
 
-// A rotation vector equivalent to `phi` (φ + 2πk φ/|φ|) closest to `previous` (§3.6).
-Vector3 unwrap_rotation_vector(const Vector3& phi, const Vector3& previous) {
-  const double angle = phi.norm();
-  if (angle < 1e-12) return phi;
-  const Vector3 axis = phi / angle;
-  Vector3 best = phi;
-  for (int k = -2; k <= 2; ++k) {
-    const Vector3 candidate = phi + (2.0 * std::numbers::pi * k) * axis;
-    if ((candidate - previous).norm() < (best - previous).norm()) best = candidate;
-  }
-  return best;
-}
-
 }  // namespace
 
 ConnectorSystem::ConnectorSystem(const Model& model, const AnalysisPlan& plan)
@@ -420,7 +407,10 @@ void ConnectorSystem::apply_correction(const Eigen::VectorXd& dx) {
       }
     }
     rotation_[node] = rotation_exp(spin) * rotation_[node];
-    const Vector3 phi = unwrap_rotation_vector(rotation_log(rotation_[node]), previous);
+    Vector3 phi = rotation_log(rotation_[node]);
+    if (const int turns = rotation_vector_turns(phi, previous); turns != 0) {
+      phi *= 1.0 + 2.0 * std::numbers::pi * turns / phi.norm();
+    }
     for (int k = 0; k < 3; ++k) {
       if (eqs[static_cast<std::size_t>(k)] >= 0) x_[eqs[static_cast<std::size_t>(k)]] = phi[k];
     }

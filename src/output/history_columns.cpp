@@ -156,6 +156,18 @@ std::vector<HistoryColumns::Request> HistoryColumns::expand_step(
   return requests;
 }
 
+// TOTALS=YES/ONLY (keywords.md §18): one column per component, `<VAR>@<set>`, summing the terms.
+void HistoryColumns::total_columns(const OutputIdentifier& id, std::array<Column, 7>& sums,
+                                   Request& request, const std::string& set) {
+  for (int k = 1; k <= 6; ++k) {
+    Column& sum = sums[static_cast<std::size_t>(k)];
+    if (sum.terms.empty()) continue;
+    sum.variable = id.variable;
+    sum.component = k;
+    request.columns.push_back(column(output_column_label(id.variable, k) + "@" + set, sum));
+  }
+}
+
 void HistoryColumns::element_columns(const OutputIdentifier& id,
                                      const std::vector<std::int32_t>& elements, Request& request,
                                      bool totals, bool totals_only, const std::string& set) {
@@ -196,14 +208,7 @@ void HistoryColumns::element_columns(const OutputIdentifier& id,
       }
     }
   }
-  if (!totals) return;
-  for (int k = 1; k <= 6; ++k) {
-    Column& sum = sums[static_cast<std::size_t>(k)];
-    if (sum.terms.empty()) continue;
-    sum.variable = id.variable;
-    sum.component = k;
-    request.columns.push_back(column(output_column_label(id.variable, k) + "@" + set, sum));
-  }
+  if (totals) total_columns(id, sums, request, set);
 }
 
 void HistoryColumns::node_columns(const OutputIdentifier& id, const std::vector<std::int32_t>& nodes,
@@ -225,14 +230,7 @@ void HistoryColumns::node_columns(const OutputIdentifier& id, const std::vector<
       }
     }
   }
-  if (!totals) return;
-  for (int k = 1; k <= 6; ++k) {
-    Column& sum = sums[static_cast<std::size_t>(k)];
-    if (sum.terms.empty()) continue;
-    sum.variable = id.variable;
-    sum.component = k;
-    request.columns.push_back(column(output_column_label(id.variable, k) + "@" + set, sum));
-  }
+  if (totals) total_columns(id, sums, request, set);
 }
 
 void HistoryColumns::begin_step(std::size_t step) { step_ = step; }

@@ -5,6 +5,7 @@
 // that are not due.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,8 @@ class HistoryColumns {
                        Request& request, bool totals, bool totals_only, const std::string& set);
   void node_columns(const OutputIdentifier& id, const std::vector<std::int32_t>& nodes,
                     Request& request, bool totals, bool totals_only, const std::string& set);
+  void total_columns(const OutputIdentifier& id, std::array<Column, 7>& sums, Request& request,
+                     const std::string& set);
   double value(const Column& column, ConnectorSystem& system);
 
   const Model& model_;
