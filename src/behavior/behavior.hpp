@@ -36,6 +36,17 @@ struct BehaviorOutput {
   std::string message;  // filled only on failure
 };
 
+// What a behaviour's history means, for output (output-variables.md §2: CUP, CUE, CUPEQ,
+// CALPHAF). Components without plasticity read 0.
+struct BehaviorState {
+  Vector6 plastic_motion = Vector6::Zero();        // u^pl (CUP); CUE = CCU − CUP
+  Vector6 equivalent_plastic = Vector6::Zero();    // ū^pl of each uncoupled plasticity (CUPEQn)
+  ComponentMask uncoupled_plastic = 0;             // components with an uncoupled plasticity
+  double coupled_equivalent_plastic = 0;           // ū^pl of the coupled plasticity (CUPEQC)
+  bool has_coupled_plasticity = false;
+  Vector6 back_force = Vector6::Zero();            // α (CALPHAF)
+};
+
 // A force–motion law in component space. `integrate` is const and never touches history_old, so
 // one instance serves every element that shares the behaviour (ARCHITECTURE.md principle 2).
 class Behavior {
@@ -45,6 +56,12 @@ class Behavior {
   virtual int history_size() const = 0;          // doubles per element
   virtual bool tangent_is_symmetric() const = 0;
   virtual IntegrationStatus integrate(const BehaviorInput& in, BehaviorOutput& out) const = 0;
+  // Reads a (committed or trial) history of this behaviour; a path-independent law leaves
+  // `state` as it is.
+  virtual void describe_state(std::span<const double> history, BehaviorState& state) const {
+    (void)history;
+    (void)state;
+  }
 };
 
 }  // namespace clinch

@@ -1,0 +1,62 @@
+// A compiled connector potential P(c) (derived-components-and-potentials.md §2): contributions
+// X_i = (E_i − a_i)/R_i with E_i an intrinsic component or a derived component, P_i = H_i(X_i),
+// combined by SUM (P = (Σ s_i P_i^α_i)^(1/β)) or MAX (P = max_i s_i P_i). Value, gradient and
+// Hessian with respect to the six intrinsic components (§2.4 chain rule), with the conventions of
+// the non-smooth points (§2.5 table). Plasticity and friction evaluate it at every local
+// iteration, so evaluation never allocates; only the components the potential involves (§2.8)
+// are ever read.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "src/behavior/derived_component.hpp"
+#include "src/linalg/small_types.hpp"
+#include "src/model/behavior_model.hpp"
+
+namespace clinch {
+
+struct PotentialValue {
+  double value = 0;
+  Vector6 gradient = Vector6::Zero();  // ∂P/∂c
+  Matrix6 hessian = Matrix6::Zero();   // ∂²P/∂c² (filled only when asked for)
+  int active = -1;  // MAX: the maximising contribution (lowest index among ties, §2.5); SUM: −1
+};
+
+class ConnectorPotential {
+ public:
+  // The potential `potential` of `behavior` (derived-component names resolved in that block).
+  // The model must have passed validation.
+  static ConnectorPotential compile(const ConnectorBehavior& behavior, const Potential& potential);
+
+  // P(c), ∂P/∂c and, with `hessian`, ∂²P/∂c².
+  void evaluate(const Vector6& c, PotentialValue& out, bool hessian) const;
+  double value(const Vector6& c) const;
+
+  // One contribution on its own, as a surface of the multi-surface return of a MAX potential
+  // (behaviors.md §6.6): value s_i·P_i, its gradient and (with `hessian`) its Hessian.
+  void evaluate_contribution(int i, const Vector6& c, PotentialValue& out, bool hessian) const;
+
+  int contribution_count() const { return static_cast<int>(contributions_.size()); }
+  bool is_max() const { return op_ == PotentialOperator::Max; }
+  double exponent() const { return beta_; }
+  ComponentMask components() const { return components_; }  // §2.8
+  ContributionType type() const { return type_; }
+
+ private:
+  struct Contribution {
+    int slot = -1;        // intrinsic component − 1, or −1 for a derived component
+    int derived = -1;     // index into derived_
+    double inverse_scale = 1.0;  // 1/R_i
+    double alpha = 2.0, shift = 0.0, sign = 1.0;
+    PotentialFunction function = PotentialFunction::Abs;
+  };
+  std::vector<Contribution> contributions_;
+  std::vector<DerivedComponent> derived_;
+  PotentialOperator op_ = PotentialOperator::Sum;
+  double beta_ = 2.0;
+  ComponentMask components_ = 0;
+  ContributionType type_ = ContributionType::Norm;
+};
+
+}  // namespace clinch
