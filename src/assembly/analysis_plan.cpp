@@ -7,6 +7,7 @@
 #include "parser/diagnostic.hpp"
 #include "src/assembly/sparsity_pattern.hpp"
 #include "src/behavior/elastic_behavior.hpp"
+#include "src/behavior/elastic_plastic_behavior.hpp"
 #include "src/model/orientation_triad.hpp"
 
 namespace clinch {
@@ -23,9 +24,8 @@ Matrix3 to_matrix(const Triad& t) {
 }
 
 // Behaviour options that clinch run does not integrate yet: the run refuses the deck instead of
-// ignoring them (issue scope: elasticity, reference, stops and locks).
+// ignoring them.
 std::string unsupported_behavior(const ConnectorBehavior& b) {
-  if (!b.plasticities.empty()) return "*CONNECTOR PLASTICITY";
   if (!b.damage_initiations.empty()) return "*CONNECTOR DAMAGE INITIATION";
   if (!b.frictions.empty()) return "*CONNECTOR FRICTION";
   if (!b.failures.empty()) return "*CONNECTOR FAILURE";
@@ -95,7 +95,7 @@ class PlanBuilder {
       if (section.behavior_index >= 0) {
         const ConnectorBehavior& b =
             model_.behaviors.behaviors[static_cast<std::size_t>(section.behavior_index)];
-        plan_.behaviors.push_back(make_elastic_behavior(b, section.available));
+        plan_.behaviors.push_back(make_connector_behavior(b, section.available));
         section_behavior_[index] = plan_.behaviors.back().get();
       }
     }

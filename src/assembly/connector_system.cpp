@@ -266,6 +266,11 @@ EvalStatus ConnectorSystem::evaluate_connector(std::size_t c, LocalSystem& local
     }
   }
   if (output) {
+    if (r.behavior) {
+      const std::size_t h = static_cast<std::size_t>(r.behavior->history_size());
+      r.behavior->describe_state(std::span<const double>(history_.data() + r.history, h),
+                                 output->behavior);
+    }
     const ComponentMask existing = k.existing;
     for (int i = 0; i < 6; ++i) {
       if (!has_component(existing, i + 1)) continue;
@@ -461,7 +466,8 @@ void ConnectorSystem::commit() {
   dx_n_ = x_ - x_n_;
   x_n_ = x_;
   rotation_n_ = rotation_;
-  history_n_ = history_;
+  // The evaluation below starts from the old committed state, so it reproduces the converged
+  // trial history; the history is committed after it.
   LocalSystem local;
   for (std::size_t c = 0; c < plan_.connectors.size(); ++c) {
     Dynamic* d = dynamic(c);
@@ -473,6 +479,7 @@ void ConnectorSystem::commit() {
     d->motion_n = out.position - r.reference;
     d->status_n = d->status;
   }
+  history_n_ = history_;
 }
 
 void ConnectorSystem::revert() {

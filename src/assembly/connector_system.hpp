@@ -26,6 +26,7 @@ struct ConnectorOutput {
   Vector6 applied = Vector6::Zero();         // CCF
   Vector6 total = Vector6::Zero();           // CTF = CEF + CRF − CCF
   std::array<std::uint8_t, 6> status{};      // CSLST
+  BehaviorState behavior;                    // CUP, CUPEQ, CALPHAF (plastic behaviours)
 };
 
 class ConnectorSystem final : public NonlinearProblem {

@@ -164,6 +164,15 @@ bool derived_has_motion_context(const ConnectorBehavior& behavior, std::string_v
   return first_derived_context(behavior, key, false).has_value();
 }
 
+std::vector<std::int32_t> derived_output_terms(const ConnectorBehavior& behavior, bool force) {
+  std::vector<std::int32_t> terms;
+  for (std::int32_t t : derived_component_first_terms(behavior)) {
+    const std::string& key = behavior.derived_terms[static_cast<std::size_t>(t)].name.key;
+    if (first_derived_context(behavior, key, force)) terms.push_back(t);
+  }
+  return terms;
+}
+
 std::size_t derived_context_count(const ConnectorBehavior& behavior, std::string_view key,
                                   bool force) {
   // Two contributions of one potential are one context; a friction's CONTACT FORCE and its

@@ -56,6 +56,9 @@ std::optional<DerivedComponentUse> first_derived_context(const ConnectorBehavior
                                                          std::string_view key, bool force);
 bool derived_has_force_context(const ConnectorBehavior& behavior, std::string_view key);
 bool derived_has_motion_context(const ConnectorBehavior& behavior, std::string_view key);
+// The derived components a bare CDERF (force = true) or CDERU request reports: the first term of
+// each derived component with a context of that kind, in deck order of first definition (§4).
+std::vector<std::int32_t> derived_output_terms(const ConnectorBehavior& behavior, bool force);
 // Number of contexts of that kind, a potential counting once (more than one: the `cder-multiple-contexts` note of §4).
 std::size_t derived_context_count(const ConnectorBehavior& behavior, std::string_view key,
                                   bool force);

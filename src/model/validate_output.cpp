@@ -162,11 +162,8 @@ class OutputValidator {
     const bool force = id.variable == "CDERF";
     if (!behavior) return names;
     if (id.derived_name.empty()) {
-      for (std::int32_t t : derived_component_first_terms(*behavior)) {
-        const Name& name = behavior->derived_terms[static_cast<std::size_t>(t)].name;
-        const bool has = force ? derived_has_force_context(*behavior, name.key)
-                               : derived_has_motion_context(*behavior, name.key);
-        if (has) names.push_back(name.display);
+      for (std::int32_t t : derived_output_terms(*behavior, force)) {
+        names.push_back(behavior->derived_terms[static_cast<std::size_t>(t)].name.display);
       }
       return names;
     }

@@ -4,6 +4,7 @@
 
 #include "parser/diagnostic.hpp"
 #include "src/model/output_variables.hpp"
+#include "src/model/potential_queries.hpp"
 
 namespace clinch {
 namespace {
@@ -14,10 +15,24 @@ std::string set_label(const TargetRef& set, bool element) {
                                       : set.instance_display + "." + set.set_display;
 }
 
+// The scalar CUPEQ (output-variables.md §2): the coupled plasticity's value if the element has
+// one; otherwise the single uncoupled component's value; otherwise the largest over components.
+double scalar_equivalent_plastic(const BehaviorState& state) {
+  if (state.has_coupled_plasticity) return state.coupled_equivalent_plastic;
+  double largest = 0;
+  for (int i = 0; i < 6; ++i) {
+    if (has_component(state.uncoupled_plastic, i + 1)) {
+      largest = std::max(largest, state.equivalent_plastic[i]);
+    }
+  }
+  return largest;
+}
+
 // Connector quantities of output-variables.md §2 that clinch run produces; every other connector
-// identifier (plasticity, damage, friction, damping, velocities) is 0 for the behaviours a run
-// accepts.
+// identifier (damage, friction, damping, velocities) is 0 for the behaviours a run accepts.
 double connector_value(const ConnectorOutput& out, const std::string& variable, int component) {
+  if (variable == "CUPEQ" && component == 0) return scalar_equivalent_plastic(out.behavior);
+  if (variable == "CUPEQC") return out.behavior.coupled_equivalent_plastic;
   if (component < 1) return 0.0;
   const int i = component - 1;
   if (variable == "CTF") return out.total[i];
@@ -25,7 +40,11 @@ double connector_value(const ConnectorOutput& out, const std::string& variable, 
   if (variable == "CRF") return out.multiplier[i];
   if (variable == "CCF") return out.applied[i];
   if (variable == "CU") return out.change[i];
-  if (variable == "CCU" || variable == "CUE") return out.constitutive[i];
+  if (variable == "CCU") return out.constitutive[i];
+  if (variable == "CUE") return out.constitutive[i] - out.behavior.plastic_motion[i];
+  if (variable == "CUP") return out.behavior.plastic_motion[i];
+  if (variable == "CUPEQ") return out.behavior.equivalent_plastic[i];
+  if (variable == "CALPHAF") return out.behavior.back_force[i];
   if (variable == "CP") return out.position[i];
   if (variable == "CSLST") return out.status[static_cast<std::size_t>(i)];
   return 0.0;
@@ -99,14 +118,21 @@ std::vector<HistoryColumns::Request> HistoryColumns::expand_step(
     for (std::int32_t e : connectors) {
       const ConnectorRecord& r = plan_.connectors[static_cast<std::size_t>(
           plan_.connector_of_element[static_cast<std::size_t>(e)])];
+      const std::int32_t b = model_.sections.connector_sections[static_cast<std::size_t>(r.section)]
+                                 .behavior_index;
+      const BehaviorFeatures features =
+          b >= 0 ? behavior_features(model_.behaviors.behaviors[static_cast<std::size_t>(b)])
+                 : BehaviorFeatures{};
       std::vector<std::string> variables = {"CTF", "CU"};
+      if (features.plasticity) variables.insert(variables.end(), {"CUP", "CUPEQ"});
       bool stops = !r.locks.empty();
       for (const ConnectorStopLimits& s : r.stops) stops |= s.lower || s.upper;
       if (stops) variables.insert(variables.end(), {"CRF", "CSLST"});
+      if (features.kinematic_hardening) variables.push_back("CALPHAF");
       for (const std::string& v : variables) {
         OutputIdentifier id;
         id.variable = v;
-        id.components = 0b111111;
+        id.components = v == "CUPEQ" ? 0 : 0b111111;  // the scalar CUPEQ (§1.2)
         element_columns(id, {e}, request, false, false, "");
       }
     }
@@ -172,7 +198,11 @@ void HistoryColumns::element_columns(const OutputIdentifier& id,
                                      const std::vector<std::int32_t>& elements, Request& request,
                                      bool totals, bool totals_only, const std::string& set) {
   const OutputVariableInfo* info = output_variable_info(id.variable);
-  if (!info || info->producer == OutputProducer::Derived) return;
+  if (!info) return;
+  if (info->producer == OutputProducer::Derived) {
+    derived_columns(id, elements, request);
+    return;
+  }
   const bool spring_variable = info->kind == OutputKind::Spring;
   std::array<Column, 7> sums;
   for (std::int32_t e : elements) {
@@ -211,6 +241,52 @@ void HistoryColumns::element_columns(const OutputIdentifier& id,
   if (totals) total_columns(id, sums, request, set);
 }
 
+// CDERF-<name> / CDERU-<name> (derived-components-and-potentials.md §4): one column per element
+// and derived component; a bare request lists every derived component with a context of its kind.
+void HistoryColumns::derived_columns(const OutputIdentifier& id,
+                                     const std::vector<std::int32_t>& elements,
+                                     Request& request) {
+  const bool force = id.variable == "CDERF";
+  for (std::int32_t e : elements) {
+    const std::int32_t c = plan_.connector_of_element[static_cast<std::size_t>(e)];
+    if (c < 0) continue;
+    const ConnectorRecord& r = plan_.connectors[static_cast<std::size_t>(c)];
+    const std::int32_t b =
+        model_.sections.connector_sections[static_cast<std::size_t>(r.section)].behavior_index;
+    if (b < 0) continue;
+    const ConnectorBehavior& behavior = model_.behaviors.behaviors[static_cast<std::size_t>(b)];
+    std::vector<std::int32_t> terms;
+    if (id.derived_name.empty()) {
+      terms = derived_output_terms(behavior, force);
+    } else if (const std::string key = name_key(id.derived_name, false);
+               first_derived_context(behavior, key, force)) {
+      terms.push_back(find_derived_component(behavior, key));
+    }
+    const Element& element = model_.elements[static_cast<std::size_t>(e)];
+    const std::string where = qualified_label(model_, element.instance, element.label);
+    for (std::int32_t t : terms) {
+      const Name& name = behavior.derived_terms[static_cast<std::size_t>(t)].name;
+      Column column_data{id.variable, 0, {{Source::Connector, c}}};
+      column_data.derived = derived_component(b, behavior, name.key);
+      request.columns.push_back(
+          column(output_column_label(id.variable, 0, name.display) + "@" + where, column_data));
+    }
+  }
+}
+
+std::int32_t HistoryColumns::derived_component(std::int32_t behavior_index,
+                                               const ConnectorBehavior& behavior,
+                                               const std::string& key) {
+  const auto cache_key = std::make_pair(behavior_index, key);
+  if (const auto it = derived_index_.find(cache_key); it != derived_index_.end()) {
+    return it->second;
+  }
+  derived_.push_back(DerivedComponent::compile(behavior, key));
+  const auto index = static_cast<std::int32_t>(derived_.size() - 1);
+  derived_index_.emplace(cache_key, index);
+  return index;
+}
+
 void HistoryColumns::node_columns(const OutputIdentifier& id, const std::vector<std::int32_t>& nodes,
                                   Request& request, bool totals, bool totals_only,
                                   const std::string& set) {
@@ -247,10 +323,18 @@ double HistoryColumns::value(const Column& c, ConnectorSystem& system) {
   double sum = 0;
   for (const Term& t : c.terms) {
     switch (t.source) {
-      case Source::Connector:
-        sum += connector_value(system.connector_output(static_cast<std::size_t>(t.index)),
-                               c.variable, c.component);
+      case Source::Connector: {
+        const ConnectorOutput out = system.connector_output(static_cast<std::size_t>(t.index));
+        if (c.derived >= 0) {
+          // §4: CDERF on the force of the context (plasticity: the elastic-plastic force),
+          // CDERU on the constitutive motions.
+          const DerivedComponent& g = derived_[static_cast<std::size_t>(c.derived)];
+          sum += g.value(c.variable == "CDERF" ? out.elastic : out.constitutive);
+        } else {
+          sum += connector_value(out, c.variable, c.component);
+        }
         break;
+      }
       case Source::Spring: {
         double force = 0, delta = 0;
         system.spring_output(static_cast<std::size_t>(t.index), force, delta);

@@ -6,10 +6,13 @@
 #pragma once
 
 #include <array>
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "src/assembly/connector_system.hpp"
+#include "src/behavior/derived_component.hpp"
 #include "src/model/model.hpp"
 
 namespace clinch {
@@ -37,6 +40,7 @@ class HistoryColumns {
     std::string variable;  // canonical identifier
     int component = 0;     // 1…6, 0 for scalars
     std::vector<Term> terms;
+    std::int32_t derived = -1;  // CDERF/CDERU: index into derived_
   };
   struct Request {
     int frequency = 1;
@@ -49,6 +53,10 @@ class HistoryColumns {
                                    bool default_request);
   void element_columns(const OutputIdentifier& id, const std::vector<std::int32_t>& elements,
                        Request& request, bool totals, bool totals_only, const std::string& set);
+  void derived_columns(const OutputIdentifier& id, const std::vector<std::int32_t>& elements,
+                       Request& request);
+  std::int32_t derived_component(std::int32_t behavior_index, const ConnectorBehavior& behavior,
+                                 const std::string& key);
   void node_columns(const OutputIdentifier& id, const std::vector<std::int32_t>& nodes,
                     Request& request, bool totals, bool totals_only, const std::string& set);
   void total_columns(const OutputIdentifier& id, std::array<Column, 7>& sums, Request& request,
@@ -62,6 +70,8 @@ class HistoryColumns {
   std::vector<Column> columns_;
   std::vector<std::vector<Request>> step_requests_;
   std::size_t step_ = 0;
+  std::vector<DerivedComponent> derived_;  // compiled once per (behaviour, name)
+  std::map<std::pair<std::int32_t, std::string>, std::int32_t> derived_index_;
 };
 
 }  // namespace clinch

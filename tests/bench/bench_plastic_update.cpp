@@ -1,0 +1,137 @@
+// Behaviour-update throughput of coupled plasticity (issue target: spot-weld plastic updates per
+// second on one core). The spot weld of derived-components-and-potentials.md §3 (BUSHING, six
+// components, the elliptical potential with β = 1.5 through the `normal` and `shear` derived
+// components) is integrated from the virgin state for a fixed set of trial motions that all yield,
+// with the consistent tangent, as the assembly asks for it. An elastic variant (trial motions
+// below yield) shows the cost of the yield check alone. Run with
+// `--benchmark_repetitions=5 --benchmark_report_aggregates_only=true` for medians.
+#include <benchmark/benchmark.h>
+
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "parser/deck_reader.hpp"
+#include "parser/diagnostic.hpp"
+#include "parser/source_manager.hpp"
+#include "src/behavior/connector_potential.hpp"
+#include "src/behavior/elastic_plastic_behavior.hpp"
+#include "src/model/model.hpp"
+
+namespace clinch {
+namespace {
+
+constexpr const char* kSpotWeld = R"(*NODE
+1, 0., 0., 0.
+2, 0., 0., 0.
+*ELEMENT, TYPE=CONN3D2, ELSET=WELD
+1, 1, 2
+*ORIENTATION, NAME=GLOBAL
+1., 0., 0., 0., 1., 0.
+*CONNECTOR SECTION, ELSET=WELD, BEHAVIOR=weld
+BUSHING,
+GLOBAL
+*PARAMETER
+r_n  = sqrt(30.68/19.63)
+or_n = 1.0/r_n
+or_s = 1.0/(2.0*r_n)
+*CONNECTOR BEHAVIOR, NAME=weld
+*CONNECTOR ELASTICITY, COMPONENT=1
+1.0e5
+*CONNECTOR ELASTICITY, COMPONENT=2
+1.0e5
+*CONNECTOR ELASTICITY, COMPONENT=3
+2.0e5
+*CONNECTOR ELASTICITY, COMPONENT=4
+1.0e6
+*CONNECTOR ELASTICITY, COMPONENT=5
+1.0e6
+*CONNECTOR ELASTICITY, COMPONENT=6
+5.0e5
+*CONNECTOR PLASTICITY
+*CONNECTOR HARDENING, DEFINITION=TABULAR
+40000., 0.
+60000., 0.5
+*CONNECTOR POTENTIAL, EXPONENT=1.5
+normal, 0.02, , MACAULEY, ,
+shear,  0.05, , ABS, ,
+*CONNECTOR DERIVED COMPONENT, NAME=normal, OPERATOR=MACAULEY SUM
+3
+1.0
+*CONNECTOR DERIVED COMPONENT, NAME=normal
+4, 5
+<or_n>, <or_n>
+*CONNECTOR DERIVED COMPONENT, NAME=shear
+6
+<or_s>
+*CONNECTOR DERIVED COMPONENT, NAME=shear
+1, 2
+1.0, 1.0
+)";
+
+struct SpotWeld {
+  SourceManager sources;
+  Model model;
+  DiagnosticSink sink;
+  std::unique_ptr<Behavior> behavior;
+  SpotWeld() {
+    read_deck_text("spot_weld.inp", kSpotWeld, sources, model, sink);
+    behavior = make_connector_behavior(model.behaviors.behaviors.at(0), 0b111111);
+  }
+};
+
+// Trial motions from the virgin state along random rays, scaled to `lo`…`hi` times the motion of
+// first yield on the ray: P is positively homogeneous, so first yield is at F_y(0) / P(K u).
+std::vector<Vector6> trial_motions(const ConnectorBehavior& behavior, double lo, double hi) {
+  const ConnectorPotential potential =
+      ConnectorPotential::compile(behavior, behavior.potentials.at(0));
+  const Vector6 stiffness = (Vector6() << 1e5, 1e5, 2e5, 1e6, 1e6, 5e5).finished();
+  constexpr double kInitialYield = 40000.0;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Vector6> motions;
+  while (motions.size() < 1024) {
+    Vector6 u;
+    for (int i = 0; i < 6; ++i) u[i] = 2.0 * unit(rng) - 1.0;
+    const double p = potential.value(stiffness.cwiseProduct(u));
+    if (p <= 0) continue;
+    motions.push_back(u * ((lo + (hi - lo) * unit(rng)) * kInitialYield / p));
+  }
+  return motions;
+}
+
+void run(benchmark::State& state, double lo, double hi) {
+  SpotWeld weld;
+  if (!weld.behavior) {
+    state.SkipWithError("no behaviour");
+    return;
+  }
+  const std::vector<Vector6> motions = trial_motions(weld.model.behaviors.behaviors.at(0), lo, hi);
+  std::vector<double> history(static_cast<std::size_t>(weld.behavior->history_size()), 0.0);
+  std::vector<double> trial(history.size());
+  const Vector6 zero = Vector6::Zero();
+  std::size_t n = 0;
+  std::size_t failures = 0;
+  for (auto _ : state) {
+    const BehaviorInput in{zero, motions[n++ & 1023], 0, 0, history, TangentRequest::Consistent};
+    BehaviorOutput out;
+    out.history_new = trial;
+    if (weld.behavior->integrate(in, out) != IntegrationStatus::Success) ++failures;
+    benchmark::DoNotOptimize(out.tangent.data());
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+  state.counters["failures"] = static_cast<double>(failures);
+}
+
+// Motions of 2 to 20 times the first-yield motion along random rays: every update is plastic.
+void BM_SpotWeldPlasticUpdate(benchmark::State& state) { run(state, 2.0, 20.0); }
+// Motions of 1e-3 to 1e-2 of the first-yield motion: every update is elastic.
+void BM_SpotWeldElasticUpdate(benchmark::State& state) { run(state, 1e-3, 1e-2); }
+BENCHMARK(BM_SpotWeldPlasticUpdate);
+BENCHMARK(BM_SpotWeldElasticUpdate);
+
+}  // namespace
+}  // namespace clinch
+
+BENCHMARK_MAIN();

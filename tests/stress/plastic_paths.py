@@ -1,0 +1,230 @@
+"""Stress test of coupled plasticity: random load paths through `clinch run`.
+
+Each path is one deck: a spot weld (BUSHING, the elliptical potential of
+derived-components-and-potentials.md section 3 with beta = 1.5) or a MAX potential (CARTESIAN,
+a square truncated by a circle, so that returns land on corners and edges; behaviors.md 6.6),
+driven by prescribed motions of node b over several steps. Steps mix proportional loading,
+reversals, crossings of f3 = 0 (the Macaulay kink of the spot weld's normal measure) and random
+non-proportional moves. Increments are automatic, so cutbacks are allowed and counted.
+
+Every path must either complete (exit 0, last status line COMPLETED) or stop cleanly (exit 2 with
+a last status line FAILED: ...). Anything else (a crash, another exit code, a missing status
+line) fails the test. The paths are displacement-driven with hardening, so each has a solution;
+the test also requires the convergence rate to reach --min-rate (default 1.0).
+
+Usage: plastic_paths.py CLINCH [--paths N] [--seed S] [--work DIR] [--min-rate R]
+"""
+
+import argparse
+import os
+import random
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+SPOT_WELD_BEHAVIOR = """*PARAMETER
+r_n  = sqrt(30.68/19.63)
+r_s  = 2.0*r_n
+or_n = 1.0/r_n
+or_s = 1.0/r_s
+*NODE
+1, 0., 0., 0.
+2, 0., 0., 0.
+*ELEMENT, TYPE=CONN3D2, ELSET=WELD
+1, 1, 2
+*ORIENTATION, NAME=GLOBAL
+1., 0., 0., 0., 1., 0.
+*CONNECTOR SECTION, ELSET=WELD, BEHAVIOR=weld
+BUSHING,
+GLOBAL
+*CONNECTOR BEHAVIOR, NAME=weld
+*CONNECTOR ELASTICITY, COMPONENT=1
+1.0e5
+*CONNECTOR ELASTICITY, COMPONENT=2
+1.0e5
+*CONNECTOR ELASTICITY, COMPONENT=3
+2.0e5
+*CONNECTOR ELASTICITY, COMPONENT=4
+1.0e6
+*CONNECTOR ELASTICITY, COMPONENT=5
+1.0e6
+*CONNECTOR ELASTICITY, COMPONENT=6
+5.0e5
+*CONNECTOR PLASTICITY
+*CONNECTOR HARDENING, DEFINITION=TABULAR
+40000., 0.
+60000., 0.5
+70000., 2.0
+*CONNECTOR POTENTIAL, EXPONENT=1.5
+normal, 0.02, , MACAULEY, ,
+shear,  0.05, , ABS, ,
+*CONNECTOR DERIVED COMPONENT, NAME=normal, OPERATOR=MACAULEY SUM
+3
+1.0
+*CONNECTOR DERIVED COMPONENT, NAME=normal
+4, 5
+<or_n>, <or_n>
+*CONNECTOR DERIVED COMPONENT, NAME=shear
+6
+<or_s>
+*CONNECTOR DERIVED COMPONENT, NAME=shear
+1, 2
+1.0, 1.0
+*BOUNDARY
+1, 1, 6
+"""
+
+MAX_BEHAVIOR = """*NODE
+1, 0., 0., 0.
+2, 0., 0., 0.
+*ELEMENT, TYPE=CONN3D2, ELSET=WELD
+1, 1, 2
+*CONNECTOR SECTION, ELSET=WELD, BEHAVIOR=box
+CARTESIAN,
+*CONNECTOR BEHAVIOR, NAME=box
+*CONNECTOR ELASTICITY, COMPONENT=1
+1000.
+*CONNECTOR ELASTICITY, COMPONENT=2
+1500.
+*CONNECTOR ELASTICITY, COMPONENT=3
+800.
+*CONNECTOR PLASTICITY
+*CONNECTOR HARDENING, DEFINITION=TABULAR
+100., 0.
+150., 0.2
+*CONNECTOR POTENTIAL, OPERATOR=MAX
+1, 100., , ABS, ,
+2, 100., , ABS, ,
+radial, 120., , ABS, ,
+3, 80., , ABS, ,
+*CONNECTOR DERIVED COMPONENT, NAME=radial
+1, 2
+1.0, 1.0
+*BOUNDARY
+1, 1, 3
+"""
+
+# Motion scales: about three times the first-yield motion of each component.
+SPOT_WELD_SCALE = [0.03, 0.03, 0.012, 0.003, 0.003, 0.006]
+MAX_SCALE = [0.3, 0.2, 0.3]
+
+
+def random_path(rng, dimension):
+    """Targets of node b's DOFs at the end of each step, in units of the motion scale."""
+    targets = []
+    current = [0.0] * dimension
+    for _ in range(rng.randint(3, 6)):
+        kind = rng.choice(["proportional", "reverse", "kink", "random", "unload"])
+        if kind == "proportional" and any(current):
+            factor = rng.uniform(1.2, 2.0)
+            nxt = [factor * x for x in current]
+        elif kind == "reverse" and any(current):
+            nxt = [-rng.uniform(0.5, 1.5) * x for x in current]
+        elif kind == "kink":
+            nxt = [rng.uniform(-1.5, 1.5) for _ in range(dimension)]
+            nxt[2] = -current[2] if current[2] else rng.choice([-1.0, 1.0])  # cross f3 = 0
+        elif kind == "unload":
+            nxt = [0.5 * x for x in current]
+        else:
+            nxt = [rng.uniform(-1.5, 1.5) for _ in range(dimension)]
+        targets.append(nxt)
+        current = nxt
+    return targets
+
+
+def write_deck(path, behavior, dofs, scale, targets, initial_increment):
+    lines = ["*HEADING", "Random load path (tests/stress/plastic_paths.py)", behavior.rstrip()]
+    for step, target in enumerate(targets, start=1):
+        lines += [f"*STEP, NAME=S{step}", "*STATIC", f"{initial_increment}, 1.0", "*BOUNDARY"]
+        for k, dof in enumerate(dofs):
+            lines.append(f"2, {dof}, {dof}, {target[k] * scale[k]:.10g}")
+        lines.append("*END STEP")
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def run_path(clinch, deck, out):
+    proc = subprocess.run([clinch, "run", "--quiet", "--out", out, deck],
+                          stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    job = os.path.splitext(os.path.basename(deck))[0]
+    sta = os.path.join(out, job + ".sta")
+    log = os.path.join(out, job + ".log")
+    last = ""
+    per_increment = []
+    if os.path.exists(sta):
+        with open(sta) as f:
+            rows = [line.rstrip("\n") for line in f if line.strip()]
+        last = rows[-1] if rows else ""
+        for row in rows[1:]:
+            fields = row.split()
+            # "step inc att [U] equil total times...": an attempt that was cut back carries U
+            # and has nine fields; a converged one has eight.
+            if len(fields) == 8 and fields[0].isdigit():
+                per_increment.append(int(fields[3]))
+    cutbacks = iterations = increments = 0
+    if os.path.exists(log):
+        with open(log) as f:
+            text = f.read()
+        m = re.search(r"(\d+) increments, (\d+) iterations, (\d+) cutbacks", text)
+        if m:
+            increments, iterations, cutbacks = (int(g) for g in m.groups())
+    return proc.returncode, last, per_increment, increments, iterations, cutbacks, proc.stderr
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("clinch")
+    parser.add_argument("--paths", type=int, default=500)
+    parser.add_argument("--seed", type=int, default=20261201)
+    parser.add_argument("--work")
+    parser.add_argument("--min-rate", type=float, default=1.0)
+    args = parser.parse_args()
+    work = args.work or tempfile.mkdtemp(prefix="clinch-stress-")
+    os.makedirs(work, exist_ok=True)
+    rng = random.Random(args.seed)
+    problems = []
+    stats = {"spot_weld": [0, 0, 0, 0, 0, 0], "max": [0, 0, 0, 0, 0, 0]}
+    for n in range(args.paths):
+        kind = "spot_weld" if n % 2 == 0 else "max"
+        if kind == "spot_weld":
+            behavior, dofs, scale, dim = SPOT_WELD_BEHAVIOR, [1, 2, 3, 4, 5, 6], SPOT_WELD_SCALE, 6
+        else:
+            behavior, dofs, scale, dim = MAX_BEHAVIOR, [1, 2, 3], MAX_SCALE, 3
+        deck = os.path.join(work, f"path{n:04d}.inp")
+        write_deck(deck, behavior, dofs, scale, random_path(rng, dim), rng.choice([0.1, 0.25, 0.5]))
+        code, last, per_inc, incs, its, cuts, err = run_path(args.clinch, deck,
+                                                            os.path.join(work, "out"))
+        s = stats[kind]
+        s[0] += 1
+        if code == 0 and last == "COMPLETED":
+            s[1] += 1
+        elif code == 2 and last.startswith("FAILED:"):
+            pass
+        else:
+            problems.append(f"{deck}: exit {code}, last status line {last!r}, stderr {err[-300:]!r}")
+        s[2] += incs
+        s[3] += its
+        s[4] += cuts
+        s[5] = max(s[5], max(per_inc, default=0))
+    total = sum(s[0] for s in stats.values())
+    converged = sum(s[1] for s in stats.values())
+    print(f"{total} paths (seed {args.seed}), work directory {work}")
+    for kind, s in stats.items():
+        mean = s[3] / s[2] if s[2] else 0.0
+        print(f"  {kind:9s}: {s[1]}/{s[0]} converged, {s[2]} increments, "
+              f"{mean:.2f} Newton iterations per increment (max {s[5]}), {s[4]} cutbacks")
+    rate = converged / total if total else 0.0
+    print(f"  convergence rate {rate:.4f}")
+    for p in problems:
+        print("PROBLEM:", p)
+    if not args.work and not problems and rate >= args.min_rate:
+        shutil.rmtree(work, ignore_errors=True)
+    if problems or rate < args.min_rate:
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
