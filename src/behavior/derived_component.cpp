@@ -3,6 +3,7 @@
 // added on the listed components only.
 #include "src/behavior/derived_component.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -64,7 +65,7 @@ double DerivedComponent::evaluate_into(const Vector6& c, Vector6* gradient, Matr
   double m = 0;
   for (const Term& t : terms_) {
     for (int j = 0; j < t.count; ++j) {
-      m = std::fmax(m, std::fabs(t.coefficient[static_cast<std::size_t>(j)] *
+      m = std::max(m, std::fabs(t.coefficient[static_cast<std::size_t>(j)] *
                                  c[t.slot[static_cast<std::size_t>(j)]]));
     }
   }
@@ -74,7 +75,7 @@ double DerivedComponent::evaluate_into(const Vector6& c, Vector6* gradient, Matr
   // "smooth"), so a sum-type (linear) potential has the same gradient at c = 0 as elsewhere.
   // This reading is a clinch choice.
   const double zero = kZeroTolerance * m;
-  const double inv_m = m > 0 ? 1.0 / m : 0.0;
+  const double inv_m = m > 0 && has_norm_term_ ? 1.0 / m : 0.0;
 
   double value = 0;
   for (const Term& t : terms_) {
