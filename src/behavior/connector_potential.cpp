@@ -14,6 +14,7 @@
 // F'·ĝ_i·∇²E_i of the derived components (chain rule of §2.4), so no full 6×6 product is formed.
 #include "src/behavior/connector_potential.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -181,7 +182,7 @@ double ConnectorPotential::evaluate_sum(const Vector6& c, PotentialValue* out, W
                                  : derived_[static_cast<std::size_t>(k.derived)].evaluate_into(
                                        c, derivatives ? &w[i].grad : nullptr, nullptr, 0.0);
     w[i].x = (e - k.shift) / k.scale;
-    m = std::fmax(m, std::fabs(w[i].x));
+    m = std::max(m, std::fabs(w[i].x));
   }
   const double zero = kZeroTolerance * m;
   const double lambda = homogeneous_ && m > 0 ? m : 1.0;
@@ -260,8 +261,10 @@ double ConnectorPotential::evaluate_sum(const Vector6& c, PotentialValue* out, W
       f = -root(-s);
       if (out) out->negative_base = true;
     }
-    f1 = inverse_beta_ * f / s;
-    f2 = (inverse_beta_ - 1.0) * f1 / s;
+    if (out) {
+      f1 = inverse_beta_ * f / s;
+      f2 = (inverse_beta_ - 1.0) * f1 / s;
+    }
   }
   const double value = lambda * f;
   if (!out) return value;
@@ -330,7 +333,7 @@ double ConnectorPotential::evaluate_max(const Vector6& c, PotentialValue* out, W
     const double e = k.slot >= 0 ? c[k.slot]
                                  : derived_[static_cast<std::size_t>(k.derived)].value(c);
     x[i] = (e - k.shift) / k.scale;
-    m = std::fmax(m, std::fabs(x[i]));
+    m = std::max(m, std::fabs(x[i]));
   }
   const double zero = kZeroTolerance * m;
 

@@ -3,6 +3,8 @@
 // added on the listed components only.
 #include "src/behavior/derived_component.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -63,16 +65,21 @@ double DerivedComponent::evaluate_into(const Vector6& c, Vector6* gradient, Matr
   double m = 0;
   for (const Term& t : terms_) {
     for (int j = 0; j < t.count; ++j) {
-      m = std::fmax(m, std::fabs(t.coefficient[static_cast<std::size_t>(j)] *
+      m = std::max(m, std::fabs(t.coefficient[static_cast<std::size_t>(j)] *
                                  c[t.slot[static_cast<std::size_t>(j)]]));
     }
   }
-  // §1.4: m = 0 means every y_j is zero, so every term and its derivatives are zero.
-  if (m == 0) return 0;
+  // §1.4: m = 0 means every y_j is zero, so every term is zero and the NORM and MACAULEY SUM
+  // terms have zero derivatives. A SUM term keeps its constant gradient: "everything is zero"
+  // is there to avoid forming 1/r from round-off, and a SUM term has no kink (§1.4 table:
+  // "smooth"), so a sum-type (linear) potential has the same gradient at c = 0 as elsewhere.
+  // This reading is a clinch choice.
   const double zero = kZeroTolerance * m;
+  const double inv_m = m > 0 && has_norm_term_ ? 1.0 / m : 0.0;
 
   double value = 0;
   for (const Term& t : terms_) {
+    if (m == 0 && t.op != DerivedOperator::Sum) continue;
     const auto& k = t.slot;
     const auto& C = t.coefficient;
     switch (t.op) {
@@ -107,28 +114,30 @@ double DerivedComponent::evaluate_into(const Vector6& c, Vector6* gradient, Matr
           if (gradient) (*gradient)[k[0]] += y > 0 ? t.sign * C[0] : -t.sign * C[0];
           break;
         }
-        std::array<double, 6> y{};
+        // Scaled by 1/m so that the squares neither overflow nor underflow: r = m·ρ.
+        std::array<double, 6> z{};
         double rr = 0;
         for (int j = 0; j < t.count; ++j) {
           const auto jj = static_cast<std::size_t>(j);
-          y[jj] = C[jj] * c[k[jj]];
-          rr += y[jj] * y[jj];
+          z[jj] = C[jj] * c[k[jj]] * inv_m;
+          rr += z[jj] * z[jj];
         }
-        const double r = std::sqrt(rr);
+        const double rho = std::sqrt(rr);
+        const double r = m * rho;
         // r = 0 (relative): value, gradient and Hessian 0, the minimum-norm subgradient (§1.4).
-        if (r <= zero) break;
+        if (rho <= kZeroTolerance) break;
         value += t.sign * r;
         if (!gradient && !hessian) break;
-        const double inv_r = 1.0 / r;
+        const double inv_rho = 1.0 / rho;
         std::array<double, 6> v{};  // ∂r/∂c_{k_j} = C_j·y_j/r
         for (int j = 0; j < t.count; ++j) {
           const auto jj = static_cast<std::size_t>(j);
-          v[jj] = C[jj] * y[jj] * inv_r;
+          v[jj] = C[jj] * z[jj] * inv_rho;
           if (gradient) (*gradient)[k[jj]] += t.sign * v[jj];
         }
         if (hessian) {
           // ∂²T/∂c_{k_i}∂c_{k_j} = (s/r)(C_i C_j δ_ij − v_i v_j) (§1.4).
-          const double w = weight * t.sign * inv_r;
+          const double w = weight * t.sign * inv_rho * inv_m;  // weight·s/r
           for (int i = 0; i < t.count; ++i) {
             const auto ii = static_cast<std::size_t>(i);
             (*hessian)(k[ii], k[ii]) += w * (C[ii] * C[ii] - v[ii] * v[ii]);
