@@ -7,6 +7,7 @@
 // are ever read.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -21,6 +22,9 @@ struct PotentialValue {
   Vector6 gradient = Vector6::Zero();  // ∂P/∂c
   Matrix6 hessian = Matrix6::Zero();   // ∂²P/∂c² (filled only when asked for)
   int active = -1;  // MAX: the maximising contribution (lowest index among ties, §2.5); SUM: −1
+  // SUM: the base S = Σ s_i P_i^α_i was negative and 1/β is not an integer, so P is the odd
+  // extension sgn(S)·|S|^(1/β) of §2.3. The owner warns once per element when it sees this.
+  bool negative_base = false;
 };
 
 class ConnectorPotential {
@@ -44,18 +48,39 @@ class ConnectorPotential {
   ContributionType type() const { return type_; }
 
  private:
+  // How x^α (or S^(1/β)) is formed: the common exponents without std::pow (§5 performance).
+  enum class PowerKind : std::uint8_t { One, ThreeHalves, Two, Integer, General };
+  // What evaluate fills: the value only, or also the gradient, or also the Hessian.
+  enum class Want : std::uint8_t { Value, Gradient, Hessian };
+
   struct Contribution {
     int slot = -1;        // intrinsic component − 1, or −1 for a derived component
     int derived = -1;     // index into derived_
+    double scale = 1.0;   // R_i (X_i is formed by division, so that equal ratios tie exactly)
     double inverse_scale = 1.0;  // 1/R_i
     double alpha = 2.0, shift = 0.0, sign = 1.0;
     PotentialFunction function = PotentialFunction::Abs;
+    PowerKind power = PowerKind::Two;  // of α_i
+    int integer_alpha = 2;             // α_i when power == Integer
+    int slot_count = 0;                // the components E_i depends on
+    std::array<std::int8_t, 6> slots{};
   };
+
+  double evaluate_sum(const Vector6& c, PotentialValue* out, Want want) const;
+  double evaluate_max(const Vector6& c, PotentialValue* out, Want want) const;
+
   std::vector<Contribution> contributions_;
   std::vector<DerivedComponent> derived_;
   PotentialOperator op_ = PotentialOperator::Sum;
   double beta_ = 2.0;
+  double inverse_beta_ = 0.5;
+  PowerKind root_ = PowerKind::Two;  // of β, for S^(1/β)
+  int integer_beta_ = 2;
+  bool inverse_beta_is_integer_ = false;  // S^(1/β) is real for S < 0 (§2.3)
+  bool homogeneous_ = true;               // every α_i = β: the scaled path of §2.4
   ComponentMask components_ = 0;
+  int slot_count_ = 0;
+  std::array<std::int8_t, 6> slots_{};  // the components of §2.8, in increasing order
   ContributionType type_ = ContributionType::Norm;
 };
 

@@ -11,6 +11,7 @@
 
 #include "src/linalg/small_types.hpp"
 #include "src/model/behavior_model.hpp"
+#include "src/model/section_model.hpp"
 
 namespace clinch {
 
@@ -31,6 +32,13 @@ class DerivedComponent {
   bool has_hessian() const { return has_norm_term_; }  // only NORM terms have curvature
 
  private:
+  friend class ConnectorPotential;
+
+  // The work of evaluate for a caller that owns the output: `gradient` (when not null) is
+  // overwritten, and `weight`·∂²g/∂c² is added to `hessian` (when not null) on the listed
+  // components only. The potential's chain rule (§2.4) adds n_i·∇²E_i this way.
+  double evaluate_into(const Vector6& c, Vector6* gradient, Matrix6* hessian, double weight) const;
+
   struct Term {
     DerivedOperator op = DerivedOperator::Norm;
     double sign = 1.0;
