@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <utility>
 
 #include "src/behavior/coupled_return_mapping.hpp"
 
@@ -162,6 +161,19 @@ SolveResult solve(const Context& c, const ActiveSet& set, Iterate buffers[2], in
   return converged(c, set, buffers[cur]) ? SolveResult::Converged : SolveResult::Failed;
 }
 
+// Insertion sort of the (at most six) active surfaces by index: data-line order keeps the
+// parallel-normal tie rule and the iteration deterministic.
+void sort_by_index(ActiveSet& set) {
+  for (int i = 1; i < set.size; ++i) {
+    const int v = set.surface[static_cast<std::size_t>(i)];
+    int j = i - 1;
+    for (; j >= 0 && set.surface[static_cast<std::size_t>(j)] > v; --j) {
+      set.surface[static_cast<std::size_t>(j + 1)] = set.surface[static_cast<std::size_t>(j)];
+    }
+    set.surface[static_cast<std::size_t>(j + 1)] = v;
+  }
+}
+
 void remove_at(ActiveSet& set, int position) {
   for (int j = position; j + 1 < set.size; ++j) {
     set.surface[static_cast<std::size_t>(j)] = set.surface[static_cast<std::size_t>(j + 1)];
@@ -206,21 +218,26 @@ CoupledReturn multi_surface_return(const ElasticSpace& space, const ConnectorPot
   // J = {i : φ_i^tr > 0}. When more than six are violated the most violated ones are kept.
   ActiveSet set;
   PotentialValue pv;
-  std::array<std::pair<double, int>, 16> violated{};
-  int violated_count = 0;
-  for (int i = 0; i < count && violated_count < static_cast<int>(violated.size()); ++i) {
+  std::array<double, kMaxActive> excess{};
+  for (int i = 0; i < count; ++i) {
     potential.evaluate_contribution(i, trial, pv, false);
     const double phi = pv.value - yield_old;
-    if (phi > 0) violated[static_cast<std::size_t>(violated_count++)] = {-phi, i};
+    if (!(phi > 0)) continue;
+    if (set.size < kMaxActive) {
+      excess[static_cast<std::size_t>(set.size)] = phi;
+      set.surface[static_cast<std::size_t>(set.size++)] = i;
+      continue;
+    }
+    // Full: replace the least violated surface if this one is more violated.
+    const auto least = std::min_element(excess.begin(), excess.end()) - excess.begin();
+    if (phi > excess[static_cast<std::size_t>(least)]) {
+      excess[static_cast<std::size_t>(least)] = phi;
+      set.surface[static_cast<std::size_t>(least)] = i;
+    }
   }
-  if (violated_count == 0) return out;
+  if (set.size == 0) return out;
   out.plastic = true;
-  std::sort(violated.begin(), violated.begin() + violated_count);
-  for (int k = 0; k < violated_count && set.size < kMaxActive; ++k) {
-    set.surface[static_cast<std::size_t>(set.size++)] =
-        violated[static_cast<std::size_t>(k)].second;
-  }
-  std::sort(set.surface.begin(), set.surface.begin() + set.size);
+  sort_by_index(set);
   const Context c{space, potential, yield, trial, equivalent_old,
                   (space.compliance * trial).norm(), yield_old};
   while (drop_parallel(c, set, trial)) {
@@ -273,7 +290,7 @@ CoupledReturn multi_surface_return(const ElasticSpace& space, const ConnectorPot
     }
     if (set.size == kMaxActive) break;
     set.surface[static_cast<std::size_t>(set.size++)] = worst;
-    std::sort(set.surface.begin(), set.surface.begin() + set.size);
+    sort_by_index(set);
   }
   if (!done) {
     // The cutting plane follows the maximising contribution (§6.4 step 3 as the fallback).
