@@ -490,6 +490,40 @@ TEST(PlasticReturn, MaxRandomTrialsConvergeIncludingCorners) {
   EXPECT_GT(faces, 100);
 }
 
+// -------------------------------------------------------- coupled K, one uncoupled plasticity
+
+// §6.3 last paragraph: with a coupled D and one uncoupled plastic component the flow is s e_1;
+// then F = F^tr − sΔλ K e_1 and the scalar equation is that of §6.3 with k = K_11.
+TEST(PlasticCoupledElasticity, OneUncoupledComponentFlowsAlongE1) {
+  auto p = make_law(
+      "*CONNECTOR ELASTICITY\n"
+      "1000., 200., 500., 0., 0., 800., 0., 0.\n"
+      "0., 0., 0., 0., 0., 0., 0., 0.\n"
+      "0., 0., 0., 0., 0.\n"
+      "*CONNECTOR PLASTICITY, COMPONENT=1\n"
+      "*CONNECTOR HARDENING, TYPE=ISOTROPIC\n"
+      "10., 0.\n"
+      "20., 0.1\n"
+      "*CONNECTOR HARDENING, TYPE=KINEMATIC, DEFINITION=PARAMETERS\n"
+      "10., 300., 5.\n",
+      kCartesian);
+  Driver d(*p->law);
+  const Vector6 u = vec(0.02, 0.01, 0.005);
+  d.expect_fd_tangent(u, 0.01, 1000, kCartesian);
+  const Evaluation e = d.step(u);
+  const BehaviorState s = d.state();
+  Matrix6 k = Matrix6::Zero();
+  k.topLeftCorner<3, 3>() << 1000, 200, 0, 200, 500, 0, 0, 0, 800;
+  // Only component 1 flows, and F = K (u − u^pl) holds exactly.
+  EXPECT_EQ(s.plastic_motion[1], 0.0);
+  EXPECT_GT(s.plastic_motion[0], 0.0);
+  EXPECT_LE((k * (u - s.plastic_motion) - e.out.force).norm(), 1e-10);
+  // Yield condition |F_1 − α_1| = F_y(ū).
+  const double ubar = s.equivalent_plastic[0];
+  EXPECT_NEAR(std::abs(e.out.force[0] - s.back_force[0]), 10 + 100 * ubar, 1e-10);
+  d.expect_fd_tangent(vec(0.03, 0.0, 0.01), 0.01, 1000, kCartesian);  // continued yielding
+}
+
 // ------------------------------------------------------------------------------- factory
 
 TEST(PlasticBehavior, WithoutPlasticityTheElasticLawIsReturned) {
