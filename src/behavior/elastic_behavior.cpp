@@ -62,18 +62,12 @@ class UncoupledElasticBehavior final : public Behavior {
   std::vector<NonlinearComponent> nonlinear_;
 };
 
-// Coupled linear elasticity (§4.3): f = D u over the available components. Rows and columns of
-// unavailable components are zeroed once here, which is the restriction the spec asks for.
+// Coupled linear elasticity (§4.3): f = D u over the available components (D restricted by
+// linear_stiffness).
 class CoupledElasticBehavior final : public Behavior {
  public:
-  CoupledElasticBehavior(const Stiffness6& d, ComponentMask available) : mask_(available) {
-    for (int i = 0; i < 6; ++i) {
-      for (int j = 0; j < 6; ++j) {
-        const bool kept = has_component(available, i + 1) && has_component(available, j + 1);
-        d_(i, j) = kept ? d[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] : 0.0;
-      }
-    }
-  }
+  CoupledElasticBehavior(const Matrix6& d, ComponentMask available)
+      : d_(d), mask_(available) {}
 
   ComponentMask components() const override { return mask_; }
   int history_size() const override { return 0; }
@@ -120,10 +114,34 @@ std::unique_ptr<Behavior> make_elastic_behavior(const ConnectorBehavior& behavio
       throw std::invalid_argument("coupled and uncoupled connector elasticity in one behaviour");
     }
     if (available == 0) return nullptr;
-    return std::make_unique<CoupledElasticBehavior>(coupled->coupled, available);
+    return std::make_unique<CoupledElasticBehavior>(linear_stiffness(behavior, available).k,
+                                                    available);
   }
   if (uncoupled->empty()) return nullptr;
   return uncoupled;
+}
+
+LinearStiffness linear_stiffness(const ConnectorBehavior& behavior, ComponentMask available) {
+  LinearStiffness out;
+  for (const ConnectorElasticity& e : behavior.elasticities) {
+    if (e.kind == Kind::Linear && has_component(available, e.component)) {
+      out.k(e.component - 1, e.component - 1) = e.stiffness;
+      out.components |= component_bit(e.component);
+    } else if (e.kind == Kind::Coupled) {
+      // Rows and columns of unavailable components are dropped: the restriction of §4.3.
+      out.coupled = true;
+      out.components |= available;
+      for (int i = 0; i < 6; ++i) {
+        for (int j = 0; j < 6; ++j) {
+          const bool kept = has_component(available, i + 1) && has_component(available, j + 1);
+          const double d = e.coupled[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)];
+          out.k(i, j) = kept ? d : 0.0;
+          if (kept && i != j && d != 0.0) out.diagonal = false;
+        }
+      }
+    }
+  }
+  return out;
 }
 
 ComponentMask rigid_components(const ConnectorBehavior& behavior, ComponentMask available) {

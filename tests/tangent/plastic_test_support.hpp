@@ -1,0 +1,116 @@
+// Test support for connector plasticity: a behaviour built from deck text through the whole
+// reader, and a driver that integrates it increment by increment (commit = copy the trial history
+// to the committed one), with the finite-difference tangent check of behaviors.md §1.4.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "parser/deck_reader.hpp"
+#include "src/behavior/elastic_plastic_behavior.hpp"
+#include "tests/unit/checked_deck.hpp"
+
+namespace clinch {
+
+inline Vector6 vec(double a, double b = 0, double c = 0, double d = 0, double e = 0,
+                   double f = 0) {
+  Vector6 v;
+  v << a, b, c, d, e, f;
+  return v;
+}
+
+struct PlasticLaw {
+  CheckedDeck deck;
+  std::unique_ptr<Behavior> law;
+};
+
+// `body` follows "*CONNECTOR BEHAVIOR, NAME=B"; the law acts on the components in `available`.
+inline std::unique_ptr<PlasticLaw> make_law(const std::string& body, ComponentMask available) {
+  auto p = std::make_unique<PlasticLaw>();
+  read_deck_text("b.inp", "*CONNECTOR BEHAVIOR, NAME=B\n" + body, p->deck.sources, p->deck.model,
+                 p->deck.sink);
+  // A behaviour block alone: the only error expected is that the deck has no *STEP.
+  for (const Diagnostic& d : p->deck.sink.diagnostics()) {
+    if (d.code != DiagCode::no_step) {
+      EXPECT_NE(d.severity, Severity::Error) << p->deck.dump();
+    }
+  }
+  p->law = make_connector_behavior(p->deck.model.behaviors.behaviors.at(0), available);
+  return p;
+}
+
+struct Evaluation {
+  IntegrationStatus status = IntegrationStatus::Failure;
+  BehaviorOutput out;
+  std::vector<double> history;
+};
+
+// Integrates one element's law; `commit` makes the last trial state the converged one.
+class Driver {
+ public:
+  explicit Driver(const Behavior& law)
+      : law_(law), committed_(static_cast<std::size_t>(law.history_size()), 0.0) {}
+
+  Evaluation evaluate(const Vector6& u, TangentRequest t = TangentRequest::Consistent) const {
+    Evaluation e;
+    // The caller does not pre-fill history_new: NaN catches a slot the law forgets to write.
+    e.history.assign(committed_.size(), std::nan(""));
+    e.out.history_new = e.history;
+    const Vector6 increment = u - motion_;
+    const BehaviorInput in{motion_, increment, 0.0, 0.0, committed_, t};
+    e.status = law_.integrate(in, e.out);
+    return e;
+  }
+  // Integrates to `u` and commits; returns the converged evaluation.
+  Evaluation step(const Vector6& u) {
+    Evaluation e = evaluate(u);
+    EXPECT_EQ(e.status, IntegrationStatus::Success) << e.out.message;
+    for (double h : e.history) EXPECT_FALSE(std::isnan(h));
+    committed_ = e.history;
+    motion_ = u;
+    return e;
+  }
+  BehaviorState state() const {
+    BehaviorState s;
+    law_.describe_state(committed_, s);
+    return s;
+  }
+  const Vector6& motion() const { return motion_; }
+
+  // §1.4: D_fd[:, j] = (f(u + h e_j) − f(u − h e_j))/(2h), h = 1e-6·max(|u|_∞, u_s), every
+  // evaluation from the committed history; pass when max|D − D_fd| ≤ 1e-5·max|D| + 1e-8·k_s.
+  void expect_fd_tangent(const Vector6& u, double u_s, double k_s, ComponentMask mask) const {
+    const Evaluation at = evaluate(u);
+    ASSERT_EQ(at.status, IntegrationStatus::Success) << at.out.message;
+    const double h = 1e-6 * std::max(u.cwiseAbs().maxCoeff(), u_s);
+    Matrix6 fd = Matrix6::Zero();
+    for (int j = 0; j < 6; ++j) {
+      if (!has_component(mask, j + 1)) continue;
+      Vector6 plus = u, minus = u;
+      plus[j] += h;
+      minus[j] -= h;
+      const Evaluation ep = evaluate(plus), em = evaluate(minus);
+      ASSERT_EQ(ep.status, IntegrationStatus::Success);
+      ASSERT_EQ(em.status, IntegrationStatus::Success);
+      fd.col(j) = (ep.out.force - em.out.force) / (2 * h);
+    }
+    const Matrix6& d = at.out.tangent;
+    const double error = (d - fd).cwiseAbs().maxCoeff();
+    EXPECT_LE(error, 1e-5 * d.cwiseAbs().maxCoeff() + 1e-8 * k_s)
+        << "u = " << u.transpose() << "\nanalytic:\n"
+        << d << "\nfinite difference:\n"
+        << fd;
+  }
+
+ private:
+  const Behavior& law_;
+  std::vector<double> committed_;
+  Vector6 motion_ = Vector6::Zero();
+};
+
+}  // namespace clinch
