@@ -2,8 +2,11 @@
 
 Each path is one deck: a spot weld (BUSHING, the elliptical potential of
 derived-components-and-potentials.md section 3 with beta = 1.5) or a MAX potential (CARTESIAN,
-a square truncated by a circle, so that returns land on corners and edges; behaviors.md 6.6),
-driven by prescribed motions of node b over several steps. Steps mix proportional loading,
+a square truncated by a circle, so that returns land on corners and edges; behaviors.md 6.6)
+between a fixed node 1 and a free node 2, driven through an elastic connector of the same
+stiffness from node 3, whose motions are prescribed over several steps. Node 2 is free, so
+Newton iterates on it with the plastic consistent tangent; the elastic connector in series keeps
+every path solvable even where the hardening table ends (perfect plasticity). Steps mix proportional loading,
 reversals, crossings of f3 = 0 (the Macaulay kink of the spot weld's normal measure) and random
 non-proportional moves. Increments are automatic, so cutbacks are allowed and counted.
 
@@ -32,13 +35,32 @@ or_s = 1.0/r_s
 *NODE
 1, 0., 0., 0.
 2, 0., 0., 0.
+3, 0., 0., 0.
 *ELEMENT, TYPE=CONN3D2, ELSET=WELD
 1, 1, 2
+*ELEMENT, TYPE=CONN3D2, ELSET=DRIVE
+2, 3, 2
 *ORIENTATION, NAME=GLOBAL
 1., 0., 0., 0., 1., 0.
 *CONNECTOR SECTION, ELSET=WELD, BEHAVIOR=weld
 BUSHING,
 GLOBAL
+*CONNECTOR SECTION, ELSET=DRIVE, BEHAVIOR=drive
+BUSHING,
+GLOBAL
+*CONNECTOR BEHAVIOR, NAME=drive
+*CONNECTOR ELASTICITY, COMPONENT=1
+1.0e5
+*CONNECTOR ELASTICITY, COMPONENT=2
+1.0e5
+*CONNECTOR ELASTICITY, COMPONENT=3
+2.0e5
+*CONNECTOR ELASTICITY, COMPONENT=4
+1.0e6
+*CONNECTOR ELASTICITY, COMPONENT=5
+1.0e6
+*CONNECTOR ELASTICITY, COMPONENT=6
+5.0e5
 *CONNECTOR BEHAVIOR, NAME=weld
 *CONNECTOR ELASTICITY, COMPONENT=1
 1.0e5
@@ -79,10 +101,22 @@ shear,  0.05, , ABS, ,
 MAX_BEHAVIOR = """*NODE
 1, 0., 0., 0.
 2, 0., 0., 0.
+3, 0., 0., 0.
 *ELEMENT, TYPE=CONN3D2, ELSET=WELD
 1, 1, 2
+*ELEMENT, TYPE=CONN3D2, ELSET=DRIVE
+2, 3, 2
 *CONNECTOR SECTION, ELSET=WELD, BEHAVIOR=box
 CARTESIAN,
+*CONNECTOR SECTION, ELSET=DRIVE, BEHAVIOR=drive
+CARTESIAN,
+*CONNECTOR BEHAVIOR, NAME=drive
+*CONNECTOR ELASTICITY, COMPONENT=1
+1000.
+*CONNECTOR ELASTICITY, COMPONENT=2
+1500.
+*CONNECTOR ELASTICITY, COMPONENT=3
+800.
 *CONNECTOR BEHAVIOR, NAME=box
 *CONNECTOR ELASTICITY, COMPONENT=1
 1000.
@@ -103,12 +137,14 @@ radial, 120., , ABS, ,
 1, 2
 1.0, 1.0
 *BOUNDARY
-1, 1, 3
+1, 1, 6
+3, 4, 6
 """
 
-# Motion scales: about three times the first-yield motion of each component.
-SPOT_WELD_SCALE = [0.03, 0.03, 0.012, 0.003, 0.003, 0.006]
-MAX_SCALE = [0.3, 0.2, 0.3]
+# Motion scales of node 3: about six times the first-yield motion of each component of the weld
+# (the series connector takes half of the motion while the weld is elastic).
+SPOT_WELD_SCALE = [0.06, 0.06, 0.024, 0.006, 0.006, 0.012]
+MAX_SCALE = [0.6, 0.4, 0.6]
 
 
 def random_path(rng, dimension):
@@ -139,7 +175,7 @@ def write_deck(path, behavior, dofs, scale, targets, initial_increment):
     for step, target in enumerate(targets, start=1):
         lines += [f"*STEP, NAME=S{step}", "*STATIC", f"{initial_increment}, 1.0", "*BOUNDARY"]
         for k, dof in enumerate(dofs):
-            lines.append(f"2, {dof}, {dof}, {target[k] * scale[k]:.10g}")
+            lines.append(f"3, {dof}, {dof}, {target[k] * scale[k]:.10g}")
         lines.append("*END STEP")
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")

@@ -224,13 +224,14 @@ TEST(AssembledTangent, NewtonConvergesQuadraticallyOnLoadControlledCoupledPlasti
       "*CONNECTOR ELASTICITY, COMPONENT=1\n1000.\n*CONNECTOR ELASTICITY, COMPONENT=2\n1000.\n"
       "*CONNECTOR ELASTICITY, COMPONENT=3\n1000.\n*CONNECTOR PLASTICITY\n"
       "*CONNECTOR HARDENING, TYPE=ISOTROPIC\n100., 0.\n300., 1.\n"
-      "*CONNECTOR POTENTIAL\n1, 1.\n2, 2.\n*BOUNDARY\n1, 1, 3\n"
+      "*CONNECTOR POTENTIAL\n1, 1.\n2, 2.\n*BOUNDARY\n1, 1, 6\n"
       "*STEP\n*STATIC\n*END STEP\n");
   ASSERT_TRUE(a->system);
   ConnectorSystem& s = *a->system;
   const DofMap& dofs = a->plan->dofs;
   s.clear_conditions();
-  for (int dof = 1; dof <= 3; ++dof) s.prescribe(dofs.equation(0, dof), 0.0);
+  // CARTESIAN activates the rotations of node a (connection-types.md §1.1): hold them too.
+  for (int dof = 1; dof <= 6; ++dof) s.prescribe(dofs.equation(0, dof), 0.0);
   s.add_load(dofs.equation(1, 1), 120.0);
   s.add_load(dofs.equation(1, 2), 150.0);
   s.start_increment(0.0);
