@@ -66,6 +66,8 @@ def deck_text(template, increments):
     for line in template.splitlines():
         if line.strip().replace(" ", "").startswith("0.2,1."):
             line = f"{1.0 / increments!r}, 1."
+        elif line.upper().startswith("*STEP,"):
+            line = line + f", INC={max(100, increments)}"
         out.append(line)
     return "\n".join(out) + "\n"
 

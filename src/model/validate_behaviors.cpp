@@ -201,6 +201,19 @@ class BehaviorChecker {
       }
       hardening(p);
     }
+    if (coupled >= 0 && uncoupled_count > 0 && coupled_offdiagonal()) {
+      // §6.3–§6.4: with a non-diagonal D the two returns would move each other's forces.
+      for (int slot : uncoupled_of) {
+        if (slot < 0) continue;
+        Diagnostic& d = sink_.report(
+            DiagCode::unsupported_option, b_.plasticities[static_cast<std::size_t>(slot)].loc,
+            "an uncoupled plasticity together with a coupled plasticity and a coupled "
+            "(non-diagonal) elasticity is not supported by clinch");
+        d.notes.push_back(
+            {b_.plasticities[static_cast<std::size_t>(coupled)].loc, "coupled plasticity is here"});
+        break;
+      }
+    }
     // §2: no component in both an uncoupled and the coupled plasticity.
     if (coupled < 0 || !coupled_components_) return;
     for (int c = 1; c <= 6; ++c) {

@@ -126,6 +126,8 @@ void run(benchmark::State& state, double lo, double hi) {
 
 // Motions of 2 to 20 times the first-yield motion along random rays: every update is plastic.
 void BM_SpotWeldPlasticUpdate(benchmark::State& state) { run(state, 2.0, 20.0); }
+void BM_SpotWeldNearYield(benchmark::State& state) { run(state, 1.05, 1.5); }
+BENCHMARK(BM_SpotWeldNearYield);
 // Motions of 1e-3 to 1e-2 of the first-yield motion: every update is elastic.
 void BM_SpotWeldElasticUpdate(benchmark::State& state) { run(state, 1e-3, 1e-2); }
 BENCHMARK(BM_SpotWeldPlasticUpdate);
