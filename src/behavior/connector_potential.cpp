@@ -147,7 +147,52 @@ ConnectorPotential ConnectorPotential::compile(const ConnectorBehavior& behavior
     out.contributions_.push_back(k);
   }
   mask_slots(out.components_, out.slots_, out.slot_count_);
+  out.collect_kink_groups();
   return out;
+}
+
+void ConnectorPotential::collect_kink_groups() {
+  if (op_ != PotentialOperator::Sum) return;
+  // How many contributions or terms list each component: a group is kept only when each of its
+  // components is listed once in the whole potential.
+  std::array<int, 6> listed{};
+  std::vector<KinkGroup> groups;
+  for (int i = 0; i < contribution_count(); ++i) {
+    const Contribution& k = contributions_[static_cast<std::size_t>(i)];
+    if (k.slot >= 0) {
+      ++listed[static_cast<std::size_t>(k.slot)];
+      continue;
+    }
+    for (const DerivedComponent::Term& t : derived_[static_cast<std::size_t>(k.derived)].terms_) {
+      for (int j = 0; j < t.count; ++j) ++listed[static_cast<std::size_t>(t.slot[j])];
+      if (i >= PotentialValue::kSlopedContributions) continue;
+      if (t.op == DerivedOperator::Norm) {
+        KinkGroup g;
+        g.contribution = i;
+        for (int j = 0; j < t.count; ++j) {
+          g.components = static_cast<ComponentMask>(g.components | (1u << t.slot[j]));
+          g.coefficient[t.slot[j]] = t.sign * t.coefficient[j];
+        }
+        groups.push_back(g);
+      } else if (t.op == DerivedOperator::MacauleySum) {
+        for (int j = 0; j < t.count; ++j) {
+          KinkGroup g;
+          g.contribution = i;
+          g.macauley = true;
+          g.components = static_cast<ComponentMask>(1u << t.slot[j]);
+          g.coefficient[t.slot[j]] = t.sign * t.coefficient[j];
+          groups.push_back(g);
+        }
+      }
+    }
+  }
+  for (const KinkGroup& g : groups) {
+    bool alone = true;
+    for (int a = 0; a < 6; ++a) {
+      if ((g.components >> a) & 1u) alone = alone && listed[static_cast<std::size_t>(a)] == 1;
+    }
+    if (alone) kink_groups_.push_back(g);
+  }
 }
 
 void ConnectorPotential::evaluate(const Vector6& c, PotentialValue& out, bool hessian) const {
@@ -231,6 +276,7 @@ double ConnectorPotential::evaluate_sum(const Vector6& c, PotentialValue* out, W
     if (s_abs == 0 || std::fabs(s) <= kZeroTolerance * s_abs) {
       if (out) {
         out->gradient.setZero();
+        out->slope.fill(0.0);
         if (want == Want::Hessian) out->hessian.setZero();
       }
       return 0;
@@ -270,6 +316,9 @@ double ConnectorPotential::evaluate_sum(const Vector6& c, PotentialValue* out, W
   if (!out) return value;
 
   out->gradient = f1 * g_sum;
+  for (int i = 0; i < std::min(n, PotentialValue::kSlopedContributions); ++i) {
+    out->slope[static_cast<std::size_t>(i)] = f1 * w[i].g;
+  }
   if (want != Want::Hessian) return value;
 
   Matrix6& hess = out->hessian;

@@ -25,6 +25,24 @@ struct PotentialValue {
   // SUM: the base S = Σ s_i P_i^α_i was negative and 1/β is not an integer, so P is the odd
   // extension sgn(S)·|S|^(1/β) of §2.3. The owner warns once per element when it sees this.
   bool negative_base = false;
+  // SUM: n_i = ∂P/∂E_i of the first kSlopedContributions contributions (§2.4), which weigh the
+  // subdifferential of a kink group (KinkGroup).
+  static constexpr int kSlopedContributions = 8;
+  std::array<double, kSlopedContributions> slope{};
+};
+
+// A set of components on which a SUM potential has a kink when they are all zero while their
+// contribution is not: a NORM term or one component of a MACAULEY SUM term of a derived
+// component (derived-components-and-potentials.md §1.4). With the group at zero, the
+// subdifferential of P over its components is n_i·(C∘ζ) with ‖ζ‖ ≤ 1 (NORM) or ζ ∈ [0, 1]
+// (MACAULEY), C the term's coefficients (sign included) and n_i the slope of its contribution.
+// Only groups whose components appear nowhere else in the potential are listed, so that the
+// subdifferential is exactly that set; the plastic return uses them to hold a group at zero.
+struct KinkGroup {
+  ComponentMask components = 0;
+  bool macauley = false;
+  int contribution = 0;
+  Vector6 coefficient = Vector6::Zero();
 };
 
 class ConnectorPotential {
@@ -46,6 +64,7 @@ class ConnectorPotential {
   double exponent() const { return beta_; }
   ComponentMask components() const { return components_; }  // §2.8
   ContributionType type() const { return type_; }
+  const std::vector<KinkGroup>& kink_groups() const { return kink_groups_; }
 
  private:
   // How x^α (or S^(1/β)) is formed: the common exponents without std::pow (§5 performance).
@@ -67,6 +86,7 @@ class ConnectorPotential {
   };
 
   double evaluate_sum(const Vector6& c, PotentialValue* out, Want want) const;
+  void collect_kink_groups();
   double evaluate_max(const Vector6& c, PotentialValue* out, Want want) const;
 
   std::vector<Contribution> contributions_;
@@ -82,6 +102,7 @@ class ConnectorPotential {
   int slot_count_ = 0;
   std::array<std::int8_t, 6> slots_{};  // the components of §2.8, in increasing order
   ContributionType type_ = ContributionType::Norm;
+  std::vector<KinkGroup> kink_groups_;
 };
 
 }  // namespace clinch

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace clinch {
 namespace {
@@ -15,7 +16,8 @@ constexpr double kTolerance = 1e-12;             // §6.4 steps 2 and 3
 constexpr double kArmijo = 1e-4;
 
 // One iterate of the closest-point Newton: (F, Δλ), P and its derivatives at F, F_y and h at
-// ū_n + Δλ, the residuals of §6.4 and the merit.
+// ū_n + Δλ, the residuals of §6.4 and the merit. Components of `held` (collapsed kink groups)
+// are fixed at zero: their rows of R_F are dropped from the residual.
 struct Iterate {
   Vector6 force;
   double multiplier = 0;
@@ -31,13 +33,20 @@ struct Scales {
   double force;   // F_y(ū_n)
 };
 
+Vector6 mask_vector(ComponentMask mask) {
+  Vector6 v;
+  for (int i = 0; i < 6; ++i) v[i] = (mask >> i) & 1u ? 1.0 : 0.0;
+  return v;
+}
+
 void evaluate(const ElasticSpace& space, const ConnectorPotential& potential,
               const IsotropicHardeningLaw& yield, const Vector6& trial, double equivalent_old,
-              const Scales& scales, bool hessian, Iterate& it) {
+              const Scales& scales, bool hessian, ComponentMask held, Iterate& it) {
   potential.evaluate(it.force, it.potential, hessian);
   it.yield = yield.at(equivalent_old + it.multiplier);
   it.residual_force.noalias() = space.compliance * (it.force - trial);
   it.residual_force += it.multiplier * it.potential.gradient;
+  if (held) it.residual_force = it.residual_force.cwiseProduct(mask_vector(~held));
   it.residual_yield = it.potential.value - it.yield.value;
   // §6.4 asks for ‖R_F‖² + (R_λ/F_y)²; R_F is divided by its own stopping scale too, so that the
   // two terms are dimensionless and weighted as the stopping test weights them.
@@ -51,16 +60,77 @@ bool converged(const Iterate& it, const Scales& scales) {
          std::abs(it.residual_yield) <= kTolerance * it.yield.value;
 }
 
+// M = K⁻¹ + Δλ N2 with the rows and columns of `held` replaced by the identity, so that a solve
+// leaves those components where they are.
+Matrix6 reduced_jacobian(const ElasticSpace& space, const Matrix6& hessian, double multiplier,
+                         ComponentMask held) {
+  Matrix6 m = space.compliance;
+  if (multiplier > 0) m += multiplier * hessian;
+  for (int i = 0; i < 6; ++i) {
+    if (!((held >> i) & 1u)) continue;
+    m.row(i).setZero();
+    m.col(i).setZero();
+    m(i, i) = 1.0;
+  }
+  return m;
+}
+
+// A kink group crossed by the step from `from` to `to`: a NORM group whose resultant turns by
+// more than 90°, or a MACAULEY component that leaves the active side; both overshoot the kink at
+// zero, where the exact return may have to stop (derived-components-and-potentials.md §1.4).
+bool crosses(const KinkGroup& g, const Vector6& from, const Vector6& to) {
+  double before = 0, across = 0;
+  for (int i = 0; i < 6; ++i) {
+    if (!((g.components >> i) & 1u)) continue;
+    if (g.macauley) {
+      before = g.coefficient[i] * from[i];
+      across = g.coefficient[i] * to[i];
+    } else {
+      before += from[i] * from[i];
+      across += from[i] * to[i];
+    }
+  }
+  return before > 0 && across <= 0;
+}
+
+// With group `g` held at zero, the dropped rows of the flow rule, K⁻¹(F − F^tr) + Δλ ζ̃ = 0, need
+// ζ̃ in the subdifferential n_i·(C∘ζ), ‖ζ‖ ≤ 1 (NORM) or ζ ∈ [0, 1] (MACAULEY). False means the
+// exact return leaves the kink, and the group must be released.
+bool hold_is_admissible(const KinkGroup& g, const ElasticSpace& space, const Vector6& trial,
+                        const Iterate& it) {
+  const Vector6 r = space.compliance * (it.force - trial);
+  const double weight =
+      it.multiplier * it.potential.slope[static_cast<std::size_t>(g.contribution)];
+  constexpr double kSlack = 1e-9;
+  double zeta_sq = 0;
+  for (int i = 0; i < 6; ++i) {
+    if (!((g.components >> i) & 1u)) continue;
+    const double scale = weight * g.coefficient[i];
+    if (scale == 0) return std::abs(r[i]) <= kTolerance * space.compliance(i, i) * it.yield.value;
+    const double zeta = -r[i] / scale;
+    if (g.macauley) return zeta >= -kSlack && zeta <= 1.0 + kSlack;
+    zeta_sq += zeta * zeta;
+  }
+  return zeta_sq <= (1.0 + kSlack) * (1.0 + kSlack);
+}
+
 }  // namespace
 
 Matrix6 closest_point_tangent(const ElasticSpace& space, const Vector6& normal,
-                              const Matrix6& hessian, double multiplier, double hardening) {
-  Matrix6 m = space.compliance;
-  if (multiplier > 0) m += multiplier * hessian;
-  const Eigen::LLT<Matrix6> llt(m);
-  const Matrix6 a = llt.solve(Matrix6::Identity());
-  const Vector6 an = a * normal;
-  const double denominator = normal.dot(an) + hardening;
+                              const Matrix6& hessian, double multiplier, double hardening,
+                              ComponentMask held) {
+  const Eigen::LLT<Matrix6> llt(reduced_jacobian(space, hessian, multiplier, held));
+  Matrix6 a = llt.solve(Matrix6::Identity());
+  Vector6 n = normal;
+  if (held) {
+    // A held group stays at zero under a small change of u (its ζ is strictly admissible), so
+    // its rows and columns of the tangent vanish.
+    const Vector6 free = mask_vector(~held);
+    a = free.asDiagonal() * a * free.asDiagonal();
+    n = n.cwiseProduct(free);
+  }
+  const Vector6 an = a * n;
+  const double denominator = n.dot(an) + hardening;
   Matrix6 d = a;
   d.noalias() -= (an / denominator) * an.transpose();
   // Symmetric by construction; symmetrising removes the round-off of the solve.
@@ -78,27 +148,49 @@ CoupledReturn closest_point_return(const ElasticSpace& space, const ConnectorPot
   out.plastic = true;
 
   const Scales scales{(space.compliance * trial).norm(), yield_old};
+  const std::vector<KinkGroup>& groups = potential.kink_groups();
+  // Kink groups held at zero (an active set on the kinks of P): a group is collapsed when a
+  // Newton step overshoots it, and released when its subgradient condition fails at the
+  // converged state. Releases are bounded so that the set cannot cycle.
+  ComponentMask held = 0;
+  int releases = 0;
+  constexpr int kMaxReleases = 4;
   Iterate buffers[2];
   int cur = 0;
   buffers[cur].force = trial;
   buffers[cur].multiplier = 0;
   // At Δλ = 0 the Jacobian block is K⁻¹ alone, so the first iterate needs no Hessian.
-  evaluate(space, potential, yield, trial, equivalent_old, scales, false, buffers[cur]);
+  evaluate(space, potential, yield, trial, equivalent_old, scales, false, held, buffers[cur]);
 
   bool ok = false;
   for (int iteration = 0; iteration < kMaxNewtonIterations; ++iteration) {
-    const Iterate& it = buffers[cur];
+    Iterate& it = buffers[cur];
     if (converged(it, scales)) {
-      ok = true;
-      break;
+      ComponentMask released = 0;
+      if (releases < kMaxReleases) {
+        for (const KinkGroup& g : groups) {
+          if ((held & g.components) == g.components &&
+              !hold_is_admissible(g, space, trial, it)) {
+            released = static_cast<ComponentMask>(released | g.components);
+          }
+        }
+      }
+      if (!released) {
+        ok = true;
+        break;
+      }
+      ++releases;
+      held = static_cast<ComponentMask>(held & ~released);
+      evaluate(space, potential, yield, trial, equivalent_old, scales, true, held, it);
     }
     // Newton on [K⁻¹ + Δλ N2, n; nᵀ, −h] (§6.4) by the Schur complement of the symmetric 6×6
-    // block: a = M⁻¹ n, b = M⁻¹ R_F, δΔλ = (R_λ − nᵀ b)/(nᵀ a + h), δF = −b − a δΔλ.
-    Matrix6 m = space.compliance;
-    if (it.multiplier > 0) m += it.multiplier * it.potential.hessian;
-    const Eigen::LLT<Matrix6> llt(m);
+    // block: a = M⁻¹ n, b = M⁻¹ R_F, δΔλ = (R_λ − nᵀ b)/(nᵀ a + h), δF = −b − a δΔλ. Held
+    // components have identity rows and zero n and R_F, so their δF is 0.
+    const Eigen::LLT<Matrix6> llt(
+        reduced_jacobian(space, it.potential.hessian, it.multiplier, held));
     if (llt.info() != Eigen::Success) break;
-    const Vector6& n = it.potential.gradient;
+    const Vector6 n = held ? Vector6(it.potential.gradient.cwiseProduct(mask_vector(~held)))
+                           : it.potential.gradient;
     const Vector6 a = llt.solve(n);
     const Vector6 b = llt.solve(it.residual_force);
     const double schur = n.dot(a) + it.yield.slope;
@@ -112,7 +204,21 @@ CoupledReturn closest_point_return(const ElasticSpace& space, const ConnectorPot
     for (int halving = 0; halving <= kMaxHalvings; ++halving, t *= 0.5) {
       next.force = it.force + t * d_force;
       next.multiplier = std::max(0.0, it.multiplier + t * d_multiplier);  // project Δλ ≥ 0
-      evaluate(space, potential, yield, trial, equivalent_old, scales, true, next);
+      ComponentMask crossed = 0;
+      for (const KinkGroup& g : groups) {
+        if (!(held & g.components) && crosses(g, it.force, next.force)) {
+          crossed = static_cast<ComponentMask>(crossed | g.components);
+        }
+      }
+      if (crossed) {
+        // Stop the overshooting groups at their kink and go on with them held.
+        held = static_cast<ComponentMask>(held | crossed);
+        next.force = next.force.cwiseProduct(mask_vector(~held));
+        evaluate(space, potential, yield, trial, equivalent_old, scales, true, held, next);
+        accepted = true;
+        break;
+      }
+      evaluate(space, potential, yield, trial, equivalent_old, scales, true, held, next);
       if (next.merit <= (1.0 - kArmijo * t) * it.merit) {
         accepted = true;
         break;
@@ -132,7 +238,7 @@ CoupledReturn closest_point_return(const ElasticSpace& space, const ConnectorPot
     // lay on the surface to round-off, and then Δλ = 0 and the Hessian is not used.
     if (it.multiplier == 0) hessian.setZero();
     out.tangent = closest_point_tangent(space, it.potential.gradient, hessian, it.multiplier,
-                                        it.yield.slope);
+                                        it.yield.slope, held);
   }
   return out;
 }
@@ -168,7 +274,7 @@ CoupledReturn cutting_plane_return(const ElasticSpace& space, const ConnectorPot
   if (want_tangent) {
     potential.evaluate(force, pv, true);
     out.tangent = closest_point_tangent(space, pv.gradient, pv.hessian, multiplier,
-                                        yield.at(equivalent_old + multiplier).slope);
+                                        yield.at(equivalent_old + multiplier).slope, 0);
   }
   return out;
 }

@@ -1,7 +1,11 @@
 // Closest-point projection of a coupled connector plasticity with a SUM potential and isotropic
 // hardening (behaviors.md §6.4): Newton on (F, Δλ) with a backtracking line search and Δλ ≥ 0,
 // the cutting-plane algorithm as fallback, and the closed-form symmetric consistent tangent
-// D = A − (A n)(A n)ᵀ/(nᵀ A n + h), A = (K⁻¹ + Δλ N2)⁻¹.
+// D = A − (A n)(A n)ᵀ/(nᵀ A n + h), A = (K⁻¹ + Δλ N2)⁻¹. Where the exact return ends on a kink
+// of P (a NORM term or a Macaulay term of a derived component at zero while P > 0), the minimum-
+// norm subgradient of the spec cannot satisfy the flow rule; the return then holds that group at
+// zero and checks that the flow rule holds with an admissible subgradient (an active set on the
+// kinks), so the returned state is the exact closest point there too.
 #pragma once
 
 #include "src/behavior/connector_potential.hpp"
@@ -23,8 +27,10 @@ CoupledReturn cutting_plane_return(const ElasticSpace& space, const ConnectorPot
                                    const IsotropicHardeningLaw& yield, const Vector6& trial,
                                    double equivalent_old, bool want_tangent);
 
-// §6.4 step 5 at a converged state: D = A − (A n)(A n)ᵀ/(nᵀ A n + h), A = (K⁻¹ + Δλ N2)⁻¹.
+// §6.4 step 5 at a converged state: D = A − (A n)(A n)ᵀ/(nᵀ A n + h), A = (K⁻¹ + Δλ N2)⁻¹,
+// with A restricted to the components outside `held` (kink groups the return holds at zero).
 Matrix6 closest_point_tangent(const ElasticSpace& space, const Vector6& normal,
-                              const Matrix6& hessian, double multiplier, double hardening);
+                              const Matrix6& hessian, double multiplier, double hardening,
+                              ComponentMask held);
 
 }  // namespace clinch
