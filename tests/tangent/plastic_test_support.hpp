@@ -99,7 +99,11 @@ class Driver {
       ASSERT_EQ(em.status, IntegrationStatus::Success);
       fd.col(j) = (ep.out.force - em.out.force) / (2 * h);
     }
-    const Matrix6& d = at.out.tangent;
+    // Only the columns of `mask` are compared (the others have no finite difference).
+    Matrix6 d = at.out.tangent;
+    for (int j = 0; j < 6; ++j) {
+      if (!has_component(mask, j + 1)) d.col(j).setZero();
+    }
     const double error = (d - fd).cwiseAbs().maxCoeff();
     EXPECT_LE(error, 1e-5 * d.cwiseAbs().maxCoeff() + 1e-8 * k_s)
         << "u = " << u.transpose() << "\nanalytic:\n"
