@@ -116,9 +116,14 @@ def shrink(x, d):
 
 
 class SpotWeld:
-    def __init__(self):
+    def __init__(self, allow_kinks=False):
         self.up = [0.0] * 6
         self.ubar = 0.0
+        # With allow_kinks, a group may be returned onto its kink (shrunk exactly to zero); the
+        # check then uses the subgradient the flow rule needs there and asserts that it lies in
+        # the subdifferential (derived-components-and-potentials.md §1.4).
+        self.allow_kinks = allow_kinks
+        self.kink_rows = 0
 
     def update(self, u):
         ftr = [k * (ui - pi) for k, ui, pi in zip(K, u, self.up)]
@@ -172,28 +177,45 @@ class SpotWeld:
         t, fn, a, fs, b = solve_groups(dl)
         ca, cb = dl * a, dl * b
         f = list(ftr)
+        # (indices, reduction capacity, Macaulay?) of each group that was shrunk exactly to zero.
         clipped = []
         if f3_tr > 0.0:
             f[2] = shrink(f3_tr, KT * ca)
-            clipped.append(f[2] == 0.0)
+            if f[2] == 0.0:
+                clipped.append(((2,), KT * ca, True))
         for idx, rho, d in (((3, 4), rho_m, KR * ca * OR_N), ((0, 1), rho_f, KT * cb)):
             if rho > 0.0:
                 scale = shrink(rho, d) / rho
                 for i in idx:
                     f[i] = ftr[i] * scale
-                clipped.append(scale == 0.0)
+                if scale == 0.0:
+                    clipped.append((idx, d, False))
         if m3_tr > 0.0:
             f[5] = math.copysign(shrink(m3_tr, KR * cb * OR_S), ftr[5])
-            clipped.append(f[5] == 0.0)
-        # A group driven exactly to zero would need a subgradient other than clinch's minimum-norm
-        # choice (§1.4); the paths are chosen so that this never happens.
-        assert not any(clipped), "a group was returned onto its kink"
+            if f[5] == 0.0:
+                clipped.append(((5,), KR * cb * OR_S, False))
+        # A group driven exactly to zero needs a subgradient other than the minimum-norm choice
+        # (§1.4); the paths of spot_weld_paths are chosen so that this never happens.
+        assert self.allow_kinks or not clipped, "a group was returned onto its kink"
         self.up = [pi + (ti - fi) / k for pi, ti, fi, k in zip(self.up, ftr, f, K)]
         self.ubar += dl
         # Discrete equations of behaviors.md §6.4 with the generic evaluator.
         p, n, _ = potential_value_grad(f)
+        for idx, capacity, macauley in clipped:
+            # The flow rule on a group at zero asks for dl*zeta-weighted subgradient
+            # (F_tr - 0)/k: zeta = F_tr/capacity must lie in the unit ball (NORM) or in [0, 1]
+            # (Macaulay), the group's subdifferential.
+            zeta = [ftr[i] / capacity for i in idx]
+            if macauley:
+                assert 0.0 <= zeta[0] <= 1.0, zeta
+            else:
+                assert math.sqrt(sum(z * z for z in zeta)) <= 1.0, zeta
+            for i in idx:
+                n[i] = (ftr[i] - f[i]) / (K[i] * dl)
+            self.kink_rows += 1
         res = pl.check_coupled(ftr, f, dl, K, n, p, HARD.fy(self.ubar))
-        assert abs(f[2]) > 1e-6 * max(abs(x) for x in f) or f3_tr <= 0.0 or f[2] == ftr[2]
+        assert (abs(f[2]) > 1e-6 * max(abs(x) for x in f) or f3_tr <= 0.0 or f[2] == ftr[2]
+                or any(idx == (2,) for idx, _, _ in clipped))
         return f, dl, res
 
 
