@@ -68,7 +68,7 @@ if __name__ == "__main__":
     g.write_golden(__file__, [
         "spot_weld_kinks: the spot weld of spot_weld_paths (BUSHING, k = 1e5 on 1-6, F_y = 40000 +",
         "1e7 u_bar) on three paths whose returns end on a kink of the potential (moment resultant,",
-        "Macaulay term <f3>, |m3> held at zero). Independent backward-Euler return by nested",
+        "Macaulay term <f3>, |m3| held at zero). Independent backward-Euler return by nested",
         "bisection (../spot_weld_paths/reference.py, allow_kinks); every plastic row satisfies the",
         "discrete equations of behaviors.md §6.4 to 1e-12 with an admissible subgradient on the kink",
     ], names, rows)
