@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "src/linalg/small_cholesky.hpp"
+
 namespace clinch {
 namespace {
 
@@ -119,8 +121,7 @@ bool hold_is_admissible(const KinkGroup& g, const ElasticSpace& space, const Vec
 Matrix6 closest_point_tangent(const ElasticSpace& space, const Vector6& normal,
                               const Matrix6& hessian, double multiplier, double hardening,
                               ComponentMask held) {
-  const Eigen::LLT<Matrix6> llt(reduced_jacobian(space, hessian, multiplier, held));
-  Matrix6 a = llt.solve(Matrix6::Identity());
+  Matrix6 a = SmallCholesky<6>(reduced_jacobian(space, hessian, multiplier, held)).inverse();
   Vector6 n = normal;
   if (held) {
     // A held group stays at zero under a small change of u (its ζ is strictly admissible), so
@@ -186,9 +187,9 @@ CoupledReturn closest_point_return(const ElasticSpace& space, const ConnectorPot
     // Newton on [K⁻¹ + Δλ N2, n; nᵀ, −h] (§6.4) by the Schur complement of the symmetric 6×6
     // block: a = M⁻¹ n, b = M⁻¹ R_F, δΔλ = (R_λ − nᵀ b)/(nᵀ a + h), δF = −b − a δΔλ. Held
     // components have identity rows and zero n and R_F, so their δF is 0.
-    const Eigen::LLT<Matrix6> llt(
+    const SmallCholesky<6> llt(
         reduced_jacobian(space, it.potential.hessian, it.multiplier, held));
-    if (llt.info() != Eigen::Success) break;
+    if (!llt.ok()) break;
     const Vector6 n = held ? Vector6(it.potential.gradient.cwiseProduct(mask_vector(~held)))
                            : it.potential.gradient;
     const Vector6 a = llt.solve(n);

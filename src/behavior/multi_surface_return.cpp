@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "src/behavior/coupled_return_mapping.hpp"
+#include "src/linalg/small_cholesky.hpp"
 
 namespace clinch {
 namespace {
@@ -99,8 +100,8 @@ Matrix6 block(const Context& c, const ActiveSet& set, const Iterate& it) {
 // matrix are the identity. False when it is singular (parallel normals).
 bool newton_step(const ActiveSet& set, const Iterate& it, const Matrix6& m, Vector6& d_force,
                  Vector6& d_multiplier) {
-  const Eigen::LLT<Matrix6> llt(m);
-  if (llt.info() != Eigen::Success) return false;
+  const SmallCholesky<6> llt(m);
+  if (!llt.ok()) return false;
   Matrix6 an = Matrix6::Zero();
   Matrix6 schur = Matrix6::Identity();
   Vector6 rhs = Vector6::Zero();
@@ -302,8 +303,7 @@ CoupledReturn multi_surface_return(const ElasticSpace& space, const ConnectorPot
   out.multiplier = it.total();
   if (!want_tangent) return out;
   // §6.6: D = A − A N (Nᵀ A N + h 1 1ᵀ)⁻¹ Nᵀ A with A = M⁻¹ at the converged state.
-  const Eigen::LLT<Matrix6> llt(block(c, set, it));
-  const Matrix6 a = llt.solve(Matrix6::Identity());
+  const Matrix6 a = SmallCholesky<6>(block(c, set, it)).inverse();
   Matrix6 an = Matrix6::Zero();
   Matrix6 schur = Matrix6::Identity();
   for (int j = 0; j < set.size; ++j) an.col(j) = a * it.surface[static_cast<std::size_t>(j)].gradient;
