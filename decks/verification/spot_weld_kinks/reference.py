@@ -38,31 +38,17 @@ KINK = {1: (3, 4), 2: (2,), 3: (5,)}
 NINC = 4
 
 if __name__ == "__main__":
-    welds = {el: weld.SpotWeld(allow_kinks=True) for el in TARGETS}
-    names = []
-    for el in TARGETS:
-        names += [f"CTF{i}@{el}" for i in range(1, 7)] + [f"CUP{i}@{el}" for i in range(1, 7)]
-        names += [f"CUPEQ@{el}", f"CDERF-normal@{el}", f"CDERF-shear@{el}"]
-    rows = [(1, 0, 0.0, 0.0, [0.0] * len(names))]
-    motion = {el: [0.0] * 6 for el in TARGETS}
     on_kink = {el: 0 for el in TARGETS}
-    for step in range(3):
-        start = {el: list(motion[el]) for el in TARGETS}
-        for inc in range(1, NINC + 1):
-            tau = inc / NINC
-            values = []
-            for el, w in welds.items():
-                for comp, target in TARGETS[el][step].items():
-                    v0 = start[el][comp - 1]
-                    motion[el][comp - 1] = v0 + (target - v0) * tau
-                before = w.kink_rows
-                f, dl, res = w.update(motion[el])
-                if w.kink_rows > before:
-                    assert all(f[i] == 0.0 for i in KINK[el]), (el, f)
-                    on_kink[el] += 1
-                _, _, (fn, fs) = weld.potential_value_grad(f)
-                values += f + w.up + [w.ubar, fn, fs]
-            rows.append((step + 1, inc, tau, step + tau, values))
+    kink_rows = {el: 0 for el in TARGETS}
+
+    def observe(el, f, dl, res, w):
+        if w.kink_rows > kink_rows[el]:
+            kink_rows[el] = w.kink_rows
+            assert all(f[i] == 0.0 for i in KINK[el]), (el, f)
+            on_kink[el] += 1
+
+    names, rows = weld.path_rows(TARGETS, NINC, {el: weld.SpotWeld(allow_kinks=True)
+                                                 for el in TARGETS}, observe)
     assert all(n >= 4 for n in on_kink.values()), on_kink
     print("plastic increments on a kink per element:", on_kink)
     g.write_golden(__file__, [

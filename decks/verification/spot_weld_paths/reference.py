@@ -229,34 +229,51 @@ TARGETS = {
     5: [{3: 0.006, 1: 0.012}, {3: -0.004, 1: 0.04}, {2: 0.012, 3: 0.012}],  # f3 = 0 with shear
 }
 NINC = 5
-if __name__ == "__main__":
-    welds = {el: SpotWeld() for el in TARGETS}
+COLUMNS = 15  # per element: CTF1-6, CUP1-6, CUPEQ, CDERF-normal, CDERF-shear
+
+
+def path_rows(targets, increments, welds, observe=None):
+    """Drives each weld along its targets (node-b motions at the end of each step, reached
+    linearly over `increments` equal increments; unlisted dofs keep their value). Returns the
+    column names and the rows of the golden table (row 0 the initial state); `observe(el, f, dl,
+    res, weld)` sees every update."""
     names = []
-    for el in TARGETS:
+    for el in targets:
         names += [f"CTF{i}@{el}" for i in range(1, 7)] + [f"CUP{i}@{el}" for i in range(1, 7)]
         names += [f"CUPEQ@{el}", f"CDERF-normal@{el}", f"CDERF-shear@{el}"]
     rows = [(1, 0, 0.0, 0.0, [0.0] * len(names))]
-    motion = {el: [0.0] * 6 for el in TARGETS}
-    worst = [0.0, 0.0]
-    sign_changes = {el: [] for el in TARGETS}
-    plastic = {el: 0 for el in TARGETS}
-    for step in range(3):
-        start = {el: list(motion[el]) for el in TARGETS}
-        for inc in range(1, NINC + 1):
-            tau = inc / NINC
+    motion = {el: [0.0] * 6 for el in targets}
+    for step in range(len(next(iter(targets.values())))):
+        start = {el: list(motion[el]) for el in targets}
+        for inc in range(1, increments + 1):
+            tau = inc / increments
             values = []
             for el, w in welds.items():
-                for comp, target in TARGETS[el][step].items():
+                for comp, target in targets[el][step].items():
                     v0 = start[el][comp - 1]
                     motion[el][comp - 1] = v0 + (target - v0) * tau
                 f, dl, res = w.update(motion[el])
-                if res:
-                    worst = [max(worst[0], res[0]), max(worst[1], res[1])]
-                    plastic[el] += 1
-                sign_changes[el].append((f[2] > 0.0, dl > 0.0))
+                if observe:
+                    observe(el, f, dl, res, w)
                 _, _, (fn, fs) = potential_value_grad(f)
                 values += f + w.up + [w.ubar, fn, fs]
             rows.append((step + 1, inc, tau, step + tau, values))
+    return names, rows
+
+
+if __name__ == "__main__":
+    worst = [0.0, 0.0]
+    sign_changes = {el: [] for el in TARGETS}
+    plastic = {el: 0 for el in TARGETS}
+
+    def observe(el, f, dl, res, w):
+        global worst
+        if res:
+            worst = [max(worst[0], res[0]), max(worst[1], res[1])]
+            plastic[el] += 1
+        sign_changes[el].append((f[2] > 0.0, dl > 0.0))
+
+    names, rows = path_rows(TARGETS, NINC, {el: SpotWeld() for el in TARGETS}, observe)
     # f3 changes sign on a plastic increment of elements 4 and 5 (both directions).
     for el in (4, 5):
         flips = [i for i in range(1, len(sign_changes[el]))
