@@ -19,6 +19,7 @@ Usage: plastic_paths.py CLINCH [--paths N] [--seed S] [--work DIR] [--min-rate R
 """
 
 import argparse
+import csv
 import os
 import random
 import re
@@ -129,10 +130,10 @@ CARTESIAN,
 100., 0.
 150., 0.2
 *CONNECTOR POTENTIAL, OPERATOR=MAX
-1, 100., , ABS, ,
-2, 100., , ABS, ,
-radial, 120., , ABS, ,
-3, 80., , ABS, ,
+1, 1., , ABS, ,
+2, 1., , ABS, ,
+radial, 1.2, , ABS, ,
+3, 0.8, , ABS, ,
 *CONNECTOR DERIVED COMPONENT, NAME=radial
 1, 2
 1.0, 1.0
@@ -199,6 +200,13 @@ def run_path(clinch, deck, out):
             # and has nine fields; a converged one has eight.
             if len(fields) == 8 and fields[0].isdigit():
                 per_increment.append(int(fields[3]))
+    # Whether the path yielded: the equivalent plastic motion of the weld at the last row.
+    yielded = False
+    table = os.path.join(out, job + ".history.csv")
+    if os.path.exists(table):
+        with open(table) as f:
+            last_row = list(csv.DictReader(f))[-1]
+        yielded = float(last_row.get("CUPEQ@1", "0")) > 0.0
     cutbacks = iterations = increments = 0
     if os.path.exists(log):
         with open(log) as f:
@@ -206,7 +214,8 @@ def run_path(clinch, deck, out):
         m = re.search(r"(\d+) increments, (\d+) iterations, (\d+) cutbacks", text)
         if m:
             increments, iterations, cutbacks = (int(g) for g in m.groups())
-    return proc.returncode, last, per_increment, increments, iterations, cutbacks, proc.stderr
+    return (proc.returncode, last, per_increment, increments, iterations, cutbacks, yielded,
+            proc.stderr)
 
 
 def main():
@@ -221,7 +230,8 @@ def main():
     os.makedirs(work, exist_ok=True)
     rng = random.Random(args.seed)
     problems = []
-    stats = {"spot_weld": [0, 0, 0, 0, 0, 0], "max": [0, 0, 0, 0, 0, 0]}
+    # paths, converged, increments, iterations, cutbacks, most iterations in an increment, yielded
+    stats = {"spot_weld": [0, 0, 0, 0, 0, 0, 0], "max": [0, 0, 0, 0, 0, 0, 0]}
     for n in range(args.paths):
         kind = "spot_weld" if n % 2 == 0 else "max"
         if kind == "spot_weld":
@@ -230,8 +240,8 @@ def main():
             behavior, dofs, scale, dim = MAX_BEHAVIOR, [1, 2, 3], MAX_SCALE, 3
         deck = os.path.join(work, f"path{n:04d}.inp")
         write_deck(deck, behavior, dofs, scale, random_path(rng, dim), rng.choice([0.1, 0.25, 0.5]))
-        code, last, per_inc, incs, its, cuts, err = run_path(args.clinch, deck,
-                                                            os.path.join(work, "out"))
+        code, last, per_inc, incs, its, cuts, yielded, err = run_path(
+            args.clinch, deck, os.path.join(work, "out"))
         s = stats[kind]
         s[0] += 1
         if code == 0 and last == "COMPLETED":
@@ -244,12 +254,13 @@ def main():
         s[3] += its
         s[4] += cuts
         s[5] = max(s[5], max(per_inc, default=0))
+        s[6] += yielded
     total = sum(s[0] for s in stats.values())
     converged = sum(s[1] for s in stats.values())
     print(f"{total} paths (seed {args.seed}), work directory {work}")
     for kind, s in stats.items():
         mean = s[3] / s[2] if s[2] else 0.0
-        print(f"  {kind:9s}: {s[1]}/{s[0]} converged, {s[2]} increments, "
+        print(f"  {kind:9s}: {s[1]}/{s[0]} converged ({s[6]} yielded), {s[2]} increments, "
               f"{mean:.2f} Newton iterations per increment (max {s[5]}), {s[4]} cutbacks")
     rate = converged / total if total else 0.0
     print(f"  convergence rate {rate:.4f}")
