@@ -121,7 +121,14 @@ TEST(PotentialSpotWeld, TableOfSection3) {
     expect_table(t.value, row.p, s + "twin P");
     expect_table(t.gradient[2], row.dp_dfn, s + "dP/dF_n");
     expect_table(t.gradient[0], row.dp_dfs, s + "dP/dF_s");
+    // The slopes n_i = ∂P/∂E_i that weigh the kink groups are the table's ∂P/∂F_n, ∂P/∂F_s.
+    expect_table(v.slope[0], row.dp_dfn, s + "slope of normal");
+    expect_table(v.slope[1], row.dp_dfs, s + "slope of shear");
   }
+  // Kink groups of the spot weld: <f3>, the moment pair (m1, m2), |m3| and the force pair.
+  std::vector<ComponentMask> groups;
+  for (const KinkGroup& g : p.kink_groups()) groups.push_back(g.components);
+  EXPECT_EQ(groups, (std::vector<ComponentMask>{0b000100, 0b011000, 0b100000, 0b000011}));
 }
 
 TEST(PotentialSpotWeld, HessianAndHomogeneityAtStatesAAndB) {
