@@ -246,6 +246,13 @@ void check_behavior_against_sections(Model& model, std::size_t index, Diagnostic
                     fmt::format("coupled stiffness is indefinite over the available components "
                                 "{} of connection type {} (smallest eigenvalue {:.6g})",
                                 mask_list(available), type_display(s), eig[0]));
+      } else if (eig[0] <= tol && !b.plasticities.empty()) {
+        // §6.4: the plastic returns work with the compliance K⁻¹, which a singular K lacks.
+        sink.report(DiagCode::stiffness_not_positive_definite, Severity::Error, el.data_loc,
+                    fmt::format("coupled stiffness is only positive semi-definite over the "
+                                "available components {} of connection type {}; connector "
+                                "plasticity needs a positive definite elasticity",
+                                mask_list(available), type_display(s)));
       } else if (eig[0] <= tol) {
         sink.report(DiagCode::stiffness_not_positive_definite, el.data_loc,
                     fmt::format("coupled stiffness is only positive semi-definite over the "
