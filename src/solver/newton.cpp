@@ -62,6 +62,21 @@ NewtonReport solve_increment(NonlinearProblem& problem, LinearSolver& solver,
       return report;
     }
     problem.apply_correction(correction);
+    if (options.line_search.max_iterations > 0) {
+      const double g0 = correction.dot(residual);
+      EvalStatus status = problem.evaluate(residual, nullptr);
+      if (status.ok) {
+        const LineSearchResult s =
+            search_line(problem, correction, g0, residual, options.line_search);
+        correction *= s.step;
+        status = s.status;
+      }
+      if (!status.ok) {
+        report.outcome = NewtonOutcome::EvaluationFailed;
+        report.message = status.message;
+        return report;
+      }
+    }
     last_correction = &correction;
   }
 }

@@ -16,6 +16,7 @@ line) fails the test. The paths are displacement-driven with hardening, so each 
 the test also requires the convergence rate to reach --min-rate (default 1.0).
 
 Usage: plastic_paths.py CLINCH [--paths N] [--seed S] [--work DIR] [--min-rate R]
+                        [--line-search N_ls]
 """
 
 import argparse
@@ -171,10 +172,13 @@ def random_path(rng, dimension):
     return targets
 
 
-def write_deck(path, behavior, dofs, scale, targets, initial_increment):
+def write_deck(path, behavior, dofs, scale, targets, initial_increment, line_search):
     lines = ["*HEADING", "Random load path (tests/stress/plastic_paths.py)", behavior.rstrip()]
     for step, target in enumerate(targets, start=1):
-        lines += [f"*STEP, NAME=S{step}", "*STATIC", f"{initial_increment}, 1.0", "*BOUNDARY"]
+        lines += [f"*STEP, NAME=S{step}", "*STATIC", f"{initial_increment}, 1.0"]
+        if line_search:
+            lines += ["*CONTROLS, PARAMETERS=LINE SEARCH", f"{line_search},"]
+        lines.append("*BOUNDARY")
         for k, dof in enumerate(dofs):
             lines.append(f"3, {dof}, {dof}, {target[k] * scale[k]:.10g}")
         lines.append("*END STEP")
@@ -225,6 +229,8 @@ def main():
     parser.add_argument("--seed", type=int, default=20261201)
     parser.add_argument("--work")
     parser.add_argument("--min-rate", type=float, default=1.0)
+    parser.add_argument("--line-search", type=int, default=0,
+                        help="N_ls of *CONTROLS, PARAMETERS=LINE SEARCH in every step (0: off)")
     args = parser.parse_args()
     work = args.work or tempfile.mkdtemp(prefix="clinch-stress-")
     os.makedirs(work, exist_ok=True)
@@ -239,7 +245,8 @@ def main():
         else:
             behavior, dofs, scale, dim = MAX_BEHAVIOR, [1, 2, 3], MAX_SCALE, 3
         deck = os.path.join(work, f"path{n:04d}.inp")
-        write_deck(deck, behavior, dofs, scale, random_path(rng, dim), rng.choice([0.1, 0.25, 0.5]))
+        write_deck(deck, behavior, dofs, scale, random_path(rng, dim), rng.choice([0.1, 0.25, 0.5]),
+                   args.line_search)
         code, last, per_inc, incs, its, cuts, yielded, err = run_path(
             args.clinch, deck, os.path.join(work, "out"))
         s = stats[kind]
