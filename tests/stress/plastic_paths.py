@@ -29,12 +29,25 @@ import subprocess
 import sys
 import tempfile
 
-SPOT_WELD_BEHAVIOR = """*PARAMETER
-r_n  = sqrt(30.68/19.63)
-r_s  = 2.0*r_n
-or_n = 1.0/r_n
-or_s = 1.0/r_s
-*NODE
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def elasticity(name, stiffnesses):
+    """A *CONNECTOR BEHAVIOR with linear uncoupled elasticity, component i + 1 of stiffness k_i."""
+    lines = [f"*CONNECTOR BEHAVIOR, NAME={name}"]
+    for i, k in enumerate(stiffnesses, start=1):
+        lines += [f"*CONNECTOR ELASTICITY, COMPONENT={i}", f"{k}"]
+    return "\n".join(lines) + "\n"
+
+
+def read(path):
+    with open(path) as f:
+        return f.read()
+
+
+# The weld of decks/bench/spot_weld_behavior.inp, driven through an elastic BUSHING with the
+# weld's stiffnesses.
+SPOT_WELD_BEHAVIOR = """*NODE
 1, 0., 0., 0.
 2, 0., 0., 0.
 3, 0., 0., 0.
@@ -50,54 +63,10 @@ GLOBAL
 *CONNECTOR SECTION, ELSET=DRIVE, BEHAVIOR=drive
 BUSHING,
 GLOBAL
-*CONNECTOR BEHAVIOR, NAME=drive
-*CONNECTOR ELASTICITY, COMPONENT=1
-1.0e5
-*CONNECTOR ELASTICITY, COMPONENT=2
-1.0e5
-*CONNECTOR ELASTICITY, COMPONENT=3
-2.0e5
-*CONNECTOR ELASTICITY, COMPONENT=4
-1.0e6
-*CONNECTOR ELASTICITY, COMPONENT=5
-1.0e6
-*CONNECTOR ELASTICITY, COMPONENT=6
-5.0e5
-*CONNECTOR BEHAVIOR, NAME=weld
-*CONNECTOR ELASTICITY, COMPONENT=1
-1.0e5
-*CONNECTOR ELASTICITY, COMPONENT=2
-1.0e5
-*CONNECTOR ELASTICITY, COMPONENT=3
-2.0e5
-*CONNECTOR ELASTICITY, COMPONENT=4
-1.0e6
-*CONNECTOR ELASTICITY, COMPONENT=5
-1.0e6
-*CONNECTOR ELASTICITY, COMPONENT=6
-5.0e5
-*CONNECTOR PLASTICITY
-*CONNECTOR HARDENING, DEFINITION=TABULAR
-40000., 0.
-60000., 0.5
-70000., 2.0
-*CONNECTOR POTENTIAL, EXPONENT=1.5
-normal, 0.02, , MACAULEY, ,
-shear,  0.05, , ABS, ,
-*CONNECTOR DERIVED COMPONENT, NAME=normal, OPERATOR=MACAULEY SUM
-3
-1.0
-*CONNECTOR DERIVED COMPONENT, NAME=normal
-4, 5
-<or_n>, <or_n>
-*CONNECTOR DERIVED COMPONENT, NAME=shear
-6
-<or_s>
-*CONNECTOR DERIVED COMPONENT, NAME=shear
-1, 2
-1.0, 1.0
-*BOUNDARY
+""" + elasticity("drive", ["1.0e5", "1.0e5", "2.0e5", "1.0e6", "1.0e6", "5.0e5"]) + read(
+    os.path.join(HERE, "..", "..", "decks", "bench", "spot_weld_behavior.inp")) + """*BOUNDARY
 1, 1, 6
+3, 4, 6
 """
 
 MAX_BEHAVIOR = """*NODE
@@ -112,21 +81,8 @@ MAX_BEHAVIOR = """*NODE
 CARTESIAN,
 *CONNECTOR SECTION, ELSET=DRIVE, BEHAVIOR=drive
 CARTESIAN,
-*CONNECTOR BEHAVIOR, NAME=drive
-*CONNECTOR ELASTICITY, COMPONENT=1
-1000.
-*CONNECTOR ELASTICITY, COMPONENT=2
-1500.
-*CONNECTOR ELASTICITY, COMPONENT=3
-800.
-*CONNECTOR BEHAVIOR, NAME=box
-*CONNECTOR ELASTICITY, COMPONENT=1
-1000.
-*CONNECTOR ELASTICITY, COMPONENT=2
-1500.
-*CONNECTOR ELASTICITY, COMPONENT=3
-800.
-*CONNECTOR PLASTICITY
+""" + elasticity("drive", ["1000.", "1500.", "800."]) + elasticity(
+    "box", ["1000.", "1500.", "800."]) + """*CONNECTOR PLASTICITY
 *CONNECTOR HARDENING, DEFINITION=TABULAR
 100., 0.
 150., 0.2
