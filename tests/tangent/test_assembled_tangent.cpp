@@ -8,6 +8,7 @@
 #include <cmath>
 #include <memory>
 #include <random>
+#include <vector>
 
 #include "parser/deck_reader.hpp"
 #include "src/assembly/analysis_plan.hpp"
@@ -212,6 +213,21 @@ TEST(AssembledTangent, NewtonConvergesQuadraticallyOnASmoothNlgeomProblem) {
   EXPECT_NEAR(uy / (1 + ux), 0.5, 1e-12);
 }
 
+// One load-controlled increment from the virgin state, solved tightly: node 1 held in its six
+// DOFs (a CARTESIAN or BUSHING connector activates the rotations of node a, connection-types.md
+// §1.1), node 2 loaded by `load` on its DOFs 1, 2, …
+NewtonReport solve_loaded(Analysis& a, const std::vector<double>& load) {
+  ConnectorSystem& s = *a.system;
+  const DofMap& dofs = a.plan->dofs;
+  s.clear_conditions();
+  for (int dof = 1; dof <= 6; ++dof) s.prescribe(dofs.equation(0, dof), 0.0);
+  for (std::size_t i = 0; i < load.size(); ++i) {
+    s.add_load(dofs.equation(1, static_cast<int>(i) + 1), load[i]);
+  }
+  s.start_increment(0.0);
+  return solve_tightly(s);
+}
+
 // Load-controlled coupled plasticity from the virgin state in one increment: the connector of
 // behaviors.md §6.7 E11b (CARTESIAN, k = 1000, P = sqrt(f1² + (f2/2)²), F_y = 100 + 200 ū) with
 // node 2 loaded by (120, 150, 0), a non-radial return. With the consistent tangent of §6.4 the
@@ -227,18 +243,10 @@ TEST(AssembledTangent, NewtonConvergesQuadraticallyOnLoadControlledCoupledPlasti
       "*CONNECTOR POTENTIAL\n1, 1.\n2, 2.\n*BOUNDARY\n1, 1, 6\n"
       "*STEP\n*STATIC\n*END STEP\n");
   ASSERT_TRUE(a->system);
-  ConnectorSystem& s = *a->system;
-  const DofMap& dofs = a->plan->dofs;
-  s.clear_conditions();
-  // CARTESIAN activates the rotations of node a (connection-types.md §1.1): hold them too.
-  for (int dof = 1; dof <= 6; ++dof) s.prescribe(dofs.equation(0, dof), 0.0);
-  s.add_load(dofs.equation(1, 1), 120.0);
-  s.add_load(dofs.equation(1, 2), 150.0);
-  s.start_increment(0.0);
-  const NewtonReport report = solve_tightly(s);
+  const NewtonReport report = solve_loaded(*a, {120.0, 150.0});
   ASSERT_TRUE(report.converged()) << report.message;
   expect_quadratic_convergence(report, 0);
-  const ConnectorOutput out = s.connector_output(0);
+  const ConnectorOutput out = a->system->connector_output(0);
   EXPECT_NEAR(out.total[0], 120.0, 1e-9);
   EXPECT_NEAR(out.total[1], 150.0, 1e-9);
   const double p = std::hypot(120.0, 75.0);
@@ -266,19 +274,15 @@ TEST(AssembledTangent, NewtonConvergesQuadraticallyOnLoadControlledSpotWeld) {
       "*CONNECTOR DERIVED COMPONENT, NAME=shear\n1, 2\n1.0, 1.0\n"
       "*BOUNDARY\n1, 1, 6\n*STEP\n*STATIC\n*END STEP\n");
   ASSERT_TRUE(a->system);
-  ConnectorSystem& s = *a->system;
-  const DofMap& dofs = a->plan->dofs;
-  s.clear_conditions();
-  for (int dof = 1; dof <= 6; ++dof) s.prescribe(dofs.equation(0, dof), 0.0);
-  const double load[6] = {300.0, -400.0, 500.0, 200.0, 150.0, 800.0};  // P ≈ 4.2e4 > F_y(0)
-  for (int dof = 1; dof <= 6; ++dof) s.add_load(dofs.equation(1, dof), load[dof - 1]);
-  s.start_increment(0.0);
-  const NewtonReport report = solve_tightly(s);
+  const std::vector<double> load = {300.0, -400.0, 500.0, 200.0, 150.0, 800.0};  // P ≈ 4.2e4
+  const NewtonReport report = solve_loaded(*a, load);
   ASSERT_TRUE(report.converged()) << report.message;
   expect_quadratic_convergence(report, 0);
   expect_quadratic_convergence(report, 1);
-  const ConnectorOutput out = s.connector_output(0);
-  for (int i = 0; i < 6; ++i) EXPECT_NEAR(out.total[i], load[i], 1e-8 * 800.0) << i;
+  const ConnectorOutput out = a->system->connector_output(0);
+  for (int i = 0; i < 6; ++i) {
+    EXPECT_NEAR(out.total[i], load[static_cast<std::size_t>(i)], 1e-8 * 800.0) << i;
+  }
   EXPECT_GT(out.behavior.coupled_equivalent_plastic, 0.0);
 }
 
