@@ -151,6 +151,56 @@ ConnectorPotential ConnectorPotential::compile(const ConnectorBehavior& behavior
   return out;
 }
 
+bool ConnectorPotential::group_structure(std::vector<KinkGroup>& groups,
+                                         std::vector<double>& scales) const {
+  groups.clear();
+  scales.clear();
+  if (op_ != PotentialOperator::Sum || !homogeneous_ || beta_ < 1) return false;
+  ComponentMask listed = 0;
+  auto add = [&](const KinkGroup& g) {
+    if (listed & g.components) return false;
+    listed = static_cast<ComponentMask>(listed | g.components);
+    groups.push_back(g);
+    return true;
+  };
+  for (int i = 0; i < contribution_count(); ++i) {
+    const Contribution& k = contributions_[static_cast<std::size_t>(i)];
+    if (k.shift != 0 || k.sign < 0 || k.function == PotentialFunction::None) return false;
+    scales.push_back(k.scale);
+    if (k.slot >= 0) {
+      KinkGroup g;
+      g.contribution = i;
+      g.macauley = k.function == PotentialFunction::Macauley;
+      g.components = static_cast<ComponentMask>(1u << k.slot);
+      g.coefficient[k.slot] = 1.0;
+      if (!add(g)) return false;
+      continue;
+    }
+    for (const DerivedComponent::Term& t : derived_[static_cast<std::size_t>(k.derived)].terms_) {
+      if (t.op == DerivedOperator::Sum || t.sign < 0) return false;
+      if (t.op == DerivedOperator::Norm) {
+        KinkGroup g;
+        g.contribution = i;
+        for (int j = 0; j < t.count; ++j) {
+          g.components = static_cast<ComponentMask>(g.components | (1u << t.slot[j]));
+          g.coefficient[t.slot[j]] = t.coefficient[j];
+        }
+        if (!add(g)) return false;
+        continue;
+      }
+      for (int j = 0; j < t.count; ++j) {
+        KinkGroup g;
+        g.contribution = i;
+        g.macauley = true;
+        g.components = static_cast<ComponentMask>(1u << t.slot[j]);
+        g.coefficient[t.slot[j]] = t.coefficient[j];
+        if (!add(g)) return false;
+      }
+    }
+  }
+  return true;
+}
+
 void ConnectorPotential::collect_kink_groups() {
   if (op_ != PotentialOperator::Sum) return;
   // How many contributions or terms list each component: a group is kept only when each of its

@@ -65,6 +65,13 @@ class ConnectorPotential {
   ComponentMask components() const { return components_; }  // §2.8
   ContributionType type() const { return type_; }
   const std::vector<KinkGroup>& kink_groups() const { return kink_groups_; }
+  // The potential as a sum of groups, for the grouped return (grouped_return.hpp): true when it
+  // is a SUM with every α_i = β ≥ 1, no shifts and positive signs, whose contributions are
+  // intrinsic components under ABS or MACAULEY or derived components of NORM and MACAULEY SUM
+  // terms with SIGN=POSITIVE, every component listed once. Then E_i = Σ of its groups' values
+  // (an intrinsic ABS contribution is a one-component NORM group with C = 1), `groups` lists
+  // them all and `scales` holds R_i per contribution.
+  bool group_structure(std::vector<KinkGroup>& groups, std::vector<double>& scales) const;
 
  private:
   // How x^α (or S^(1/β)) is formed: the common exponents without std::pow (§5 performance).

@@ -168,19 +168,18 @@ CoupledReturn closest_point_return(const ElasticSpace& space, const ConnectorPot
     Iterate& it = buffers[cur];
     if (converged(it, scales)) {
       ComponentMask released = 0;
-      if (releases < kMaxReleases) {
-        for (const KinkGroup& g : groups) {
-          if ((held & g.components) == g.components &&
-              !hold_is_admissible(g, space, trial, it)) {
-            released = static_cast<ComponentMask>(released | g.components);
-          }
+      for (const KinkGroup& g : groups) {
+        if ((held & g.components) == g.components && !hold_is_admissible(g, space, trial, it)) {
+          released = static_cast<ComponentMask>(released | g.components);
         }
       }
       if (!released) {
         ok = true;
         break;
       }
-      ++releases;
+      // A hold that is still wrong after kMaxReleases releases: the active set cycles, and the
+      // cutting plane takes over (§6.4 step 3).
+      if (++releases > kMaxReleases) break;
       held = static_cast<ComponentMask>(held & ~released);
       evaluate(space, potential, yield, trial, equivalent_old, scales, true, held, it);
     }

@@ -10,6 +10,7 @@
 #include "src/behavior/connector_potential.hpp"
 #include "src/behavior/coupled_return_mapping.hpp"
 #include "src/behavior/elastic_behavior.hpp"
+#include "src/behavior/grouped_return.hpp"
 #include "src/behavior/isotropic_hardening.hpp"
 #include "src/behavior/kinematic_hardening.hpp"
 #include "src/behavior/multi_surface_return.hpp"
@@ -39,6 +40,7 @@ struct CoupledPlasticity {
   ConnectorPotential potential;
   IsotropicHardeningLaw yield;
   ComponentMask components = 0;
+  std::optional<GroupedReturn> grouped;  // the reduced return, where it applies
 };
 
 class ElasticPlasticBehavior final : public Behavior {
@@ -64,6 +66,9 @@ class ElasticPlasticBehavior final : public Behavior {
       // works in the whole linear space, where u^pl of the potential's components moves the
       // forces of the others (§6.4).
       coupled_space_ = diagonal_ ? coupled_->components : linear_;
+      if (diagonal_ && !coupled_->potential.is_max()) {
+        coupled_->grouped = GroupedReturn::create(coupled_->potential, space_);
+      }
       if (!diagonal_ && !uncoupled_.empty()) {
         throw std::invalid_argument(
             "coupled plasticity together with an uncoupled plasticity and a coupled (non-diagonal) "
@@ -103,10 +108,15 @@ class ElasticPlasticBehavior final : public Behavior {
       }
       const CoupledPlasticity& c = *coupled_;
       const double ubar = h[kCoupledEquivalent];
-      const CoupledReturn r =
-          c.potential.is_max()
-              ? multi_surface_return(space_, c.potential, c.yield, trial, ubar, consistent)
-              : closest_point_return(space_, c.potential, c.yield, trial, ubar, consistent);
+      CoupledReturn r;
+      if (c.potential.is_max()) {
+        r = multi_surface_return(space_, c.potential, c.yield, trial, ubar, consistent);
+      } else {
+        if (c.grouped) r = c.grouped->solve(space_, c.potential, c.yield, trial, ubar, consistent);
+        if (!c.grouped || !r.converged) {
+          r = closest_point_return(space_, c.potential, c.yield, trial, ubar, consistent);
+        }
+      }
       if (!r.converged) {
         out.message = "connector return mapping did not converge (coupled plasticity)";
         return IntegrationStatus::Failure;

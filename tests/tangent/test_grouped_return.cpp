@@ -1,0 +1,159 @@
+// The grouped return (src/behavior/grouped_return.hpp) against the general closest-point
+// projection (coupled_return_mapping.hpp): two different algorithms for the same discrete
+// equations of behaviors.md §6.4, so on every trial state where both converge they must give
+// the same force, Δλ and consistent tangent. Trial states of the spot weld
+// (derived-components-and-potentials.md §3) along random rays at 1.05–20 × first yield, many of
+// which end on a kink (a group clipped to zero). Also: where the reduced return applies.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "src/behavior/coupled_return_mapping.hpp"
+#include "src/behavior/elastic_behavior.hpp"
+#include "src/behavior/grouped_return.hpp"
+#include "tests/tangent/plastic_test_support.hpp"
+
+namespace clinch {
+namespace {
+
+std::string spot_weld_body(const std::string& elasticity) {
+  return elasticity +
+         "*CONNECTOR PLASTICITY\n*CONNECTOR HARDENING\n40000., 0.\n60000., 0.5\n"
+         "*CONNECTOR POTENTIAL, EXPONENT=1.5\nnormal, 0.02, , MACAULEY, ,\n"
+         "shear, 0.05, , ABS, ,\n"
+         "*CONNECTOR DERIVED COMPONENT, NAME=normal, OPERATOR=MACAULEY SUM\n3\n1.0\n"
+         "*CONNECTOR DERIVED COMPONENT, NAME=normal\n4, 5\n0.8, 0.8\n"
+         "*CONNECTOR DERIVED COMPONENT, NAME=shear\n6\n0.4\n"
+         "*CONNECTOR DERIVED COMPONENT, NAME=shear\n1, 2\n1.0, 1.0\n";
+}
+
+std::string uncoupled_elasticity(const std::array<double, 6>& k) {
+  std::string out;
+  for (int i = 0; i < 6; ++i) {
+    out += "*CONNECTOR ELASTICITY, COMPONENT=" + std::to_string(i + 1) + "\n" +
+           std::to_string(k[static_cast<std::size_t>(i)]) + "\n";
+  }
+  return out;
+}
+
+struct Parts {
+  std::unique_ptr<PlasticLaw> law;
+  ElasticSpace space;
+  std::optional<ConnectorPotential> potential;
+  std::optional<IsotropicHardeningLaw> yield;
+};
+
+Parts parts(const std::string& body) {
+  Parts p;
+  p.law = make_law(body, 0b111111);
+  const ConnectorBehavior& b = p.law->deck.model.behaviors.behaviors.at(0);
+  const LinearStiffness k = linear_stiffness(b, 0b111111);
+  p.space.stiffness = k.k;
+  p.space.compliance = k.k.inverse();
+  p.potential = ConnectorPotential::compile(b, b.potentials.at(0));
+  p.yield = IsotropicHardeningLaw::from_plasticity(b.plasticities.at(0));
+  return p;
+}
+
+// The optimality conditions of the closest point (behaviors.md §6.4, with the subdifferential of
+// a group at zero of derived-components-and-potentials.md §1.4), checked with the potential's own
+// gradient: P(F) = F_y(Δλ); on every component of a non-zero group K⁻¹(F − F^tr) + Δλ ∂P/∂F = 0;
+// on a group the return clipped to zero, ζ = −K⁻¹(F − F^tr)/(Δλ n_i C) in the unit ball (NORM) or
+// in [0, 1] (Macaulay). Returns the largest violation, relative (flow rule: to ‖K⁻¹F^tr‖; ζ: to 1).
+double optimality_violation(const Parts& p, const Vector6& trial, const CoupledReturn& r) {
+  std::vector<KinkGroup> groups;
+  std::vector<double> scales;
+  EXPECT_TRUE(p.potential->group_structure(groups, scales));
+  PotentialValue pv;
+  p.potential->evaluate(r.force, pv, false);
+  const Vector6 motion = p.space.compliance * (r.force - trial);
+  const double scale = (p.space.compliance * trial).norm();
+  double worst = std::abs(pv.value - p.yield->at(r.multiplier).value) / pv.value;
+  for (const KinkGroup& g : groups) {
+    bool clipped = true;
+    double zeta_sq = 0;
+    for (int c = 0; c < 6; ++c) {
+      if (!((g.components >> c) & 1u)) continue;
+      clipped = clipped && r.force[c] == 0.0 && trial[c] != 0.0;
+    }
+    for (int c = 0; c < 6; ++c) {
+      if (!((g.components >> c) & 1u)) continue;
+      if (!clipped) {
+        worst = std::max(worst, std::abs(motion[c] + r.multiplier * pv.gradient[c]) / scale);
+        continue;
+      }
+      const double zeta = -motion[c] / (r.multiplier *
+                                        pv.slope[static_cast<std::size_t>(g.contribution)] *
+                                        g.coefficient[c]);
+      if (g.macauley) worst = std::max({worst, -zeta, zeta - 1.0});
+      zeta_sq += zeta * zeta;
+    }
+    if (clipped && !g.macauley) worst = std::max(worst, std::sqrt(zeta_sq) - 1.0);
+  }
+  return worst;
+}
+
+TEST(GroupedReturn, SatisfiesTheOptimalityConditionsAndAgreesWithTheGeneralReturn) {
+  // k·C² is uniform in each NORM group: (f1, f2) share k_t, (m1, m2) share k_r.
+  Parts p = parts(spot_weld_body(uncoupled_elasticity({1e5, 1e5, 2e5, 1e6, 1e6, 5e5})));
+  const std::optional<GroupedReturn> grouped = GroupedReturn::create(*p.potential, p.space);
+  ASSERT_TRUE(grouped);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int solved = 0, clipped = 0, compared = 0;
+  for (int trial_index = 0; trial_index < 2000; ++trial_index) {
+    Vector6 u;
+    for (int i = 0; i < 6; ++i) u[i] = 2 * unit(rng) - 1;
+    // Some rays with a component near zero, so that returns end on kinks.
+    if (trial_index % 3 == 0) u[static_cast<int>(6 * unit(rng))] *= 1e-3;
+    Vector6 trial = p.space.stiffness * u;
+    trial *= (1.05 + 19 * unit(rng)) * 40000.0 / p.potential->value(trial);
+    const CoupledReturn a = grouped->solve(p.space, *p.potential, *p.yield, trial, 0.0, true);
+    ASSERT_TRUE(a.plastic);
+    if (!a.converged) continue;  // the behaviour then uses the general return
+    ++solved;
+    // The scalar Newton stops at 1e-13 relative; 1e-9 leaves room for the round-off of forming
+    // the conditions from the forces.
+    EXPECT_LE(optimality_violation(p, trial, a), 1e-9) << trial.transpose();
+    for (int i = 0; i < 6; ++i) clipped += a.force[i] == 0.0 && trial[i] != 0.0;
+    // The closest point is unique: where the general return also meets the conditions, both
+    // agree (forces to 1e-9 of the trial force, Δλ to 1e-9, tangents to 1e-6 of their largest
+    // entry, both formed by the closed form of §6.4 at states equal to that accuracy).
+    const CoupledReturn b = closest_point_return(p.space, *p.potential, *p.yield, trial, 0.0, true);
+    if (!b.converged || optimality_violation(p, trial, b) > 1e-9) continue;
+    ++compared;
+    EXPECT_LE((a.force - b.force).norm(), 1e-9 * trial.norm()) << trial.transpose();
+    EXPECT_NEAR(a.multiplier, b.multiplier, 1e-9 * b.multiplier) << trial.transpose();
+    EXPECT_LE((a.tangent - b.tangent).cwiseAbs().maxCoeff(),
+              1e-6 * b.tangent.cwiseAbs().maxCoeff())
+        << trial.transpose();
+  }
+  EXPECT_GE(solved, 1980);    // at most 1% left to the general return
+  EXPECT_GE(compared, 1500);  // the general return meets the conditions on most of them
+  EXPECT_GT(clipped, 100);    // many returns end on a kink
+}
+
+TEST(GroupedReturn, AppliesOnlyToRadialGroups) {
+  // (f1, f2) with different stiffnesses: the flow in that NORM group is not radial.
+  Parts skew = parts(spot_weld_body(uncoupled_elasticity({1e5, 2e5, 2e5, 1e6, 1e6, 5e5})));
+  EXPECT_FALSE(GroupedReturn::create(*skew.potential, skew.space));
+  // A coupled elasticity is not diagonal.
+  Parts coupled = parts(
+      "*CONNECTOR ELASTICITY\n1000., 100., 1000., 0., 0., 1000., 0., 0.\n"
+      "0., 0., 1000., 0., 0., 0., 0., 0.\n0., 1000., 0., 0., 0.\n"
+      "*CONNECTOR PLASTICITY\n*CONNECTOR HARDENING\n100., 0.\n*CONNECTOR POTENTIAL\n1, 1.\n2, 1.\n");
+  EXPECT_FALSE(GroupedReturn::create(*coupled.potential, coupled.space));
+  // A sum-type potential (H = NONE) is linear, not a sum of groups.
+  Parts linear = parts(uncoupled_elasticity({1e3, 1e3, 1e3, 1e3, 1e3, 1e3}) +
+                       "*CONNECTOR PLASTICITY\n*CONNECTOR HARDENING\n100., 0.\n"
+                       "*CONNECTOR POTENTIAL, EXPONENT=1.\n1, 1., 1., NONE, ,\n2, 2., 1., NONE, ,\n");
+  EXPECT_FALSE(GroupedReturn::create(*linear.potential, linear.space));
+  // Intrinsic components under ABS (E11 of behaviors.md §6.7) are one-component groups.
+  Parts circle = parts(uncoupled_elasticity({1e3, 1e3, 1e3, 1e3, 1e3, 1e3}) +
+                       "*CONNECTOR PLASTICITY\n*CONNECTOR HARDENING\n100., 0.\n"
+                       "*CONNECTOR POTENTIAL\n1, 1.\n2, 1.\n");
+  EXPECT_TRUE(GroupedReturn::create(*circle.potential, circle.space));
+}
+
+}  // namespace
+}  // namespace clinch
