@@ -182,6 +182,21 @@ void remove_at(ActiveSet& set, int position) {
   --set.size;
 }
 
+// The active surface with the smallest φ_i = s_i P_i − F_y at `force` (its index in `set`).
+int least_violated(const Context& c, const ActiveSet& set, const Vector6& force) {
+  int least = 0;
+  double lowest = 0;
+  PotentialValue pv;
+  for (int j = 0; j < set.size; ++j) {
+    c.potential.evaluate_contribution(set.surface[static_cast<std::size_t>(j)], force, pv, false);
+    if (j == 0 || pv.value < lowest) {
+      lowest = pv.value;
+      least = j;
+    }
+  }
+  return least;
+}
+
 // §6.6 parallel-normal rule at `force`: of two active surfaces with parallel normals only one is
 // kept. The spec keeps the lowest index; clinch keeps the one with the larger φ and uses the
 // lowest index only on a tie, because a parallel but distinct surface below the binding one can
@@ -250,7 +265,14 @@ CoupledReturn multi_surface_return(const ElasticSpace& space, const ConnectorPot
   for (int change = 0; change <= kMaxSetChanges && !done; ++change) {
     const SolveResult r = solve(c, set, buffers, cur);
     if (r == SolveResult::Singular) {
-      if (!drop_parallel(c, set, buffers[cur].force)) break;
+      // Dependent normals: parallel ones (§6.6), or more active surfaces than the components
+      // they span (three surfaces through a corner of a two-component section). The least
+      // violated surface at the current force leaves the set; if it is needed, the add step
+      // below brings it back.
+      if (!drop_parallel(c, set, buffers[cur].force)) {
+        if (set.size <= 1) break;
+        remove_at(set, least_violated(c, set, buffers[cur].force));
+      }
       continue;
     }
     if (r == SolveResult::Failed) break;

@@ -106,3 +106,37 @@ TEST(PlasticKink, TangentWithAHeldGroupMatchesFiniteDifferences) {
 
 }  // namespace
 }  // namespace clinch
+
+namespace clinch {
+namespace {
+
+// A MAX potential (behaviors.md §6.6): the face |f1| ≤ 150 cut by the circle r/1.2 ≤ 150
+// (r = sqrt(f1² + f2²)), perfectly plastic, k = (1000, 1500, 800). The trial (600, 450, 16)
+// violates |f1|, |f2| and the circle: three surfaces in the (f1, f2) plane, so their normals are
+// dependent, and the return must drop one and end at the corner of the face and the circle:
+// f1 = 150, f2 = sqrt(180² − 150²). The multipliers follow from K⁻¹(F^tr − F) = Δλ_1 e_1 +
+// Δλ_2 F/(1.2 r) (both positive: a genuine corner), and ū = Δλ_1 + Δλ_2 (§6.6).
+TEST(PlasticCorner, ThreeViolatedSurfacesReturnToTheCorner) {
+  const char* body =
+      "*CONNECTOR ELASTICITY, COMPONENT=1\n1000.\n*CONNECTOR ELASTICITY, COMPONENT=2\n1500.\n"
+      "*CONNECTOR ELASTICITY, COMPONENT=3\n800.\n*CONNECTOR PLASTICITY\n"
+      "*CONNECTOR HARDENING\n150., 0.\n*CONNECTOR POTENTIAL, OPERATOR=MAX\n1, 1., , ABS, ,\n"
+      "2, 1., , ABS, ,\nradial, 1.2, , ABS, ,\n3, 0.8, , ABS, ,\n"
+      "*CONNECTOR DERIVED COMPONENT, NAME=radial\n1, 2\n1.0, 1.0\n";
+  auto p = make_law(body, 0b000111);
+  Driver driver(*p->law);
+  const Vector6 u = vec(0.6, 0.3, 0.02);
+  driver.expect_fd_tangent(u, 0.1, 1500, 0b000111);
+  const Evaluation e = driver.step(u);
+  const double f2 = std::sqrt(180.0 * 180.0 - 150.0 * 150.0);
+  EXPECT_NEAR(e.out.force[0], 150.0, 1e-9);
+  EXPECT_NEAR(e.out.force[1], f2, 1e-9);
+  EXPECT_NEAR(e.out.force[2], 16.0, 1e-12);  // component 3 stays elastic
+  const double dl_circle = (450.0 - f2) / 1500.0 * (1.2 * 180.0) / f2;
+  const double dl_face = (600.0 - 150.0) / 1000.0 - dl_circle * 150.0 / (1.2 * 180.0);
+  ASSERT_GT(dl_face, 0.0);
+  EXPECT_NEAR(driver.state().coupled_equivalent_plastic, dl_face + dl_circle, 1e-10);
+}
+
+}  // namespace
+}  // namespace clinch
