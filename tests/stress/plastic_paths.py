@@ -16,7 +16,7 @@ line) fails the test. The paths are displacement-driven with hardening, so each 
 the test also requires the convergence rate to reach --min-rate (default 1.0).
 
 Usage: plastic_paths.py CLINCH [--paths N] [--seed S] [--work DIR] [--min-rate R]
-                        [--line-search N_ls]
+                        [--max-cutback-fraction F] [--line-search N_ls]
 """
 
 import argparse
@@ -185,6 +185,8 @@ def main():
     parser.add_argument("--seed", type=int, default=20261201)
     parser.add_argument("--work")
     parser.add_argument("--min-rate", type=float, default=1.0)
+    parser.add_argument("--max-cutback-fraction", type=float, default=1.0,
+                        help="fail when more than this fraction of increments were cut back")
     parser.add_argument("--line-search", type=int, default=0,
                         help="N_ls of *CONTROLS, PARAMETERS=LINE SEARCH in every step (0: off)")
     args = parser.parse_args()
@@ -231,6 +233,11 @@ def main():
         print("PROBLEM:", p)
     if not args.work and not problems and rate >= args.min_rate:
         shutil.rmtree(work, ignore_errors=True)
+    increments = sum(s[2] for s in stats.values())
+    cutbacks = sum(s[4] for s in stats.values())
+    if increments and cutbacks > args.max_cutback_fraction * increments:
+        print(f"PROBLEM: {cutbacks} cutbacks in {increments} increments")
+        return 1
     if problems or rate < args.min_rate:
         return 1
     return 0
