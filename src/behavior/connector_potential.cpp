@@ -61,36 +61,6 @@ inline double apply_function(PotentialFunction h, double x, double zero, double&
   return 0;
 }
 
-// x^e for x ≥ 0 without std::pow for the exponents that occur in practice (§5).
-template <typename Kind>
-inline double power(Kind kind, int integer, double exponent, double x) {
-  switch (kind) {
-    case Kind::One: return x;
-    case Kind::ThreeHalves: return x * std::sqrt(x);
-    case Kind::Two: return x * x;
-    case Kind::Integer: {
-      double r = x;
-      for (int i = 1; i < integer; ++i) r *= x;
-      return r;
-    }
-    case Kind::General: break;
-  }
-  return std::pow(x, exponent);
-}
-
-template <typename Kind>
-Kind power_kind(double exponent, int& integer) {
-  integer = 0;
-  if (exponent == 1.0) return Kind::One;
-  if (exponent == 1.5) return Kind::ThreeHalves;
-  if (exponent == 2.0) return Kind::Two;
-  if (exponent == std::round(exponent) && exponent > 2.0 && exponent <= 16.0) {
-    integer = static_cast<int>(exponent);
-    return Kind::Integer;
-  }
-  return Kind::General;
-}
-
 ComponentMask mask_slots(ComponentMask mask, std::array<std::int8_t, 6>& slots, int& count) {
   count = 0;
   for (int k = 0; k < 6; ++k) {
@@ -108,7 +78,7 @@ ConnectorPotential ConnectorPotential::compile(const ConnectorBehavior& behavior
   out.beta_ = potential.exponent;
   if (!(out.beta_ > 0)) throw std::invalid_argument("potential exponent must be positive");
   out.inverse_beta_ = 1.0 / out.beta_;
-  out.root_ = power_kind<PowerKind>(out.beta_, out.integer_beta_);
+  out.beta_power_ = FixedPower(out.beta_);
   out.inverse_beta_is_integer_ = out.inverse_beta_ == std::round(out.inverse_beta_);
   out.type_ = potential.type;
 
@@ -140,7 +110,7 @@ ConnectorPotential ConnectorPotential::compile(const ConnectorBehavior& behavior
     k.shift = c.shift;
     k.sign = c.sign < 0 ? -1.0 : 1.0;
     k.function = c.function;
-    k.power = power_kind<PowerKind>(k.alpha, k.integer_alpha);
+    k.power = FixedPower(k.alpha);
     mask_slots(mask, k.slots, k.slot_count);
     if (k.alpha != out.beta_) out.homogeneous_ = false;
     out.components_ = static_cast<ComponentMask>(out.components_ | mask);
@@ -296,12 +266,12 @@ double ConnectorPotential::evaluate_sum(const Vector6& c, PotentialValue* out, W
     // unbounded for 1 < β < 2, is taken as 0 (§2.5 table).
     if (h == 0) continue;
     const double u = p * inverse_lambda;
-    const double ua = power(k.power, k.integer_alpha, k.alpha, u);
+    const double ua = k.power.power(u);
     s += k.sign * ua;
     s_abs += std::fabs(ua);
     if (!derivatives) continue;
     const double hr = h * k.inverse_scale;
-    if (k.power == PowerKind::One) {
+    if (k.power.is_one()) {
       wi.g = k.sign * hr;
     } else {
       const double ua_over_u = ua / u;  // u > 0: above the zero threshold
@@ -319,7 +289,7 @@ double ConnectorPotential::evaluate_sum(const Vector6& c, PotentialValue* out, W
   }
 
   double f = s, f1 = 1.0, f2 = 0.0;  // F(S), F'(S), F''(S)
-  if (root_ != PowerKind::One) {
+  if (!beta_power_.is_one()) {
     // P = 0 (all contributions zero) gives value, gradient and Hessian 0 (§2.5). A base that
     // cancels to zero through negative signs (damage potentials only) is treated the same way:
     // F' is unbounded there for β > 1, and 0 keeps the outputs finite. This is a clinch choice.
@@ -332,22 +302,7 @@ double ConnectorPotential::evaluate_sum(const Vector6& c, PotentialValue* out, W
       return 0;
     }
     // S^(1/β) for S > 0 without std::pow for β = 1.5, 2, 3, 4 (§5).
-    auto root = [this](double v) {
-      switch (root_) {
-        case PowerKind::Two: return std::sqrt(v);
-        case PowerKind::ThreeHalves: {
-          const double r = std::cbrt(v);
-          return r * r;
-        }
-        case PowerKind::Integer:
-          if (integer_beta_ == 3) return std::cbrt(v);
-          if (integer_beta_ == 4) return std::sqrt(std::sqrt(v));
-          break;
-        case PowerKind::One:
-        case PowerKind::General: break;
-      }
-      return std::pow(v, inverse_beta_);
-    };
+    auto root = [this](double v) { return beta_power_.root(v); };
     if (s > 0) {
       f = root(s);
     } else if (inverse_beta_is_integer_) {

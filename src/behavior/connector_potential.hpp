@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "src/behavior/derived_component.hpp"
+#include "src/behavior/fixed_power.hpp"
 #include "src/linalg/small_types.hpp"
 #include "src/model/behavior_model.hpp"
 
@@ -74,8 +75,6 @@ class ConnectorPotential {
   bool group_structure(std::vector<KinkGroup>& groups, std::vector<double>& scales) const;
 
  private:
-  // How x^α (or S^(1/β)) is formed: the common exponents without std::pow (§5 performance).
-  enum class PowerKind : std::uint8_t { One, ThreeHalves, Two, Integer, General };
   // What evaluate fills: the value only, or also the gradient, or also the Hessian.
   enum class Want : std::uint8_t { Value, Gradient, Hessian };
 
@@ -86,8 +85,7 @@ class ConnectorPotential {
     double inverse_scale = 1.0;  // 1/R_i
     double alpha = 2.0, shift = 0.0, sign = 1.0;
     PotentialFunction function = PotentialFunction::Abs;
-    PowerKind power = PowerKind::Two;  // of α_i
-    int integer_alpha = 2;             // α_i when power == Integer
+    FixedPower power;  // x^α_i
     int slot_count = 0;                // the components E_i depends on
     std::array<std::int8_t, 6> slots{};
   };
@@ -101,8 +99,7 @@ class ConnectorPotential {
   PotentialOperator op_ = PotentialOperator::Sum;
   double beta_ = 2.0;
   double inverse_beta_ = 0.5;
-  PowerKind root_ = PowerKind::Two;  // of β, for S^(1/β)
-  int integer_beta_ = 2;
+  FixedPower beta_power_;  // S^(1/β)
   bool inverse_beta_is_integer_ = false;  // S^(1/β) is real for S < 0 (§2.3)
   bool homogeneous_ = true;               // every α_i = β: the scaled path of §2.4
   ComponentMask components_ = 0;

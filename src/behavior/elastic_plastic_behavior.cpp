@@ -241,7 +241,7 @@ std::unique_ptr<Behavior> make_connector_behavior(const ConnectorBehavior& behav
     const Potential* potential = potential_of(behavior, k);
     if (potential == nullptr) continue;
     CoupledPlasticity c{ConnectorPotential::compile(behavior, *potential),
-                        IsotropicHardeningLaw::from_plasticity(p), 0};
+                        IsotropicHardeningLaw::from_plasticity(p), 0, std::nullopt};
     c.components = static_cast<ComponentMask>(c.potential.components() & available);
     if (c.components != 0) coupled = std::move(c);
   }

@@ -13,20 +13,6 @@ constexpr int kMaxContributions = 6;  // one per component at the most
 constexpr int kMaxIterations = 40;
 constexpr double kTolerance = 1e-13;  // relative, below the 1e-12 of §6.4
 
-// x^β and x^(β−1) for x ≥ 0 without std::pow for the common exponents.
-double power(double x, double beta) {
-  if (beta == 1.0) return x;
-  if (beta == 1.5) return x * std::sqrt(x);
-  if (beta == 2.0) return x * x;
-  return std::pow(x, beta);
-}
-double power_less_one(double x, double beta) {
-  if (beta == 1.0) return 1.0;
-  if (beta == 1.5) return std::sqrt(x);
-  if (beta == 2.0) return x;
-  return std::pow(x, beta - 1.0);
-}
-
 }  // namespace
 
 std::optional<GroupedReturn> GroupedReturn::create(const ConnectorPotential& potential,
@@ -63,7 +49,7 @@ std::optional<GroupedReturn> GroupedReturn::create(const ConnectorPotential& pot
     if (!(r.kappa > 0)) return std::nullopt;
     out.groups_.push_back(r);
   }
-  out.beta_ = potential.exponent();
+  out.beta_ = FixedPower(potential.exponent());
   return out;
 }
 
@@ -89,14 +75,10 @@ CoupledReturn GroupedReturn::solve(const ElasticSpace& space, const ConnectorPot
   }
   auto potential_of = [&](const std::array<double, kMaxContributions>& e) {
     double s = 0;
-    for (int i = 0; i < m; ++i) s += power(e[static_cast<std::size_t>(i)] / scales_[static_cast<std::size_t>(i)], beta_);
-    if (beta_ == 1.0) return s;
-    if (beta_ == 1.5) {
-      const double c = std::cbrt(s);
-      return c * c;
+    for (int i = 0; i < m; ++i) {
+      s += beta_.power(e[static_cast<std::size_t>(i)] / scales_[static_cast<std::size_t>(i)]);
     }
-    if (beta_ == 2.0) return std::sqrt(s);
-    return std::pow(s, 1.0 / beta_);
+    return beta_.root(s);
   };
   const double yield_old = yield.at(equivalent_old).value;
   if (!(potential_of(e_trial) - yield_old > 0)) return out;  // §6.4 step 1: elastic
@@ -118,7 +100,9 @@ CoupledReturn GroupedReturn::solve(const ElasticSpace& space, const ConnectorPot
     if (!(p > 0)) break;
     for (int i = 0; i < m; ++i) {
       const auto ii = static_cast<std::size_t>(i);
-      n[ii] = power_less_one(e[ii] / (scales_[ii] * p), beta_) / scales_[ii];
+      // n_i = (P_i/P)^(β−1)/R_i (§2.4), as (P_i/P)^β/(P_i/P).
+      const double q = e[ii] / (scales_[ii] * p);
+      n[ii] = (q > 0 ? beta_.power(q) / q : (beta_.is_one() ? 1.0 : 0.0)) / scales_[ii];
     }
     const YieldSample y = yield.at(equivalent_old + dl);
     std::array<double, kMaxContributions> rho = e, stiff{};
@@ -141,7 +125,7 @@ CoupledReturn GroupedReturn::solve(const ElasticSpace& space, const ConnectorPot
     double n_li_a = 0;  // nᵀΛ⁻¹a
     for (int i = 0; i < m; ++i) {
       const auto ii = static_cast<std::size_t>(i);
-      const double c = stiff[ii] * dl * (beta_ - 1.0);
+      const double c = stiff[ii] * dl * (beta_.exponent() - 1.0);
       inv_lambda[ii] = 1.0 / (1.0 + (e[ii] > 0 ? c * n[ii] / e[ii] : 0.0));
       a[ii] = c * n[ii] / p;
       b[ii] = stiff[ii] * n[ii];  // ∂ρ_i/∂Δλ

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "src/behavior/connector_potential.hpp"
+#include "src/behavior/fixed_power.hpp"
 #include "src/behavior/isotropic_hardening.hpp"
 #include "src/behavior/plastic_return_types.hpp"
 
@@ -42,7 +43,7 @@ class GroupedReturn {
   };
   std::vector<Group> groups_;
   std::vector<double> scales_;  // R_i
-  double beta_ = 2.0;
+  FixedPower beta_;  // β
 };
 
 }  // namespace clinch

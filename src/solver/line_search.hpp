@@ -6,27 +6,17 @@
 
 #include <Eigen/Core>
 
+#include "src/model/history_model.hpp"
 #include "src/solver/nonlinear_problem.hpp"
 
 namespace clinch {
 
-struct LineSearchOptions {
-  int max_iterations = 0;  // N_ls; 0: no line search
-  double s_max = 1.0, s_min = 1e-4, f_s = 0.25, eta = 0.10;
-};
-
-struct LineSearchResult {
-  double step = 1.0;    // s of the returned state
-  int evaluations = 0;  // residual evaluations made
-  EvalStatus status;
-};
-
-// Called with the full step applied (the problem at x + d) and `residual` = R(x + d); `g0` =
-// dᵀR(x). Each iteration takes the zero of the secant of g through (0, g0) and (s, g(s)),
-// kept within [f_s·s, s_max] and above s_min, and moves the problem there. The problem is left
-// at x + s d with `residual` = R there.
-LineSearchResult search_line(NonlinearProblem& problem, const Eigen::VectorXd& direction,
-                             double g0, Eigen::VectorXd& residual,
-                             const LineSearchOptions& options);
+// Called with the full step applied (the problem at x + d); `residual` holds R(x). Evaluates
+// R(x + d) and, while |g(s)| > η_ls·|g(0)|, moves s to the zero of the secant of g through
+// (0, g(0)) and (s, g(s)), kept within [max(f_s·s, s_min), s_max], at most N_ls times. The
+// problem is left at x + s d, `residual` = R there, and `direction` is scaled to s·d (the
+// correction the convergence tests see).
+EvalStatus search_line(NonlinearProblem& problem, Eigen::VectorXd& direction,
+                       Eigen::VectorXd& residual, const LineSearchControls& controls);
 
 }  // namespace clinch

@@ -63,17 +63,10 @@ NewtonReport solve_increment(NonlinearProblem& problem, LinearSolver& solver,
     }
     problem.apply_correction(correction);
     if (options.line_search.max_iterations > 0) {
-      const double g0 = correction.dot(residual);
-      EvalStatus status = problem.evaluate(residual, nullptr);
-      if (status.ok) {
-        const LineSearchResult s =
-            search_line(problem, correction, g0, residual, options.line_search);
-        correction *= s.step;
-        status = s.status;
-      }
-      if (!status.ok) {
+      const EvalStatus searched = search_line(problem, correction, residual, options.line_search);
+      if (!searched.ok) {
         report.outcome = NewtonOutcome::EvaluationFailed;
-        report.message = status.message;
+        report.message = searched.message;
         return report;
       }
     }

@@ -17,7 +17,7 @@ struct NewtonOptions {
   int max_iterations = 16;         // I_C (keywords.md §16)
   int divergence_check_from = 4;   // I₀: two consecutive residual increases from here on diverge
   bool accept_unconverged = false; // DIRECT=NO STOP: return the last iterate as converged
-  LineSearchOptions line_search;   // *CONTROLS, PARAMETERS=LINE SEARCH (off by default)
+  LineSearchControls line_search;  // *CONTROLS, PARAMETERS=LINE SEARCH (off by default)
 };
 
 enum class NewtonOutcome { Converged, Diverged, TooManyIterations, EvaluationFailed, SolverFailed };

@@ -84,9 +84,7 @@ class Driver {
   NewtonReport attempt(int step, int increment, int attempt_number, int& iterations,
                        int& changes) {
     const TimeIncrementationControls& t = controls_->time;
-    NewtonOptions options{t.ic, t.i0, accept_unconverged_, {}};
-    const LineSearchControls& ls = controls_->line_search;
-    options.line_search = {ls.max_iterations, ls.s_max, ls.s_min, ls.f_s, ls.eta};
+    const NewtonOptions options{t.ic, t.i0, accept_unconverged_, controls_->line_search};
     iterations = 0;
     changes = 0;
     for (;;) {

@@ -48,7 +48,7 @@ class ArctanProblem final : public NonlinearProblem {
   SparseMatrix pattern_;
 };
 
-NewtonReport solve(ArctanProblem& p, const LineSearchOptions& line_search) {
+NewtonReport solve(ArctanProblem& p, const LineSearchControls& line_search) {
   Controls controls;
   controls.translation.residual = 1e-12;
   controls.translation.correction = 1e-12;
@@ -65,14 +65,14 @@ NewtonReport solve(ArctanProblem& p, const LineSearchOptions& line_search) {
 
 TEST(LineSearch, FullNewtonStepsDivergeOnTheFlatTail) {
   ArctanProblem p(3.0);
-  const NewtonReport report = solve(p, LineSearchOptions{});
+  const NewtonReport report = solve(p, LineSearchControls{});
   EXPECT_FALSE(report.converged());
   EXPECT_GT(std::abs(p.x()), 3.0);  // the iterates run away
 }
 
 TEST(LineSearch, ConvergesWhereFullStepsDiverge) {
   ArctanProblem p(3.0);
-  LineSearchOptions ls;
+  LineSearchControls ls;
   ls.max_iterations = 5;  // N_ls; s_max, s_min, f_s, η_ls at their defaults
   const NewtonReport report = solve(p, ls);
   ASSERT_TRUE(report.converged()) << report.message;
@@ -85,9 +85,9 @@ TEST(LineSearch, LeavesAGoodStepAlone) {
   // Near the root the full step already reduces g(1) below η_ls|g(0)|: s stays 1, so the line
   // search costs one residual evaluation per iteration and changes nothing.
   ArctanProblem with(0.3), without(0.3);
-  LineSearchOptions ls;
+  LineSearchControls ls;
   ls.max_iterations = 5;
-  const NewtonReport a = solve(with, ls), b = solve(without, LineSearchOptions{});
+  const NewtonReport a = solve(with, ls), b = solve(without, LineSearchControls{});
   ASSERT_TRUE(a.converged());
   ASSERT_TRUE(b.converged());
   EXPECT_EQ(a.iterations.size(), b.iterations.size());
