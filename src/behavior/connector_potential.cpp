@@ -121,6 +121,25 @@ ConnectorPotential ConnectorPotential::compile(const ConnectorBehavior& behavior
   return out;
 }
 
+void ConnectorPotential::append_term_groups(const DerivedComponent::Term& t, int contribution,
+                                            std::vector<KinkGroup>& out) {
+  if (t.op == DerivedOperator::Sum) return;  // linear: no kink
+  KinkGroup g;
+  g.contribution = contribution;
+  g.macauley = t.op == DerivedOperator::MacauleySum;
+  for (int j = 0; j < t.count; ++j) {
+    g.components = static_cast<ComponentMask>(g.components | (1u << t.slot[j]));
+    g.coefficient[t.slot[j]] = t.sign * t.coefficient[j];
+    // A MACAULEY SUM term brackets each product (§1.3): one group per component.
+    if (g.macauley) {
+      out.push_back(g);
+      g.components = 0;
+      g.coefficient.setZero();
+    }
+  }
+  if (!g.macauley) out.push_back(g);
+}
+
 bool ConnectorPotential::group_structure(std::vector<KinkGroup>& groups,
                                          std::vector<double>& scales) const {
   groups.clear();
@@ -146,26 +165,13 @@ bool ConnectorPotential::group_structure(std::vector<KinkGroup>& groups,
       if (!add(g)) return false;
       continue;
     }
+    std::vector<KinkGroup> term_groups;
     for (const DerivedComponent::Term& t : derived_[static_cast<std::size_t>(k.derived)].terms_) {
       if (t.op == DerivedOperator::Sum || t.sign < 0) return false;
-      if (t.op == DerivedOperator::Norm) {
-        KinkGroup g;
-        g.contribution = i;
-        for (int j = 0; j < t.count; ++j) {
-          g.components = static_cast<ComponentMask>(g.components | (1u << t.slot[j]));
-          g.coefficient[t.slot[j]] = t.coefficient[j];
-        }
-        if (!add(g)) return false;
-        continue;
-      }
-      for (int j = 0; j < t.count; ++j) {
-        KinkGroup g;
-        g.contribution = i;
-        g.macauley = true;
-        g.components = static_cast<ComponentMask>(1u << t.slot[j]);
-        g.coefficient[t.slot[j]] = t.coefficient[j];
-        if (!add(g)) return false;
-      }
+      append_term_groups(t, i, term_groups);
+    }
+    for (const KinkGroup& g : term_groups) {
+      if (!add(g)) return false;
     }
   }
   return true;
@@ -185,25 +191,7 @@ void ConnectorPotential::collect_kink_groups() {
     }
     for (const DerivedComponent::Term& t : derived_[static_cast<std::size_t>(k.derived)].terms_) {
       for (int j = 0; j < t.count; ++j) ++listed[static_cast<std::size_t>(t.slot[j])];
-      if (i >= PotentialValue::kSlopedContributions) continue;
-      if (t.op == DerivedOperator::Norm) {
-        KinkGroup g;
-        g.contribution = i;
-        for (int j = 0; j < t.count; ++j) {
-          g.components = static_cast<ComponentMask>(g.components | (1u << t.slot[j]));
-          g.coefficient[t.slot[j]] = t.sign * t.coefficient[j];
-        }
-        groups.push_back(g);
-      } else if (t.op == DerivedOperator::MacauleySum) {
-        for (int j = 0; j < t.count; ++j) {
-          KinkGroup g;
-          g.contribution = i;
-          g.macauley = true;
-          g.components = static_cast<ComponentMask>(1u << t.slot[j]);
-          g.coefficient[t.slot[j]] = t.sign * t.coefficient[j];
-          groups.push_back(g);
-        }
-      }
+      if (i < PotentialValue::kSlopedContributions) append_term_groups(t, i, groups);
     }
   }
   for (const KinkGroup& g : groups) {

@@ -92,6 +92,10 @@ class ConnectorPotential {
 
   double evaluate_sum(const Vector6& c, PotentialValue* out, Want want) const;
   void collect_kink_groups();
+  // The kink groups of one derived-component term (§1.4): a NORM term is one group, a MACAULEY
+  // SUM term one group per component, a SUM term none.
+  static void append_term_groups(const DerivedComponent::Term& t, int contribution,
+                                 std::vector<KinkGroup>& out);
   double evaluate_max(const Vector6& c, PotentialValue* out, Want want) const;
 
   std::vector<Contribution> contributions_;
