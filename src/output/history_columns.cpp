@@ -324,7 +324,11 @@ double HistoryColumns::value(const Column& c, ConnectorSystem& system) {
   for (const Term& t : c.terms) {
     switch (t.source) {
       case Source::Connector: {
-        const ConnectorOutput out = system.connector_output(static_cast<std::size_t>(t.index));
+        // One evaluation per connector and row: a plastic connector's outputs come from a
+        // return mapping, and an element has many columns.
+        auto [it, inserted] = row_outputs_.try_emplace(t.index);
+        if (inserted) it->second = system.connector_output(static_cast<std::size_t>(t.index));
+        const ConnectorOutput& out = it->second;
         if (c.derived >= 0) {
           // §4: CDERF on the force of the context (plasticity: the elastic-plastic force),
           // CDERU on the constitutive motions.
@@ -358,6 +362,7 @@ double HistoryColumns::value(const Column& c, ConnectorSystem& system) {
 void HistoryColumns::evaluate(ConnectorSystem& system, int increment, bool last,
                               std::vector<double>& values) {
   values.resize(columns_.size(), 0.0);
+  row_outputs_.clear();
   for (const Request& r : step_requests_[step_]) {
     const bool request_due =
         increment == 0 || (r.frequency > 0 && (last || increment % r.frequency == 0));

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <map>
+#include <unordered_map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -71,6 +72,8 @@ class HistoryColumns {
   std::vector<std::vector<Request>> step_requests_;
   std::size_t step_ = 0;
   std::vector<DerivedComponent> derived_;  // compiled once per (behaviour, name)
+  // The current row's evaluation of each connector that has columns.
+  std::unordered_map<std::int32_t, ConnectorOutput> row_outputs_;
   std::map<std::pair<std::int32_t, std::string>, std::int32_t> derived_index_;
 };
 
