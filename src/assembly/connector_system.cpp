@@ -32,6 +32,7 @@ ConnectorSystem::ConnectorSystem(const Model& model, const AnalysisPlan& plan)
   target_ = x_;
   internal_ = x_;
   external_ = x_;
+  predictor_ = x_;
   prescribed_.assign(static_cast<std::size_t>(n), 0);
   multiplier_active_.assign(static_cast<std::size_t>(n), 0);
   rotation_.assign(plan_.dofs.nodes(), Matrix3::Identity());
@@ -120,14 +121,32 @@ void ConnectorSystem::add_connector_load(int connector, int component, double va
 void ConnectorSystem::start_increment(double extrapolate_scale) {
   if (extrapolate_scale != 0) {
     for (int eq = 0; eq < plan_.dofs.node_equations(); ++eq) {
-      const bool finite_rotation =
-          nlgeom_ && plan_.dofs.field(eq) == EquationField::Rotation;
-      if (!prescribed_[static_cast<std::size_t>(eq)] && !finite_rotation) {
+      if (!prescribed_[static_cast<std::size_t>(eq)] && !is_finite_rotation(eq)) {
         x_[eq] += extrapolate_scale * dx_n_[eq];
       }
     }
   }
-  for (int eq : prescribed_list_) x_[eq] = target_[eq];
+  // Prescribed values stay where they are: the first correction moves them to their targets,
+  // with the free DOFs following on the tangent at the start of the increment (docs/decisions.md
+  // "Prescribed increments"). Finite rotations are the exception: they jump to their targets.
+  snap_prescribed_rotations();
+  update_prescribed_predictor();
+}
+
+bool ConnectorSystem::is_finite_rotation(int equation) const {
+  return nlgeom_ && plan_.dofs.field(equation) == EquationField::Rotation;
+}
+
+void ConnectorSystem::update_prescribed_predictor() {
+  predicting_ = false;
+  for (int eq : prescribed_list_) predicting_ = predicting_ || x_[eq] != target_[eq];
+}
+
+void ConnectorSystem::snap_prescribed_rotations() {
+  if (!nlgeom_) return;
+  for (int eq : prescribed_list_) {
+    if (is_finite_rotation(eq)) x_[eq] = target_[eq];
+  }
   apply_prescribed_rotations();
 }
 
@@ -354,16 +373,22 @@ void ConnectorSystem::scatter(const LocalEquations& l, const LocalSystem& local,
     const int eb = l.equation[static_cast<std::size_t>(b)];
     const bool fixed_b = prescribed_[static_cast<std::size_t>(eb)];
     for (int a = 0; a <= b; ++a, ++position) {
-      if (fixed_b || prescribed_[static_cast<std::size_t>(l.equation[static_cast<std::size_t>(a)])]) {
-        continue;
+      const int ea = l.equation[static_cast<std::size_t>(a)];
+      const bool fixed_a = prescribed_[static_cast<std::size_t>(ea)];
+      if (!fixed_a && !fixed_b) {
+        values[*position] += local.k(a, b);
+      } else if (predicting_ && fixed_a != fixed_b) {
+        // The prescribed column leaves the matrix for the right-hand side: K_fp·Δu_p.
+        const int free = fixed_a ? eb : ea, fixed = fixed_a ? ea : eb;
+        predictor_[free] += local.k(a, b) * (target_[fixed] - x_[fixed]);
       }
-      values[*position] += local.k(a, b);
     }
   }
 }
 
 EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* tangent) {
   internal_.setZero();
+  if (predicting_) predictor_.setZero();
   if (tangent) std::fill(tangent->values.begin(), tangent->values.end(), 0.0);
   LocalSystem local;
   for (std::size_t c = 0; c < plan_.connectors.size(); ++c) {
@@ -382,8 +407,10 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
     scatter(s.local, local, tangent);
   }
   residual = internal_ - external_;
+  if (predicting_ && tangent) residual += predictor_;
   for (int eq : prescribed_list_) {
-    residual[eq] = 0.0;
+    // Newton's row of a prescribed DOF is Δu = target − u.
+    residual[eq] = x_[eq] - target_[eq];
     if (tangent) tangent->values[static_cast<std::size_t>(plan_.diagonal[static_cast<std::size_t>(eq)])] = 1.0;
   }
   return {};
@@ -392,6 +419,7 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
 void ConnectorSystem::apply_correction(const Eigen::VectorXd& dx) {
   if (!nlgeom_) {
     x_ += dx;
+    finish_prescribed_correction(dx);
     return;
   }
   for (int eq = 0; eq < size(); ++eq) {
@@ -420,8 +448,18 @@ void ConnectorSystem::apply_correction(const Eigen::VectorXd& dx) {
       if (eqs[static_cast<std::size_t>(k)] >= 0) x_[eqs[static_cast<std::size_t>(k)]] = phi[k];
     }
   }
-  for (int eq : prescribed_list_) x_[eq] = target_[eq];
-  apply_prescribed_rotations();
+  snap_prescribed_rotations();
+  finish_prescribed_correction(dx);
+}
+
+void ConnectorSystem::finish_prescribed_correction(const Eigen::VectorXd& dx) {
+  // u + (target − u) may miss the target by an ulp; a correction that was the whole remaining
+  // increment lands on it exactly.
+  for (int eq : prescribed_list_) {
+    const double before = x_[eq] - dx[eq];
+    if (dx[eq] != 0 && dx[eq] == target_[eq] - before) x_[eq] = target_[eq];
+  }
+  update_prescribed_predictor();
 }
 
 void ConnectorSystem::measure(const Eigen::VectorXd& residual, const Eigen::VectorXd* correction,

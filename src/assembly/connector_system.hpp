@@ -42,8 +42,9 @@ class ConnectorSystem final : public NonlinearProblem {
   void add_load(int equation, double value);   // *CLOAD (and released reactions)
   void prescribe_motion(int connector, int component, double value);
   void add_connector_load(int connector, int component, double value);
-  // Moves prescribed DOFs to their targets (the first iterate of an increment) and, with
-  // `extrapolate`, adds `scale` times the last converged increment to the free DOFs.
+  // Starts an increment: with `extrapolate_scale` ≠ 0, adds that times the last converged
+  // increment to the free DOFs. Prescribed DOFs keep their values (finite rotations excepted):
+  // the next correction moves them to their targets, the free DOFs following linearly.
   void start_increment(double extrapolate_scale);
   bool is_prescribed(int equation) const { return prescribed_[static_cast<std::size_t>(equation)]; }
 
@@ -52,6 +53,7 @@ class ConnectorSystem final : public NonlinearProblem {
   const SparseMatrix& pattern() const override { return plan_.pattern; }
   EvalStatus evaluate(Eigen::VectorXd& residual, SparseMatrix* tangent) override;
   void apply_correction(const Eigen::VectorXd& correction) override;
+  bool moving_prescribed() const override { return predicting_; }
   void measure(const Eigen::VectorXd& residual, const Eigen::VectorXd* correction,
                IterationNorms& norms) const override;
 
@@ -98,6 +100,10 @@ class ConnectorSystem final : public NonlinearProblem {
                        double* force, double* delta) const;
   void scatter(const LocalEquations& l, const LocalSystem& local, SparseMatrix* tangent);
   void apply_prescribed_rotations();
+  void snap_prescribed_rotations();
+  bool is_finite_rotation(int equation) const;
+  void update_prescribed_predictor();
+  void finish_prescribed_correction(const Eigen::VectorXd& dx);
 
   const Model& model_;
   const AnalysisPlan& plan_;
@@ -110,6 +116,9 @@ class ConnectorSystem final : public NonlinearProblem {
   std::vector<std::uint8_t> prescribed_;
   std::vector<int> prescribed_list_;
   Eigen::VectorXd target_, internal_, external_;
+  // K_fp·(target − u)_p while prescribed DOFs are short of their targets (predicting_).
+  Eigen::VectorXd predictor_;
+  bool predicting_ = false;
   std::vector<std::int32_t> dynamic_of_connector_;
   std::vector<Dynamic> dynamics_;
 };

@@ -34,7 +34,8 @@ NewtonReport solve_increment(NonlinearProblem& problem, LinearSolver& solver,
     }
     IterationNorms& norms = report.iterations.emplace_back();
     problem.measure(residual, last_correction, norms);
-    if (criteria.converged(norms, iteration)) {
+    const bool predictor = problem.moving_prescribed();
+    if (!predictor && criteria.converged(norms, iteration)) {
       report.outcome = NewtonOutcome::Converged;
       return report;
     }
@@ -62,7 +63,7 @@ NewtonReport solve_increment(NonlinearProblem& problem, LinearSolver& solver,
       return report;
     }
     problem.apply_correction(correction);
-    if (options.line_search.max_iterations > 0) {
+    if (options.line_search.max_iterations > 0 && !predictor) {
       const EvalStatus searched = search_line(problem, correction, residual, options.line_search);
       if (!searched.ok) {
         report.outcome = NewtonOutcome::EvaluationFailed;

@@ -39,6 +39,10 @@ class NonlinearProblem {
   virtual EvalStatus evaluate(Eigen::VectorXd& residual, SparseMatrix* tangent) = 0;
   // Adds a Newton correction (rotations: R ← exp(Δθ̂) R under NLGEOM).
   virtual void apply_correction(const Eigen::VectorXd& correction) = 0;
+  // True while prescribed values are short of their targets: the next correction is the linear
+  // predictor that takes them there, so the state cannot have converged and a line search does
+  // not apply to that correction.
+  virtual bool moving_prescribed() const { return false; }
   // Fills the residual and constraint parts of `norms`; the correction parts when `correction`
   // is non-null.
   virtual void measure(const Eigen::VectorXd& residual, const Eigen::VectorXd* correction,

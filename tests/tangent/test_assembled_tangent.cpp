@@ -213,6 +213,58 @@ TEST(AssembledTangent, NewtonConvergesQuadraticallyOnASmoothNlgeomProblem) {
   EXPECT_NEAR(uy / (1 + ux), 0.5, 1e-12);
 }
 
+// A prescribed increment enters the first correction through the tangent at the start of the
+// increment (docs/decisions.md "Prescribed increments"): two AXIAL connectors under NLGEOM, node 2
+// free along x between node 1 (held) and node 3, which is moved by 0.1 along y. From the
+// undeformed state (no force, so no geometric stiffness) the x row of node 2 reads
+// (k + k/2)·Δu₂ = (k/2)·Δv₃ (bar 2–3 along (1, 1)/√2), so the first correction is exactly
+// Δu₂ = Δv₃/3; a first iterate that jumped to the target would linearise about the stretched
+// bar instead. Newton then converges on the NLGEOM answer.
+TEST(AssembledTangent, FirstCorrectionIsTheLinearPredictorOfAPrescribedIncrement) {
+  auto a = analyse(
+      "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n3, 2., 1., 0.\n*ELEMENT, TYPE=CONN3D2, ELSET=C\n"
+      "1, 1, 2\n2, 2, 3\n*CONNECTOR SECTION, ELSET=C, BEHAVIOR=B\nAXIAL,\n"
+      "*CONNECTOR BEHAVIOR, NAME=B\n*CONNECTOR ELASTICITY, COMPONENT=1\n1000.\n"
+      "*BOUNDARY\n1, 1, 3\n2, 2, 3\n3, 1, 3\n*STEP, NLGEOM\n*STATIC\n*END STEP\n");
+  ASSERT_TRUE(a->system);
+  ConnectorSystem& s = *a->system;
+  const DofMap& dofs = a->plan->dofs;
+  s.set_nlgeom(true);
+  s.clear_conditions();
+  for (int dof = 1; dof <= 3; ++dof) {
+    s.prescribe(dofs.equation(0, dof), 0.0);
+    s.prescribe(dofs.equation(2, dof), dof == 2 ? 0.1 : 0.0);
+  }
+  s.prescribe(dofs.equation(1, 2), 0.0);
+  s.prescribe(dofs.equation(1, 3), 0.0);
+  s.start_increment(0.0);
+  const int u2 = dofs.equation(1, 1), v3 = dofs.equation(2, 2);
+  EXPECT_TRUE(s.moving_prescribed());
+  EXPECT_EQ(s.value(v3), 0.0);  // not moved before the first correction
+
+  Eigen::VectorXd residual(s.size()), correction(s.size());
+  SparseMatrix tangent = s.pattern();
+  ASSERT_TRUE(s.evaluate(residual, &tangent).ok);
+  auto solver = make_linear_solver(SolverChoice::Dense, true, true);
+  std::string message;
+  ASSERT_EQ(solver->analyze(tangent, &message), LinearStatus::Ok) << message;
+  ASSERT_EQ(solver->factorize(tangent, &message), LinearStatus::Ok) << message;
+  ASSERT_EQ(solver->solve(-residual, correction, &message), LinearStatus::Ok) << message;
+  s.apply_correction(correction);
+  EXPECT_FALSE(s.moving_prescribed());
+  EXPECT_EQ(s.value(v3), 0.1);  // on the target exactly
+  EXPECT_NEAR(s.value(u2), 0.1 / 3.0, 1e-15);
+
+  const NewtonReport report = solve_tightly(s);
+  ASSERT_TRUE(report.converged()) << report.message;
+  // NLGEOM equilibrium of node 2 along x: bar 1 pulls with k(l₁ − 1), bar 2 (from node 2 to
+  // node 3 = (2, 1.1)) with k(l₂ − √2)·(1 − u₂)/l₂.
+  const double u = s.value(u2);
+  const double l1 = 1 + u, l2 = std::hypot(1 - u, 1.1);
+  EXPECT_NEAR(1000 * (l1 - 1), 1000 * (l2 - std::sqrt(2.0)) * (1 - u) / l2, 1e-9);
+  EXPECT_GT(std::abs(u - 0.1 / 3.0), 1e-4);  // the NLGEOM answer is not the linear one
+}
+
 // One load-controlled increment from the virgin state, solved tightly: node 1 held in its six
 // DOFs (a CARTESIAN or BUSHING connector activates the rotations of node a, connection-types.md
 // §1.1), node 2 loaded by `load` on its DOFs 1, 2, …
