@@ -6,9 +6,11 @@
 
 #include "src/cli/check_command.hpp"
 #include "src/cli/compare_command.hpp"
+#include "src/cli/huge_pages.hpp"
 #include "src/cli/run_command.hpp"
 
 int main(int argc, char** argv) {
+  clinch::reexec_with_huge_pages(argv);
   CLI::App app{"clinch: implicit analysis of connector elements from Abaqus-style keyword decks"};
   app.set_version_flag("--version", std::string("clinch ") + CLINCH_VERSION);
   app.require_subcommand(1);

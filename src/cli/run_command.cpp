@@ -17,6 +17,10 @@ namespace {
 
 constexpr int kExitCompleted = 0, kExitDeckErrors = 1, kExitStopped = 2, kExitUsage = 3;
 
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 std::string count_of(std::size_t n, const char* what) {
   return fmt::format("{} {}{}", n, what, n == 1 ? "" : "s");
 }
@@ -62,6 +66,8 @@ int run_deck(const RunCommandOptions& options) {
                           count_of(sink.warning_count(), "warning")));
     return kExitDeckErrors;
   }
+  const double read_seconds = seconds_since(start);
+  const auto plan_start = std::chrono::steady_clock::now();
   std::optional<AnalysisPlan> plan = build_analysis_plan(model, &error);
   if (!plan) {
     log.error(fmt::format("{}: error: {}", options.deck, error));
@@ -83,6 +89,8 @@ int run_deck(const RunCommandOptions& options) {
     log.error(error);
     return kExitUsage;
   }
+  const double plan_seconds = seconds_since(plan_start);
+  const auto analyze_start = std::chrono::steady_clock::now();
   std::unique_ptr<LinearSolver> solver =
       make_linear_solver(options.solver, plan->symmetric, !plan->has_multipliers);
   if (solver->analyze(plan->pattern, &error) != LinearStatus::Ok) {
@@ -90,6 +98,7 @@ int run_deck(const RunCommandOptions& options) {
     status.write_failed(error, 1, 0, 0.0);
     return kExitStopped;
   }
+  const double analyze_seconds = seconds_since(analyze_start);
   log.info(fmt::format("linear solver: {} ({} equations, {} stored entries)", solver->name(),
                        plan->pattern.n, plan->pattern.values.size()));
   Progress progress = Progress::for_stderr(options.quiet);
@@ -97,20 +106,24 @@ int run_deck(const RunCommandOptions& options) {
   const RunResult result =
       run_analysis(model, system, *solver, outputs, RunOptions{options.check_tangent});
   progress.finish();
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = seconds_since(start);
   const std::string summary = fmt::format("{}, {}, {} in {:.3f} s",
                                           count_of(static_cast<std::size_t>(result.increments), "increment"),
                                           count_of(static_cast<std::size_t>(result.iterations), "iteration"),
                                           count_of(static_cast<std::size_t>(result.cutbacks), "cutback"),
                                           seconds);
+  log.info(fmt::format("time: reading {:.3f} s, plan {:.3f} s, symbolic analysis {:.3f} s, "
+                       "Newton {:.3f} s, whole run {:.3f} s",
+                       read_seconds, plan_seconds, analyze_seconds, result.newton_seconds,
+                       seconds));
   if (result.factorizations > 0) {
     // The per-iteration cost against its floor, one factorization plus solve
     // (scripts/bench_lattice.sh reads this line).
-    log.info(fmt::format("factorize+solve: {:.6g} s per iteration ({} factorizations); whole run: "
-                         "{:.6g} s per iteration",
-                         result.linear_seconds / result.factorizations, result.factorizations,
-                         seconds / result.factorizations));
+    const double n = result.factorizations;
+    log.info(fmt::format("factorize+solve: {:.6g} s per iteration ({} factorizations); Newton: "
+                         "{:.6g} s per iteration; whole run: {:.6g} s per iteration",
+                         result.linear_seconds / n, result.factorizations,
+                         result.newton_seconds / n, seconds / n));
   }
   if (!result.completed) {
     log.error(fmt::format("{}: FAILED after {}", job, summary));

@@ -178,9 +178,10 @@ std::optional<ConnectorKinematics> ConnectorKinematics::create(const ConnectorSe
   k.linear_ok_ = initial.ok;
   k.linear_error_ = initial.message;
 
+  std::array<LinearNorm, 2> norms;
   if (k.translation_ == Translation::Radial && k.initial_position_[0] <= setup.length_tolerance &&
       has_component(k.existing_, 1)) {
-    LinearNorm& norm = k.linear_norms_[0];
+    LinearNorm& norm = norms[0];
     norm.row = 0;
     norm.tolerance = setup.length_tolerance;
     for (int i = 0; i < 2; ++i) {
@@ -190,7 +191,7 @@ std::optional<ConnectorKinematics> ConnectorKinematics::create(const ConnectorSe
     }
   }
   if (k.rotation_ == Rotation::FlexionTorsion && k.initial_position_[3] <= kFlexionTolerance) {
-    LinearNorm& norm = k.linear_norms_[1];
+    LinearNorm& norm = norms[1];
     norm.row = 3;
     norm.tolerance = kFlexionTolerance;
     const std::array<Jet<6>, 2> v = flexion_vector(relative_rotation_jet<6>(k.ea0_, k.eb0_, 0, 3));
@@ -198,6 +199,9 @@ std::optional<ConnectorKinematics> ConnectorKinematics::create(const ConnectorSe
       norm.value[i] = v[i].v;
       for (int c = 0; c < 6; ++c) norm.b(i, kRotationColumns[c]) = v[i].g[c];
     }
+  }
+  if (norms[0].row >= 0 || norms[1].row >= 0) {
+    k.linear_norms_ = std::make_shared<const std::array<LinearNorm, 2>>(norms);
   }
   return k;
 }
@@ -383,7 +387,8 @@ void ConnectorKinematics::evaluate_linear(const NodePose& a, const NodePose& b,
   out.b = b0_;
   out.change.noalias() = b0_ * q;
   out.position = initial_position_ + out.change;
-  for (const LinearNorm& norm : linear_norms_) {
+  if (!linear_norms_) return;
+  for (const LinearNorm& norm : *linear_norms_) {
     if (norm.row < 0) continue;
     const Eigen::Vector2d v = norm.value + norm.b * q;
     const double length = v.norm();

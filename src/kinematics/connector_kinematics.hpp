@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -105,7 +106,8 @@ class ConnectorKinematics {
   ComponentMask computed_ = 0;  // components the 3-D formulas produce
   Vector6 initial_position_ = Vector6::Zero();
   Matrix6x12 b0_ = Matrix6x12::Zero();
-  std::array<LinearNorm, 2> linear_norms_;
+  // Null unless a component needs it (rare, and 450 bytes per connector of a large deck).
+  std::shared_ptr<const std::array<LinearNorm, 2>> linear_norms_;
   bool linear_ok_ = true;
   std::string linear_error_;
 };

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "src/solver/convergence_criteria.hpp"
@@ -88,7 +89,10 @@ class Driver {
     iterations = 0;
     changes = 0;
     for (;;) {
+      const auto start = std::chrono::steady_clock::now();
       NewtonReport report = solve_increment(system_, solver_, criteria_, options);
+      result_.newton_seconds +=
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       result_.linear_seconds += report.linear_seconds;
       result_.factorizations += report.factorizations;
       for (std::size_t i = 0; i < report.iterations.size(); ++i) {

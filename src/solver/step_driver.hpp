@@ -38,6 +38,7 @@ struct RunResult {
   int increments = 0, iterations = 0, cutbacks = 0;
   int factorizations = 0;
   double linear_seconds = 0;  // wall time in factorize + solve
+  double newton_seconds = 0;  // wall time in Newton (evaluation, assembly, factorize, solve)
 };
 
 RunResult run_analysis(const Model& model, ConnectorSystem& system, LinearSolver& solver,
