@@ -74,9 +74,15 @@ clinch_reaction() {
 clinch_factorize_solve() {
   sed -n 's/.*factorize+solve: *\([0-9.eE+-]*\) *s.*/\1/p' "$1/job.log" 2>/dev/null | tail -n 1
 }
+# ... and "Newton: Y s per iteration" (Newton's wall time, evaluation and assembly included, over
+# its factorizations).
+clinch_newton() {
+  sed -n 's/.*Newton: *\([0-9.eE+-]*\) *s per iteration.*/\1/p' "$1/job.log" 2>/dev/null | tail -n 1
+}
 
 # Runs one code on one deck up to $runs times and prints "<median wall s> <median CPU s>
-# <median MB> <iterations> <reaction> <factorize+solve s or ->", or "failed".
+# <median MB> <iterations> <reaction> <factorize+solve s or -> <Newton s per iteration or ->", or
+# "failed".
 measure() {
   local code=$1 deck=$2 wd=$3
   local times=() cpus=() rss=() ok=1 run secs kb user sys status
@@ -102,7 +108,7 @@ measure() {
     echo failed
     return
   fi
-  local its reaction fs=-
+  local its reaction fs=- nw=-
   if [ "$code" = ccx ]; then
     its=$(ccx_iterations "$wd")
     reaction=$(ccx_reaction "$wd")
@@ -111,9 +117,11 @@ measure() {
     reaction=$(clinch_reaction "$wd")
     fs=$(clinch_factorize_solve "$wd")
     fs=${fs:--}
+    nw=$(clinch_newton "$wd")
+    nw=${nw:--}
   fi
   echo "$(printf '%s\n' "${times[@]}" | median) $(printf '%s\n' "${cpus[@]}" | median)" \
-    "$(printf '%s\n' "${rss[@]}" | median | awk '{printf "%.1f", $1 / 1024}') $its $reaction $fs"
+    "$(printf '%s\n' "${rss[@]}" | median | awk '{printf "%.1f", $1 / 1024}') $its $reaction $fs $nw"
 }
 
 ccx_version=$(ccx -v 2>/dev/null | grep -o 'Version [0-9.]*' | head -n 1) || true
@@ -175,14 +183,21 @@ threads=$(grep -m 1 -o 'Using up to [0-9]* cpu(s) for spooles' "$dir"/ccx-*/stdo
 echo "CalculiX used ${threads:-? cpu(s)} for SPOOLES; load average at the end:" \
   "$(cut -d ' ' -f 1-3 /proc/loadavg)."
 
-printf "\n%-9s %-7s %3s | %12s %16s %8s\n" law element N clinch_s/it factorize+solve ratio
+printf "\n%-9s %-7s %3s | %12s %12s %16s %8s %8s\n" law element N run_s/it newton_s/it \
+  factorize+solve run_rat newt_rat
 while IFS='|' read -r head _ clinch; do
   read -r law element n _ <<< "$head"
-  read -r ls _ _ li _ fs <<< "$clinch"
+  read -r ls _ _ li _ fs nw <<< "$clinch"
   [ "$ls" = failed ] && continue
-  awk -v l="$law" -v e="$element" -v n="$n" -v s="$ls" -v i="$li" -v f="${fs:--}" 'BEGIN {
+  awk -v l="$law" -v e="$element" -v n="$n" -v s="$ls" -v i="$li" -v f="${fs:--}" \
+      -v w="${nw:--}" 'BEGIN {
     per = i > 0 ? s / i : 0
-    if (f == "-") printf "%-9s %-7s %3s | %12.4f %16s %8s\n", l, e, n, per, "not reported", "-"
-    else printf "%-9s %-7s %3s | %12.4f %16.4f %8.2f\n", l, e, n, per, f, (f > 0 ? per / f : 0) }'
+    if (f == "-" || w == "-") printf "%-9s %-7s %3s | %12.4f %12s %16s %8s %8s\n", l, e, n, per, "-",
+                                     "not reported", "-", "-"
+    else printf "%-9s %-7s %3s | %12.4f %12.4f %16.4f %8.2f %8.2f\n", l, e, n, per, w, f,
+                (f > 0 ? per / f : 0), (f > 0 ? w / f : 0) }'
 done < "$results"
-echo "clinch_s/it is the whole run's wall time over its Newton iterations (target: ratio <= 1.5)."
+echo "run_s/it: the whole run's median wall time (reading, plan, symbolic analysis, output"
+echo "included) over its Newton iterations; newton_s/it: the time inside Newton (evaluation,"
+echo "assembly, factorization, solve) per iteration of the last run; factorize+solve: one"
+echo "CHOLMOD factorization plus solve of the run's tangents (target: newt_rat <= 1.5)."

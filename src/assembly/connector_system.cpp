@@ -120,9 +120,15 @@ void ConnectorSystem::add_connector_load(int connector, int component, double va
 
 void ConnectorSystem::start_increment(double extrapolate_scale) {
   if (extrapolate_scale != 0) {
+    // Prescribed DOFs too, so that the extrapolated state is consistent; what is left of their
+    // increment (none under a steady ramp) the first correction takes.
     for (int eq = 0; eq < plan_.dofs.node_equations(); ++eq) {
-      if (!prescribed_[static_cast<std::size_t>(eq)] && !is_finite_rotation(eq)) {
-        x_[eq] += extrapolate_scale * dx_n_[eq];
+      if (is_finite_rotation(eq)) continue;
+      x_[eq] += extrapolate_scale * dx_n_[eq];
+      const double target = target_[eq];
+      if (prescribed_[static_cast<std::size_t>(eq)] &&
+          std::abs(x_[eq] - target) <= 1e-12 * std::max(std::abs(target), std::abs(x_[eq]))) {
+        x_[eq] = target;  // the ramp's round-off
       }
     }
   }

@@ -43,8 +43,9 @@ class ConnectorSystem final : public NonlinearProblem {
   void prescribe_motion(int connector, int component, double value);
   void add_connector_load(int connector, int component, double value);
   // Starts an increment: with `extrapolate_scale` ≠ 0, adds that times the last converged
-  // increment to the free DOFs. Prescribed DOFs keep their values (finite rotations excepted):
-  // the next correction moves them to their targets, the free DOFs following linearly.
+  // increment to the DOFs (finite rotations excepted). Prescribed DOFs do not jump to their
+  // targets (finite rotations excepted): the next correction takes them there, the free DOFs
+  // following linearly.
   void start_increment(double extrapolate_scale);
   bool is_prescribed(int equation) const { return prescribed_[static_cast<std::size_t>(equation)]; }
 

@@ -263,6 +263,15 @@ TEST(AssembledTangent, FirstCorrectionIsTheLinearPredictorOfAPrescribedIncrement
   const double l1 = 1 + u, l2 = std::hypot(1 - u, 1.1);
   EXPECT_NEAR(1000 * (l1 - 1), 1000 * (l2 - std::sqrt(2.0)) * (1 - u) / l2, 1e-9);
   EXPECT_GT(std::abs(u - 0.1 / 3.0), 1e-4);  // the NLGEOM answer is not the linear one
+
+  // The next increment of a steady ramp, extrapolated: the prescribed DOF moves with the free
+  // ones and lands on its target, so nothing is left for a predictor.
+  s.commit();
+  s.prescribe(v3, 0.2);
+  s.start_increment(1.0);
+  EXPECT_FALSE(s.moving_prescribed());
+  EXPECT_EQ(s.value(v3), 0.2);
+  EXPECT_NEAR(s.value(u2), 2 * u, 1e-15);
 }
 
 // One load-controlled increment from the virgin state, solved tightly: node 1 held in its six
