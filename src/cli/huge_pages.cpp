@@ -1,5 +1,6 @@
 #include "src/cli/huge_pages.hpp"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cstdlib>
@@ -19,21 +20,34 @@ bool transparent_huge_pages_on_request() {
   return text.find("[madvise]") != std::string::npos;
 }
 
-bool wanted() {
+// Re-executing costs a second start-up (about 10 ms); it pays off only when some input is large.
+constexpr off_t kLargeInput = 4 << 20;
+
+bool has_large_input(char** argv) {
+  for (char** arg = argv + 1; *arg; ++arg) {
+    struct stat info {};
+    if (stat(*arg, &info) == 0 && S_ISREG(info.st_mode) && info.st_size >= kLargeInput) {
+      return true;
+    }
+  }
+  return false;
+}
+
+bool wanted(char** argv) {
   const char* setting = std::getenv("CLINCH_HUGE_PAGES");
   if (setting && std::strcmp(setting, "0") == 0) return false;
   const char* tunables = std::getenv("GLIBC_TUNABLES");
   if (tunables && std::strstr(tunables, "glibc.malloc.hugetlb")) return false;  // set, or done
   const char* preload = std::getenv("LD_PRELOAD");
   if (preload && std::strstr(preload, "vgpreload")) return false;  // valgrind
-  return transparent_huge_pages_on_request();
+  return has_large_input(argv) && transparent_huge_pages_on_request();
 }
 
 }  // namespace
 
 void reexec_with_huge_pages(char** argv) {
 #if defined(__linux__) && defined(__GLIBC__)
-  if (!wanted()) return;
+  if (!wanted(argv)) return;
   const char* tunables = std::getenv("GLIBC_TUNABLES");
   const std::string value =
       tunables && *tunables ? std::string(tunables) + ":" + kTunable : std::string(kTunable);

@@ -9,8 +9,9 @@
 namespace clinch {
 
 // Re-executes the program with glibc.malloc.hugetlb=1 when that helps: Linux with THP in
-// "madvise" mode, the tunable not already set, CLINCH_HUGE_PAGES not "0", and not under
-// valgrind (whose tools would lose the process). Returns (and the run goes on unchanged) when any
+// "madvise" mode, an argument that names a file of 4 MiB or more (the deck; a second start-up
+// costs more than a small deck gains), the tunable not already set, CLINCH_HUGE_PAGES not "0",
+// and not under valgrind (whose tools would lose the process). Returns (and the run goes on unchanged) when any
 // of that does not hold or the re-execution fails.
 void reexec_with_huge_pages(char** argv);
 

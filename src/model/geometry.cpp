@@ -247,20 +247,22 @@ void finalize_geometry(Model& model, DiagnosticSink& sink) {
   }
   resolve_element_nodes(model, 0, sink);
 
-  model.nodes.clear();
-  model.elements.clear();
-  model.nodes.reserve(static_cast<std::size_t>(nodes));
-  model.elements.reserve(static_cast<std::size_t>(elements));
-  for (std::int32_t i = 0; i < static_cast<std::int32_t>(model.instances.size()); ++i) {
+  if (model.instances.size() == 1) {
+    // A flat deck: the root part's arrays are the global arrays (no copy, and no second buffer
+    // of the size of the model at the peak).
+    model.nodes = std::move(model.parts[0].nodes);
+    model.elements = std::move(model.parts[0].elements);
+  } else {
+    model.nodes.clear();
+    model.elements.clear();
+    model.nodes.reserve(static_cast<std::size_t>(nodes));
+    model.elements.reserve(static_cast<std::size_t>(elements));
+  }
+  for (std::int32_t i = 0; model.instances.size() > 1 &&
+                           i < static_cast<std::int32_t>(model.instances.size()); ++i) {
     const Instance& instance = model.instances[i];
     const Part& part = model.parts[instance.part];
     const bool placed = i != 0;
-    if (!placed && model.instances.size() == 1) {
-      // A flat deck: the root part's arrays are the global arrays (no copy).
-      model.nodes = std::move(model.parts[0].nodes);
-      model.elements = std::move(model.parts[0].elements);
-      continue;
-    }
     for (Node node : part.nodes) {
       node.instance = i;
       if (placed) node.x = instance.place(node.x);

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <unordered_map>
 
@@ -58,7 +59,8 @@ class OutputValidator {
 
   void run() {
     for (const Step& step : model_.history.steps) {
-      columns_.clear();
+      set_columns_.clear();
+      target_columns_.clear();
       for (const OutputRequest& request : step.outputs) {
         for (const ElementOutputRequest& block : request.elements) {
           if (!block.has_elset) continue;
@@ -98,15 +100,57 @@ class OutputValidator {
 
  private:
   // W0903: a column produced twice in one step is written once; the second request is warned
-  // about, once per identifier (output-variables.md §1.2).
-  void add_column(const std::string& column, const OutputIdentifier& id, bool& reported) {
-    auto [it, inserted] = columns_.emplace(column, id.loc);
+  // about, once per identifier (output-variables.md §1.2). A column is a variable label (CTF1,
+  // CDERF-normal, U2, …) at a target. Set totals are few and keyed by their names; element and
+  // node columns by numbers (label id, node or element, index), so that a request over 10⁵
+  // elements formats no names unless it repeats one.
+  void add_set_column(const std::string& column, const OutputIdentifier& id, bool& reported) {
+    auto [it, inserted] = set_columns_.emplace(column, id.loc);
+    if (!inserted && !reported) report_duplicate(column, id, it->second, reported);
+  }
+
+  int label_id(const std::string& label) {
+    auto [it, inserted] = label_ids_.emplace(label, static_cast<int>(labels_.size()));
+    if (inserted) labels_.push_back(label);
+    return it->second;
+  }
+
+  void add_target_column(int label, bool node, std::int32_t index, const OutputIdentifier& id,
+                         bool& reported) {
+    const std::uint64_t key = (static_cast<std::uint64_t>(label) << 33) |
+                              (static_cast<std::uint64_t>(node) << 32) |
+                              static_cast<std::uint32_t>(index);
+    auto [it, inserted] = target_columns_.emplace(key, id.loc);
     if (inserted || reported) return;
+    const auto i = static_cast<std::size_t>(index);
+    const std::string where =
+        node ? qualified_label(model_, model_.nodes[i].instance, model_.nodes[i].label)
+             : qualified_label(model_, model_.elements[i].instance, model_.elements[i].label);
+    report_duplicate(labels_[static_cast<std::size_t>(label)] + "@" + where, id, it->second,
+                     reported);
+  }
+
+  void report_duplicate(const std::string& column, const OutputIdentifier& id, SourceLoc first,
+                        bool& reported) {
     reported = true;
     sink_
         .report(DiagCode::output_duplicate, id.loc,
                 fmt::format("column {} is already requested", column))
-        .notes.push_back({it->second, "first requested here"});
+        .notes.push_back({first, "first requested here"});
+  }
+
+  // Label ids of an identifier's columns by component (0: the variable's own name), looked up
+  // once per identifier.
+  struct ComponentLabels {
+    std::array<int, 7> id;
+    ComponentLabels() { id.fill(-1); }
+  };
+  int component_label(ComponentLabels& labels, const std::string& variable, int component) {
+    int& id = labels.id[static_cast<std::size_t>(component)];
+    if (id < 0) {
+      id = label_id(component == 0 ? variable : output_column_label(variable, component));
+    }
+    return id;
   }
 
   std::string set_label(const TargetRef& set, bool element) const {
@@ -217,31 +261,36 @@ class OutputValidator {
     std::vector<const ConnectorSection*> reported_sections;
     std::vector<const ConnectorBehavior*> reported_behaviors;
     std::uint8_t total_components = 0;
+    ComponentLabels labels;
+    const ConnectorBehavior* last_behavior = nullptr;
+    BehaviorFeatures features;
     for (std::int32_t e : elements) {
       const Element& element = model_.elements[static_cast<std::size_t>(e)];
       if (is_spring(element.type) != spring_variable) continue;  // not defined for this kind
       ++matching;
-      const std::string where = qualified_label(model_, element.instance, element.label);
       if (spring_variable) {
         total_components |= 1;
         if (!totals_only) {
-          add_column(output_column_label(id.variable, 1) + "@" + where, id, duplicate_reported);
+          add_target_column(component_label(labels, id.variable, 1), false, e, id,
+                            duplicate_reported);
         }
         continue;
       }
       const ConnectorSection* section = section_of(e);
       if (!section) continue;  // E0514 or a section error was reported
       const ConnectorBehavior* behavior = behavior_of(*section);
-      const BehaviorFeatures features =
-          behavior ? behavior_features(*behavior) : BehaviorFeatures{};
+      if (behavior != last_behavior) {  // features of a null behaviour: the default
+        features = behavior ? behavior_features(*behavior) : BehaviorFeatures{};
+        last_behavior = behavior;
+      }
       if (!produces(features, info->producer)) ++without_producer;
       if (info->producer == OutputProducer::Derived) {
         std::vector<std::string> names = derived_columns(id, behavior, reported_behaviors);
         if (names.empty() && (id.derived_name.empty() || !behavior)) ++without_producer;
         for (const std::string& name : names) {
           if (!totals_only) {
-            add_column(output_column_label(id.variable, 0, name) + "@" + where, id,
-                       duplicate_reported);
+            add_target_column(label_id(output_column_label(id.variable, 0, name)), false, e, id,
+                              duplicate_reported);
           }
         }
         continue;
@@ -249,7 +298,10 @@ class OutputValidator {
       const std::uint8_t defined =
           static_cast<std::uint8_t>(section->available | section->constrained);
       if (id.components == 0) {
-        if (!totals_only) add_column(id.variable + "@" + where, id, duplicate_reported);
+        if (!totals_only) {
+          add_target_column(component_label(labels, id.variable, 0), false, e, id,
+                            duplicate_reported);
+        }
         continue;
       }
       const bool chosen = id.explicit_component || id.components != kAll;
@@ -265,7 +317,8 @@ class OutputValidator {
         if (!(id.components & defined & (1u << (c - 1)))) continue;
         total_components |= static_cast<std::uint8_t>(1u << (c - 1));
         if (!totals_only) {
-          add_column(output_column_label(id.variable, c) + "@" + where, id, duplicate_reported);
+          add_target_column(component_label(labels, id.variable, c), false, e, id,
+                            duplicate_reported);
         }
       }
     }
@@ -290,8 +343,8 @@ class OutputValidator {
     if (totals) {
       for (int c = 1; c <= 6; ++c) {
         if (!(total_components & (1u << (c - 1)))) continue;
-        add_column(output_column_label(id.variable, spring_variable ? 1 : c) + "@" + set_name, id,
-                   duplicate_reported);
+        add_set_column(output_column_label(id.variable, spring_variable ? 1 : c) + "@" + set_name,
+                       id, duplicate_reported);
       }
     }
   }
@@ -300,31 +353,34 @@ class OutputValidator {
                        const std::vector<std::int32_t>& nodes, PrintRequest::Totals totals) {
     bool duplicate_reported = false;
     std::uint8_t total_components = 0;
+    ComponentLabels labels;
     for (std::int32_t n : nodes) {
       // A DOF that is not active at the node has no column (output-variables.md §3).
       const std::uint8_t components =
           static_cast<std::uint8_t>(id.components & active_[static_cast<std::size_t>(n)]);
       total_components |= components;
       if (totals == PrintRequest::Totals::Only) continue;
-      const Node& node = model_.nodes[static_cast<std::size_t>(n)];
-      const std::string where = qualified_label(model_, node.instance, node.label);
       for (int c = 1; c <= 6; ++c) {
         if (!(components & (1u << (c - 1)))) continue;
-        add_column(output_column_label(id.variable, c) + "@" + where, id, duplicate_reported);
+        add_target_column(component_label(labels, id.variable, c), true, n, id,
+                          duplicate_reported);
       }
     }
     if (totals == PrintRequest::Totals::No) return;
     const std::string set_name = set_label(set, false);
     for (int c = 1; c <= 6; ++c) {
       if (!(total_components & (1u << (c - 1)))) continue;
-      add_column(output_column_label(id.variable, c) + "@" + set_name, id, duplicate_reported);
+      add_set_column(output_column_label(id.variable, c) + "@" + set_name, id, duplicate_reported);
     }
   }
 
   const Model& model_;
   const std::vector<DofMask>& active_;
   DiagnosticSink& sink_;
-  std::unordered_map<std::string, SourceLoc> columns_;
+  std::unordered_map<std::string, SourceLoc> set_columns_;
+  std::unordered_map<std::uint64_t, SourceLoc> target_columns_;
+  std::unordered_map<std::string, int> label_ids_;  // column labels of the whole deck
+  std::vector<std::string> labels_;
 };
 
 }  // namespace
