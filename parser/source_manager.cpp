@@ -1,5 +1,6 @@
 #include "parser/source_manager.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -26,18 +27,25 @@ std::optional<std::uint32_t> SourceManager::load(const std::string& path, Source
     if (error) *error = std::strerror(errno);
     return std::nullopt;
   }
-  // Read straight into the text when the size is known (a regular file): one allocation, one
+  // Read straight into the buffer when the size is known (a regular file): one allocation, one
   // copy. Anything left after that (a file that grew) is appended in chunks.
-  std::string text;
   std::error_code size_error;
-  const auto size = std::filesystem::file_size(path, size_error);
-  if (!size_error && size > 0) {
-    text.resize(static_cast<std::size_t>(size));
-    text.resize(std::fread(text.data(), 1, text.size(), handle));
-  }
+  const auto expected = std::filesystem::file_size(path, size_error);
+  std::size_t capacity = size_error ? 0 : static_cast<std::size_t>(expected);
+  std::unique_ptr<char[]> bytes(new char[std::max<std::size_t>(capacity, 1)]);
+  std::size_t size = capacity > 0 ? std::fread(bytes.get(), 1, capacity, handle) : 0;
   char buffer[1 << 16];
   std::size_t got;
-  while ((got = std::fread(buffer, 1, sizeof buffer, handle)) > 0) text.append(buffer, got);
+  while ((got = std::fread(buffer, 1, sizeof buffer, handle)) > 0) {
+    if (size + got > capacity) {
+      capacity = std::max(2 * capacity, size + got);
+      std::unique_ptr<char[]> grown(new char[capacity]);
+      std::memcpy(grown.get(), bytes.get(), size);
+      bytes = std::move(grown);
+    }
+    std::memcpy(bytes.get() + size, buffer, got);
+    size += got;
+  }
   const bool failed = std::ferror(handle) != 0;
   std::fclose(handle);
   if (failed) {
@@ -47,7 +55,8 @@ std::optional<std::uint32_t> SourceManager::load(const std::string& path, Source
   SourceFile file;
   file.path = path;
   file.display_name = path;
-  file.text = std::move(text);
+  file.text = std::string_view(bytes.get(), size);
+  file.bytes = std::move(bytes);
   file.included_from = included_from;
   files_.push_back(std::move(file));
   return static_cast<std::uint32_t>(files_.size() - 1);
@@ -58,7 +67,9 @@ std::uint32_t SourceManager::add_buffer(std::string display_name, std::string te
   SourceFile file;
   file.path = display_name;
   file.display_name = std::move(display_name);
-  file.text = std::move(text);
+  file.bytes.reset(new char[std::max<std::size_t>(text.size(), 1)]);
+  std::memcpy(file.bytes.get(), text.data(), text.size());
+  file.text = std::string_view(file.bytes.get(), text.size());
   file.included_from = included_from;
   files_.push_back(std::move(file));
   return static_cast<std::uint32_t>(files_.size() - 1);
@@ -67,7 +78,7 @@ std::uint32_t SourceManager::add_buffer(std::string display_name, std::string te
 void SourceManager::index_lines(SourceFile& file) const {
   if (!file.line_starts.empty()) return;
   file.line_starts.push_back(0);
-  const std::string& text = file.text;
+  const std::string_view text = file.text;
   const char* begin = text.data();
   const char* end = begin + text.size();
   for (const char* p = begin; p < end;) {
@@ -85,9 +96,9 @@ std::string_view SourceManager::line_text(SourceLoc loc) const {
   if (loc.line > file.line_starts.size()) return {};
   std::size_t begin = file.line_starts[loc.line - 1];
   std::size_t end = file.text.find('\n', begin);
-  if (end == std::string::npos) end = file.text.size();
+  if (end == std::string_view::npos) end = file.text.size();
   if (end > begin && file.text[end - 1] == '\r') --end;
-  return std::string_view(file.text).substr(begin, end - begin);
+  return file.text.substr(begin, end - begin);
 }
 
 std::string SourceManager::format(SourceLoc loc) const {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -16,7 +17,11 @@ namespace clinch {
 struct SourceFile {
   std::string path;          // as opened (resolved against the including file's directory)
   std::string display_name;  // as shown in diagnostics
-  std::string text;          // whole contents
+  std::string_view text;     // whole contents, in `bytes`
+  // Owns the contents. Not a std::string: its resize() would zero the buffer before the read
+  // overwrites it, a pass over fresh memory that costs as much as the read itself (docs/
+  // performance.md).
+  std::unique_ptr<char[]> bytes;
   std::vector<std::uint32_t> line_starts;  // byte offset of each line (filled lazily)
   SourceLoc included_from;   // the *INCLUDE or INPUT= value that opened it; invalid for the deck
 };
