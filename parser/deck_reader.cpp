@@ -238,7 +238,7 @@ class Reader {
       return;
     }
     close_block();
-    open_block(std::move(line));
+    open_block(std::move(line), stream ? stream->scanner().lines_before_next_keyword() : 0);
   }
 
   void include(const KeywordLine& line, LineStream& stream) {
@@ -533,7 +533,7 @@ class Reader {
     }
   }
 
-  void open_block(KeywordLine line) {
+  void open_block(KeywordLine line, std::size_t expected_lines) {
     block_line_ = std::move(line);
     const KeywordLine& kl = block_line_;
     skip_block_ = true;
@@ -575,6 +575,7 @@ class Reader {
     data_line_reported_ = false;
     block_ctx_ = std::make_unique<BlockContext>(block_line_, *spec, block_params_, model_,
                                                 position_, sink_, sources_);
+    block_ctx_->set_expected_lines(expected_lines);
     handler_ = spec->make_handler ? spec->make_handler() : nullptr;
     if (handler_) handler_->begin(*block_ctx_);
     read_input_file();

@@ -268,6 +268,18 @@ LineScanner::LineScanner(std::string_view text, std::uint32_t file_index, Diagno
                          bool checks)
     : text_(text), file_(file_index), checks_(checks), sink_(sink) {}
 
+std::size_t LineScanner::lines_before_next_keyword() const {
+  std::size_t lines = 0;
+  for (std::size_t at = offset_; at < text_.size(); ++lines) {
+    const bool keyword = text_[at] == '*' && (at + 1 == text_.size() || text_[at + 1] != '*');
+    if (keyword) break;
+    const void* nl = std::memchr(text_.data() + at, '\n', text_.size() - at);
+    if (!nl) return lines + 1;
+    at = static_cast<std::size_t>(static_cast<const char*>(nl) - text_.data()) + 1;
+  }
+  return lines;
+}
+
 LineScanner::Kind LineScanner::next() {
   if (offset_ >= text_.size()) return Kind::End;
   const char* base = text_.data() + offset_;

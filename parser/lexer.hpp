@@ -85,6 +85,10 @@ class LineScanner {
   std::uint32_t first_non_blank_column() const { return first_non_blank_ + 1; }
   // The current line had a line-level error (E0107): callers skip it.
   bool line_rejected() const { return rejected_; }
+  // Lines after the current one up to the next keyword line or the end of the file (comment
+  // lines included): a bound on the data lines of the block that starts here, so that a handler
+  // can size its storage once (a 10⁶-node block would otherwise grow its array 20 times).
+  std::size_t lines_before_next_keyword() const;
 
  private:
   std::string_view text_;

@@ -11,10 +11,18 @@
 namespace clinch {
 namespace {
 
+// Room for `lines` more entries, sized once for a block's lines; growth stays geometric, so that
+// many small blocks do not reallocate each time.
+template <typename T>
+void reserve_for_block(std::vector<T>& v, std::size_t lines) {
+  if (v.size() + lines > v.capacity()) v.reserve(std::max(v.size() + lines, 2 * v.capacity()));
+}
+
 class NodeHandler : public KeywordHandler {
  public:
   void begin(BlockContext& ctx) override {
     part_ = &ctx.model().parts[ctx.position().part];
+    reserve_for_block(part_->nodes, ctx.expected_lines());
     if (auto system = ctx.params().enum_value("SYSTEM"); !system.empty() && system != "R") {
       ctx.report(DiagCode::unsupported_option, ctx.params().loc("SYSTEM", true),
                  fmt::format("SYSTEM={} is not supported by clinch (only R)", system));
@@ -96,6 +104,7 @@ class ElementHandler : public KeywordHandler {
   void begin(BlockContext& ctx) override {
     part_ = &ctx.model().parts[ctx.position().part];
     part_index_ = ctx.position().part;
+    reserve_for_block(part_->elements, ctx.expected_lines());
     const Field* type = ctx.params().value("TYPE");
     if (!type) return;
     std::string folded = fold_name(type->text);

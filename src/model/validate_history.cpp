@@ -7,7 +7,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
+#include <memory>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -46,40 +48,44 @@ std::string element_name(const Model& model, std::int32_t element) {
 
 // The conditions that are in force (BCs by node and DOF, motions by element and component),
 // carried from model data through the steps (keywords.md §13).
-// Dense per-(node or element, DOF or component) flags with the location of the line that first
-// set each entry: one byte of flags and one location per index, so that a deck with a million
-// constrained nodes costs a few bytes per node (ARCHITECTURE.md, performance by design).
+// Per-(node or element, DOF or component) flags with the location of the line that first set
+// each entry: one byte of flags and one location per index, in pages of 4096 indices allocated
+// when first touched, so that a deck with a million constrained nodes costs a few bytes per node
+// and one that holds a handful of the million costs a few pages (ARCHITECTURE.md, performance by
+// design).
 class DofTable {
  public:
   // Sets (index, dof). Returns true when it was not set; otherwise *previous is the location of
   // the line that set the index first.
   bool insert(std::int32_t index, int dof, SourceLoc loc, SourceLoc* previous = nullptr) {
     const auto i = static_cast<std::size_t>(index);
-    if (i >= mask_.size()) {
-      mask_.resize(i + 1, 0);
-      first_.resize(i + 1);
-    }
+    if (i / kPage >= pages_.size()) pages_.resize(i / kPage + 1);
+    std::unique_ptr<Page>& page = pages_[i / kPage];
+    if (!page) page = std::make_unique<Page>();
+    std::uint8_t& mask = page->mask[i % kPage];
     const auto bit = static_cast<std::uint8_t>(1u << (dof - 1));
-    if (mask_[i] == 0) first_[i] = loc;
-    if (mask_[i] & bit) {
-      if (previous) *previous = first_[i];
+    if (mask == 0) page->first[i % kPage] = loc;
+    if (mask & bit) {
+      if (previous) *previous = page->first[i % kPage];
       return false;
     }
-    mask_[i] |= bit;
+    mask |= bit;
     return true;
   }
   bool contains(std::int32_t index, int dof) const {
     const auto i = static_cast<std::size_t>(index);
-    return i < mask_.size() && (mask_[i] >> (dof - 1)) & 1u;
+    if (i / kPage >= pages_.size() || !pages_[i / kPage]) return false;
+    return (pages_[i / kPage]->mask[i % kPage] >> (dof - 1)) & 1u;
   }
-  void clear() {
-    mask_.clear();
-    first_.clear();
-  }
+  void clear() { pages_.clear(); }
 
  private:
-  std::vector<std::uint8_t> mask_;
-  std::vector<SourceLoc> first_;
+  static constexpr std::size_t kPage = 4096;
+  struct Page {
+    std::array<std::uint8_t, kPage> mask{};
+    std::array<SourceLoc, kPage> first{};
+  };
+  std::vector<std::unique_ptr<Page>> pages_;
 };
 
 struct InForce {
