@@ -6,10 +6,12 @@
 #include <fmt/format.h>
 
 #include "parser/deck_reader.hpp"
+#include "src/cli/blas_threads.hpp"
 
 namespace clinch {
 
 int run_check(const std::string& deck_path, DiagnosticFormat format) {
+  stop_idle_blas_threads();
   SourceManager sources;
   DiagnosticSink sink;
   Model model;

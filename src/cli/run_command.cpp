@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "parser/deck_reader.hpp"
+#include "src/cli/blas_threads.hpp"
 #include "src/assembly/analysis_plan.hpp"
 #include "src/assembly/connector_system.hpp"
 #include "src/output/history_columns.hpp"
@@ -29,6 +30,8 @@ std::string count_of(std::size_t n, const char* what) {
 
 int run_deck(const RunCommandOptions& options) {
   namespace fs = std::filesystem;
+  stop_idle_blas_threads();  // until the first factorization
+
   const auto start = std::chrono::steady_clock::now();
   SourceManager sources;
   DiagnosticSink sink;
