@@ -460,10 +460,10 @@ void ConnectorSystem::apply_correction(const Eigen::VectorXd& dx) {
 
 void ConnectorSystem::finish_prescribed_correction(const Eigen::VectorXd& dx) {
   // u + (target − u) may miss the target by an ulp; a correction that was the whole remaining
-  // increment lands on it exactly.
+  // increment lands on it exactly (a partial step, s < 1 of a line search, stays well outside).
   for (int eq : prescribed_list_) {
-    const double before = x_[eq] - dx[eq];
-    if (dx[eq] != 0 && dx[eq] == target_[eq] - before) x_[eq] = target_[eq];
+    const double scale = std::max(std::abs(target_[eq]), std::abs(x_[eq] - dx[eq]));
+    if (std::abs(x_[eq] - target_[eq]) <= 1e-12 * scale) x_[eq] = target_[eq];
   }
   update_prescribed_predictor();
 }
