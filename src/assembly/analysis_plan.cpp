@@ -70,6 +70,10 @@ class PlanBuilder {
     plan_.spring_of_element.assign(model_.elements.size(), -1);
     motions_ = motion_components(model_);
     length_tolerance_ = 1e-8 * std::max(1.0, bounding_box_diagonal(model_));
+    // NLGEOM stays on once set (keywords.md §13): the steps' flags are the effective ones.
+    const auto& steps = model_.history.steps;
+    plan_.small_displacement = steps.empty() || std::any_of(steps.begin(), steps.end(),
+                                                       [](const Step& s) { return !s.nlgeom; });
     section_behavior_.assign(model_.sections.connector_sections.size(), nullptr);
     section_behavior_built_.assign(model_.sections.connector_sections.size(), false);
     for (const SpringProperty& spring : model_.sections.springs) {
@@ -153,6 +157,7 @@ class PlanBuilder {
     setup.rotations_a = a >= 0 && (plan_.dofs.active(a) & kRotationDofs) != 0;
     setup.two_d = section.two_d;
     setup.length_tolerance = length_tolerance_;
+    setup.linearised = plan_.small_displacement;
     std::string why;
     std::optional<ConnectorKinematics> kinematics = ConnectorKinematics::create(setup, &why);
     if (!kinematics) {

@@ -75,6 +75,9 @@ struct SpringRecord {
 };
 
 struct AnalysisPlan {
+  // Some step runs with NLGEOM=NO (the connectors keep their linearised kinematics); false when
+  // the deck is NLGEOM throughout, which the system then is from the start.
+  bool small_displacement = true;
   DofMap dofs;
   std::vector<ConnectorKinematics> kinematics;
   std::vector<std::unique_ptr<Behavior>> behaviors;  // one per section that has elasticity

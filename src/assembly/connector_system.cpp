@@ -24,7 +24,7 @@ constexpr DofMask kRotationDofs = 0b111000;
 }  // namespace
 
 ConnectorSystem::ConnectorSystem(const Model& model, const AnalysisPlan& plan)
-    : model_(model), plan_(plan) {
+    : model_(model), plan_(plan), nlgeom_(!plan.small_displacement) {
   const int n = plan_.dofs.equations();
   x_ = Eigen::VectorXd::Zero(n);
   x_n_ = x_;

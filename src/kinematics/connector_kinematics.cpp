@@ -174,11 +174,12 @@ std::optional<ConnectorKinematics> ConnectorKinematics::create(const ConnectorSe
   KinematicsResult initial;
   k.evaluate_exact(k.d0_, k.ea0_, k.eb0_, nullptr, false, initial);
   k.initial_position_ = initial.position;
-  k.b0_ = initial.b;
-  k.linear_ok_ = initial.ok;
-  k.linear_error_ = initial.message;
-
-  std::array<LinearNorm, 2> norms;
+  if (!setup.linearised) return k;
+  auto linear = std::make_shared<Linearised>();
+  linear->b0 = initial.b;
+  linear->ok = initial.ok;
+  linear->error = initial.message;
+  std::array<LinearNorm, 2>& norms = linear->norms;
   if (k.translation_ == Translation::Radial && k.initial_position_[0] <= setup.length_tolerance &&
       has_component(k.existing_, 1)) {
     LinearNorm& norm = norms[0];
@@ -200,9 +201,7 @@ std::optional<ConnectorKinematics> ConnectorKinematics::create(const ConnectorSe
       for (int c = 0; c < 6; ++c) norm.b(i, kRotationColumns[c]) = v[i].g[c];
     }
   }
-  if (norms[0].row >= 0 || norms[1].row >= 0) {
-    k.linear_norms_ = std::make_shared<const std::array<LinearNorm, 2>>(norms);
-  }
+  k.linearised_ = std::move(linear);
   return k;
 }
 
@@ -378,17 +377,22 @@ void ConnectorKinematics::evaluate_exact(const Vector3& d, const Matrix3& ea, co
 void ConnectorKinematics::evaluate_linear(const NodePose& a, const NodePose& b,
                                           const Vector6& last_converged,
                                           KinematicsResult& out) const {
-  if (!linear_ok_) {
+  if (!linearised_) {  // a plan built for NLGEOM throughout (a bug of its caller)
     out.ok = false;
-    out.message = linear_error_;
+    out.message = "small-displacement kinematics were not prepared for this connector";
+    return;
+  }
+  const Linearised& linear = *linearised_;
+  if (!linear.ok) {
+    out.ok = false;
+    out.message = linear.error;
   }
   Vector12 q;
   q << a.u, a.theta, b.u, b.theta;
-  out.b = b0_;
-  out.change.noalias() = b0_ * q;
+  out.b = linear.b0;
+  out.change.noalias() = linear.b0 * q;
   out.position = initial_position_ + out.change;
-  if (!linear_norms_) return;
-  for (const LinearNorm& norm : *linear_norms_) {
+  for (const LinearNorm& norm : linear.norms) {
     if (norm.row < 0) continue;
     const Eigen::Vector2d v = norm.value + norm.b * q;
     const double length = v.norm();

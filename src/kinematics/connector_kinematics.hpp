@@ -27,6 +27,9 @@ struct ConnectorSetup {
   bool rotations_a = true;  // node a has active rotation DOFs (JOIN co-rotates only then, §2.2)
   bool two_d = false;       // CONN2D2: components 1, 2, 6 only
   double length_tolerance = 1e-8;  // §2.2 tol (1e-8·max(1, bounding-box diagonal))
+  // Some step runs with NLGEOM=NO: keep the linearised kinematics (about 0.6 kB per connector,
+  // which a deck that is NLGEOM throughout never reads).
+  bool linearised = true;
 };
 
 // Current state of one node (ground: u = 0, R = I, theta = 0).
@@ -84,6 +87,13 @@ class ConnectorKinematics {
     Eigen::Vector2d value = Eigen::Vector2d::Zero();
     Eigen::Matrix<double, 2, 12> b = Eigen::Matrix<double, 2, 12>::Zero();
   };
+  // NLGEOM=NO: positions p = p0 + B0·q, with the norms above where they apply.
+  struct Linearised {
+    Matrix6x12 b0 = Matrix6x12::Zero();
+    bool ok = true;
+    std::string error;  // why B0 could not be formed (the initial pose is singular)
+    std::array<LinearNorm, 2> norms;
+  };
 
   ConnectorKinematics() = default;
   void evaluate_exact(const Vector3& d, const Matrix3& ea, const Matrix3& eb,
@@ -105,11 +115,7 @@ class ConnectorKinematics {
   ComponentMask existing_ = 0;
   ComponentMask computed_ = 0;  // components the 3-D formulas produce
   Vector6 initial_position_ = Vector6::Zero();
-  Matrix6x12 b0_ = Matrix6x12::Zero();
-  // Null unless a component needs it (rare, and 450 bytes per connector of a large deck).
-  std::shared_ptr<const std::array<LinearNorm, 2>> linear_norms_;
-  bool linear_ok_ = true;
-  std::string linear_error_;
+  std::shared_ptr<const Linearised> linearised_;  // null unless ConnectorSetup::linearised
 };
 
 }  // namespace clinch
