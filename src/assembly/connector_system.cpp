@@ -502,6 +502,11 @@ void ConnectorSystem::measure(const Eigen::VectorXd& residual, const Eigen::Vect
     }
   }
   for (int f = 0; f < 2; ++f) norms.flux[f] = flux_count[f] ? flux_sum[f] / flux_count[f] : 0.0;
+  norms.resolution[0] = 1e-12 * plan_.length_scale;
+  norms.resolution[1] = 1e-12;
+  const double force_scale = std::max(norms.flux[0], norms.flux[1] / plan_.length_scale);
+  norms.force_resolution[0] = 1e-12 * force_scale;
+  norms.force_resolution[1] = 1e-12 * force_scale * plan_.length_scale;
   norms.residual_norm = std::sqrt(residual_sq);
   norms.correction_norm = std::sqrt(correction_sq);
 }

@@ -6,9 +6,18 @@ namespace clinch {
 
 void ConvergenceCriteria::start_step(const Controls& controls) { controls_ = controls; }
 
+namespace {
+
+// The field has a flux above round-off (IterationNorms::force_resolution).
+bool carries_force(const IterationNorms& norms, int f) {
+  return norms.flux[f] > 0 && norms.flux[f] > norms.force_resolution[f];
+}
+
+}  // namespace
+
 void ConvergenceCriteria::accept_increment(const IterationNorms& norms) {
   for (int f = 0; f < 2; ++f) {
-    if (norms.flux[f] <= 0) continue;
+    if (!carries_force(norms, f)) continue;
     flux_sum_[f] += norms.flux[f];
     ++flux_count_[f];
   }
@@ -19,7 +28,7 @@ double ConvergenceCriteria::average_flux(const IterationNorms& norms, int f) con
   if (c.user_flux) return *c.user_flux;
   double sum = flux_sum_[f];
   int count = flux_count_[f];
-  if (norms.flux[f] > 0) {
+  if (carries_force(norms, f)) {
     sum += norms.flux[f];
     ++count;
   }
@@ -39,14 +48,17 @@ bool ConvergenceCriteria::converged(const IterationNorms& norms, int iteration) 
     if (r <= c.linear_residual * q) continue;
     if (iteration == 0) return false;
     const double du = std::max(norms.largest_increment[f], 1e-300);
+    // A correction at round-off passes whatever the increment (a field that does not move).
+    const double dc = norms.largest_correction[f];
+    const bool round_off = dc <= norms.resolution[f];
     // Zero-force field: only the correction test, with C_ε (§16 fields 6–7).
-    if (norms.flux[f] <= c.zero_flux * q) {
-      if (norms.largest_correction[f] > c.zero_flux_correction * du) return false;
+    if (norms.flux[f] <= c.zero_flux * q || !carries_force(norms, f)) {
+      if (dc > c.zero_flux_correction * du && !round_off) return false;
       continue;
     }
     const double tolerance = iteration > controls_.time.ip ? c.alternate_residual : c.residual;
     if (r > tolerance * q) return false;
-    if (norms.largest_correction[f] > c.correction * du) return false;
+    if (dc > c.correction * du && !round_off) return false;
   }
   return true;
 }
