@@ -12,6 +12,7 @@
 
 #include "parser/diagnostic.hpp"
 #include "parser/keyword_spec.hpp"
+#include "parser/lexer.hpp"
 #include "src/model/model.hpp"
 #include "src/model/references.hpp"
 
@@ -51,10 +52,13 @@ class BlockContext {
   // Number of data lines seen so far in this block (the current line included).
   std::uint32_t line_index() const { return line_index_; }
   void set_line_index(std::uint32_t index) { line_index_ = index; }
-  // At most this many data lines follow in the keyword's own file (0 when unknown); for
-  // reserving storage in begin().
-  std::size_t expected_lines() const { return expected_lines_; }
-  void set_expected_lines(std::size_t lines) { expected_lines_ = lines; }
+  // In begin() only: at most this many data lines follow in the keyword's own file (0 when
+  // unknown), for reserving storage. Counted on request, so that blocks that do not ask cost
+  // nothing.
+  std::size_t expected_lines() const {
+    return keyword_file_ ? keyword_file_->lines_before_next_keyword() : 0;
+  }
+  void set_keyword_file(const LineScanner* scanner) { keyword_file_ = scanner; }
 
   Diagnostic& report(DiagCode code, SourceLoc loc, std::string message);
   // Reports at a field; adds the note naming the parameter a substituted value came from.
@@ -96,7 +100,7 @@ class BlockContext {
   DiagnosticSink& sink_;
   const SourceManager& sources_;
   std::uint32_t line_index_ = 0;
-  std::size_t expected_lines_ = 0;
+  const LineScanner* keyword_file_ = nullptr;  // during begin()
 };
 
 // Parses a real with the rules of input-syntax.md §3.2 (Fortran D exponents, no inf/nan/hex).

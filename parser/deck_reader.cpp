@@ -238,7 +238,7 @@ class Reader {
       return;
     }
     close_block();
-    open_block(std::move(line), stream ? stream->scanner().lines_before_next_keyword() : 0);
+    open_block(std::move(line), stream ? &stream->scanner() : nullptr);
   }
 
   void include(const KeywordLine& line, LineStream& stream) {
@@ -533,7 +533,7 @@ class Reader {
     }
   }
 
-  void open_block(KeywordLine line, std::size_t expected_lines) {
+  void open_block(KeywordLine line, const LineScanner* keyword_file) {
     block_line_ = std::move(line);
     const KeywordLine& kl = block_line_;
     skip_block_ = true;
@@ -575,9 +575,10 @@ class Reader {
     data_line_reported_ = false;
     block_ctx_ = std::make_unique<BlockContext>(block_line_, *spec, block_params_, model_,
                                                 position_, sink_, sources_);
-    block_ctx_->set_expected_lines(expected_lines);
+    block_ctx_->set_keyword_file(keyword_file);
     handler_ = spec->make_handler ? spec->make_handler() : nullptr;
     if (handler_) handler_->begin(*block_ctx_);
+    block_ctx_->set_keyword_file(nullptr);
     read_input_file();
   }
 

@@ -52,24 +52,24 @@ std::optional<std::uint32_t> SourceManager::load(const std::string& path, Source
     if (error) *error = "read error";
     return std::nullopt;
   }
-  SourceFile file;
-  file.path = path;
-  file.display_name = path;
-  file.text = std::string_view(bytes.get(), size);
-  file.bytes = std::move(bytes);
-  file.included_from = included_from;
-  files_.push_back(std::move(file));
-  return static_cast<std::uint32_t>(files_.size() - 1);
+  return add(path, path, std::move(bytes), size, included_from);
 }
 
 std::uint32_t SourceManager::add_buffer(std::string display_name, std::string text,
                                         SourceLoc included_from) {
+  std::unique_ptr<char[]> bytes(new char[std::max<std::size_t>(text.size(), 1)]);
+  std::memcpy(bytes.get(), text.data(), text.size());
+  return add(display_name, display_name, std::move(bytes), text.size(), included_from);
+}
+
+std::uint32_t SourceManager::add(std::string path, std::string display_name,
+                                 std::unique_ptr<char[]> bytes, std::size_t size,
+                                 SourceLoc included_from) {
   SourceFile file;
-  file.path = display_name;
+  file.path = std::move(path);
   file.display_name = std::move(display_name);
-  file.bytes.reset(new char[std::max<std::size_t>(text.size(), 1)]);
-  std::memcpy(file.bytes.get(), text.data(), text.size());
-  file.text = std::string_view(file.bytes.get(), text.size());
+  file.text = std::string_view(bytes.get(), size);
+  file.bytes = std::move(bytes);
   file.included_from = included_from;
   files_.push_back(std::move(file));
   return static_cast<std::uint32_t>(files_.size() - 1);

@@ -45,6 +45,8 @@ class SourceManager {
   std::string directory_of(std::uint32_t index) const;
 
  private:
+  std::uint32_t add(std::string path, std::string display_name, std::unique_ptr<char[]> bytes,
+                    std::size_t size, SourceLoc included_from);
   void index_lines(SourceFile& file) const;
   mutable std::vector<SourceFile> files_;
 };

@@ -80,8 +80,8 @@ class PlanBuilder {
       plan_.spring_laws.push_back(spring.valid ? std::optional<SpringLaw>(SpringLaw(spring))
                                                : std::nullopt);
     }
-    // Reserved up front: a record is about 2 kB, and regrowing the vectors of a deck with 10⁵
-    // connectors copies them and doubles the peak memory.
+    // Reserved up front: regrowing the vectors of a deck with 10⁵ connectors (a record and its
+    // kinematics are about 0.7 kB) copies them and doubles the peak memory.
     const auto connectors = static_cast<std::size_t>(
         std::count_if(model_.elements.begin(), model_.elements.end(),
                       [](const Element& element) { return is_connector(element.type); }));

@@ -124,12 +124,9 @@ void ConnectorSystem::start_increment(double extrapolate_scale) {
     // increment (none under a steady ramp) the first correction takes.
     for (int eq = 0; eq < plan_.dofs.node_equations(); ++eq) {
       if (is_finite_rotation(eq)) continue;
+      const double before = x_[eq];
       x_[eq] += extrapolate_scale * dx_n_[eq];
-      const double target = target_[eq];
-      if (prescribed_[static_cast<std::size_t>(eq)] &&
-          std::abs(x_[eq] - target) <= 1e-12 * std::max(std::abs(target), std::abs(x_[eq]))) {
-        x_[eq] = target;  // the ramp's round-off
-      }
+      if (prescribed_[static_cast<std::size_t>(eq)]) snap_to_target(eq, before);
     }
   }
   // Prescribed values stay where they are: the first correction moves them to their targets,
@@ -141,6 +138,14 @@ void ConnectorSystem::start_increment(double extrapolate_scale) {
 
 bool ConnectorSystem::is_finite_rotation(int equation) const {
   return nlgeom_ && plan_.dofs.field(equation) == EquationField::Rotation;
+}
+
+void ConnectorSystem::snap_to_target(int equation, double before) {
+  // u + (target − u) may miss the target by an ulp: a move that was the whole remaining
+  // increment lands on it exactly (a partial step, s < 1 of a line search, stays well outside).
+  const double target = target_[equation];
+  const double scale = std::max(std::abs(target), std::abs(before));
+  if (std::abs(x_[equation] - target) <= 1e-12 * scale) x_[equation] = target;
 }
 
 void ConnectorSystem::update_prescribed_predictor() {
@@ -459,12 +464,7 @@ void ConnectorSystem::apply_correction(const Eigen::VectorXd& dx) {
 }
 
 void ConnectorSystem::finish_prescribed_correction(const Eigen::VectorXd& dx) {
-  // u + (target − u) may miss the target by an ulp; a correction that was the whole remaining
-  // increment lands on it exactly (a partial step, s < 1 of a line search, stays well outside).
-  for (int eq : prescribed_list_) {
-    const double scale = std::max(std::abs(target_[eq]), std::abs(x_[eq] - dx[eq]));
-    if (std::abs(x_[eq] - target_[eq]) <= 1e-12 * scale) x_[eq] = target_[eq];
-  }
+  for (int eq : prescribed_list_) snap_to_target(eq, x_[eq] - dx[eq]);
   update_prescribed_predictor();
 }
 

@@ -103,6 +103,7 @@ class ConnectorSystem final : public NonlinearProblem {
   void apply_prescribed_rotations();
   void snap_prescribed_rotations();
   bool is_finite_rotation(int equation) const;
+  void snap_to_target(int equation, double before);
   void update_prescribed_predictor();
   void finish_prescribed_correction(const Eigen::VectorXd& dx);
 

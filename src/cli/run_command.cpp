@@ -7,9 +7,9 @@
 #include <iostream>
 
 #include "parser/deck_reader.hpp"
-#include "src/cli/blas_threads.hpp"
 #include "src/assembly/analysis_plan.hpp"
 #include "src/assembly/connector_system.hpp"
+#include "src/cli/blas_threads.hpp"
 #include "src/output/history_columns.hpp"
 #include "src/solver/step_driver.hpp"
 

@@ -230,6 +230,34 @@ void resolve_element_nodes(Model& model, std::int32_t part_index, DiagnosticSink
   part.qualified_nodes.clear();
 }
 
+// The global node and element arrays of an assembly: each instance's copy of its part, placed,
+// with element connectivity shifted to global node indices.
+void gather_instances(Model& model, std::int32_t nodes, std::int32_t elements) {
+  model.nodes.clear();
+  model.elements.clear();
+  model.nodes.reserve(static_cast<std::size_t>(nodes));
+  model.elements.reserve(static_cast<std::size_t>(elements));
+  for (std::int32_t i = 0; i < static_cast<std::int32_t>(model.instances.size()); ++i) {
+    const Instance& instance = model.instances[i];
+    const Part& part = model.parts[instance.part];
+    const bool placed = i != 0;
+    for (Node node : part.nodes) {
+      node.instance = i;
+      if (placed) node.x = instance.place(node.x);
+      model.nodes.push_back(node);
+    }
+    for (Element element : part.elements) {
+      element.instance = i;
+      if (placed) {
+        for (std::int32_t& n : element.nodes) {
+          if (n != kGround) n += instance.node_offset;
+        }
+      }
+      model.elements.push_back(element);
+    }
+  }
+}
+
 }  // namespace
 
 void finalize_geometry(Model& model, DiagnosticSink& sink) {
@@ -253,30 +281,7 @@ void finalize_geometry(Model& model, DiagnosticSink& sink) {
     model.nodes = std::move(model.parts[0].nodes);
     model.elements = std::move(model.parts[0].elements);
   } else {
-    model.nodes.clear();
-    model.elements.clear();
-    model.nodes.reserve(static_cast<std::size_t>(nodes));
-    model.elements.reserve(static_cast<std::size_t>(elements));
-  }
-  for (std::int32_t i = 0; model.instances.size() > 1 &&
-                           i < static_cast<std::int32_t>(model.instances.size()); ++i) {
-    const Instance& instance = model.instances[i];
-    const Part& part = model.parts[instance.part];
-    const bool placed = i != 0;
-    for (Node node : part.nodes) {
-      node.instance = i;
-      if (placed) node.x = instance.place(node.x);
-      model.nodes.push_back(node);
-    }
-    for (Element element : part.elements) {
-      element.instance = i;
-      if (placed) {
-        for (std::int32_t& n : element.nodes) {
-          if (n != kGround) n += instance.node_offset;
-        }
-      }
-      model.elements.push_back(element);
-    }
+    gather_instances(model, nodes, elements);
   }
   // Root-part sets may name instance members, so they are replayed last.
   replay_set_operations(model, 0, sink);
