@@ -112,7 +112,7 @@ class ElasticPlasticBehavior final : public Behavior {
       if (c.potential.is_max()) {
         r = multi_surface_return(space_, c.potential, c.yield, trial, ubar, consistent);
       } else {
-        if (c.grouped) r = c.grouped->solve(space_, c.potential, c.yield, trial, ubar, consistent);
+        if (c.grouped) r = c.grouped->solve(c.yield, trial, ubar, consistent);
         if (!c.grouped || !r.converged) {
           r = closest_point_return(space_, c.potential, c.yield, trial, ubar, consistent);
         }

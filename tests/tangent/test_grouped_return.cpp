@@ -108,7 +108,7 @@ TEST(GroupedReturn, SatisfiesTheOptimalityConditionsAndAgreesWithTheGeneralRetur
     if (trial_index % 3 == 0) u[static_cast<int>(6 * unit(rng))] *= 1e-3;
     Vector6 trial = p.space.stiffness * u;
     trial *= (1.05 + 19 * unit(rng)) * 40000.0 / p.potential->value(trial);
-    const CoupledReturn a = grouped->solve(p.space, *p.potential, *p.yield, trial, 0.0, true);
+    const CoupledReturn a = grouped->solve(*p.yield, trial, 0.0, true);
     ASSERT_TRUE(a.plastic);
     if (!a.converged) continue;  // the behaviour then uses the general return
     ++solved;
