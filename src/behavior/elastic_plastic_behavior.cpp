@@ -29,6 +29,7 @@ constexpr int kUncoupledEquivalent = 6;
 constexpr int kCoupledEquivalent = 12;
 constexpr int kBackForce = 13;
 constexpr int kHistorySize = 19;
+constexpr ComponentMask kAllComponents = 0b111111;
 
 struct UncoupledPlasticity {
   int slot = 0;  // component − 1
@@ -123,14 +124,24 @@ class ElasticPlasticBehavior final : public Behavior {
       }
       if (r.plastic) {
         // §6.4 step 4: u^pl = u^pl_n + K⁻¹(F^tr − F), ū = ū_n + Δλ.
-        plastic.noalias() += space_.compliance * (trial - r.force);
+        if (diagonal_) {
+          plastic += (trial - r.force).cwiseQuotient(space_.stiffness.diagonal());
+        } else {
+          plastic.noalias() += space_.compliance * (trial - r.force);
+        }
         h[kCoupledEquivalent] = ubar + r.multiplier;
-        for (int i = 0; i < 6; ++i) {
-          if (!has_component(coupled_space_, i + 1)) continue;
-          out.force[i] = r.force[i];
-          if (!consistent) continue;
-          for (int j = 0; j < 6; ++j) {
-            if (has_component(coupled_space_, j + 1)) out.tangent(i, j) = r.tangent(i, j);
+        if (coupled_space_ == kAllComponents) {
+          // The potential spans all six components (none padded): its block is all of F and D.
+          out.force = r.force;
+          if (consistent) out.tangent = r.tangent;
+        } else {
+          for (int i = 0; i < 6; ++i) {
+            if (!has_component(coupled_space_, i + 1)) continue;
+            out.force[i] = r.force[i];
+            if (!consistent) continue;
+            for (int j = 0; j < 6; ++j) {
+              if (has_component(coupled_space_, j + 1)) out.tangent(i, j) = r.tangent(i, j);
+            }
           }
         }
       }

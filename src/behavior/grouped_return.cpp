@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -11,11 +12,22 @@ namespace {
 
 constexpr int kMaxIterations = 60;  // Newton with bisection: far more than it ever needs
 constexpr double kTolerance = 1e-12;  // on P/F_y − 1 (§6.4); |S − 1| ≤ β·kTolerance
-// The Newton step is taken on S^(−γ) (γ = 1 − 1/β) rather than on S = Σ z_i^β: far outside the
-// surface z_i ∝ Δλ^(−1/(β−1)), so S^(−γ) is nearly linear in Δλ where S is not. Within this
-// distance of S = 1 the step uses the series of S^γ instead of the root.
+// Within this distance of S = 1, S^γ is taken from its series (GroupedReturn::distance).
 constexpr double kNearSurface = 1e-2;
 constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
+
+// x^(1/3) for a positive normal x to a relative 3e-5: an exponent-thirding first guess (3%) and
+// one Halley step, which cubes the error. It only shapes the guess and the steps of the outer
+// Newton far from the surface (convergence is tested on exact quantities), where std::cbrt cost
+// as much as an evaluation of the shares.
+double approximate_cube_root(double x) {
+  if (!(x >= std::numeric_limits<double>::min() && x <= std::numeric_limits<double>::max())) {
+    return std::cbrt(x);
+  }
+  const double y = std::bit_cast<double>(std::bit_cast<std::uint64_t>(x) / 3 + 0x2A9F7893782DA1CEull);
+  const double y3 = y * y * y;
+  return y * (y3 + 2 * x) / (2 * y3 + x);
+}
 
 template <typename F>
 void for_each_bit(unsigned mask, F&& f) {
@@ -27,6 +39,15 @@ void for_each_bit(unsigned mask, F&& f) {
 
 }  // namespace
 
+// What a return needs of the trial force: the group resultants r_g and, per contribution,
+// its groups with r_g > 0, their Σ r_g and Σ κ_g, and the smallest y_i at which one clips.
+struct GroupedReturn::Trial {
+  std::array<double, kMaxGroups> resultant;  // r_g
+  std::array<double, kMaxGroups> reach;      // r_g/κ_g: the y_i at which group g clips
+  std::array<unsigned, kMaxGroups> positive;
+  std::array<double, kMaxGroups> sum, kappa, first_clip;
+};
+
 // One contribution at a given Δλ: its share z = E_i/(R_i F_y), z^(β−1), the derivatives of its
 // equation Φ_i = R_i F_y z + Δλ K_i z^(β−1)/R_i − Σ_g r_g, y_i = Δλ n_i, and which of its
 // groups stay positive. Every field is written by solve_share.
@@ -36,8 +57,8 @@ struct GroupedReturn::Share {
   double inv_a;       // 1/(∂Φ_i/∂z)
   double dzb1_inv_a;  // (z^(β−1))′/(∂Φ_i/∂z)
   double b;           // ∂Φ_i/∂Δλ
-  double y;      // Δλ n_i
-  unsigned active;  // bits of the groups (indices into groups_) with T_g > 0
+  double y;           // Δλ n_i
+  unsigned active;    // bits of the groups (indices into groups_) with T_g > 0
 };
 
 struct GroupedReturn::Iterate {
@@ -85,6 +106,9 @@ std::optional<GroupedReturn> GroupedReturn::create(const ConnectorPotential& pot
       }
     }
     if (!(r.kappa > 0)) return std::nullopt;
+    for (int c = 0; c < 6; ++c) {
+      if ((g.components >> c) & 1u) out.group_of_[static_cast<std::size_t>(c)] = static_cast<std::int8_t>(out.group_count_);
+    }
     out.groups_[static_cast<std::size_t>(out.group_count_++)] = r;
   }
   int next = 0;
@@ -92,7 +116,6 @@ std::optional<GroupedReturn> GroupedReturn::create(const ConnectorPotential& pot
     Contribution& c = out.contributions_[static_cast<std::size_t>(i)];
     c.scale = scales[static_cast<std::size_t>(i)];
     c.inverse_scale = 1 / c.scale;
-    c.first = next;
     while (next < out.group_count_ && out.groups_[static_cast<std::size_t>(next)].contribution == i) {
       c.groups |= 1u << next++;
     }
@@ -106,34 +129,60 @@ std::optional<GroupedReturn> GroupedReturn::create(const ConnectorPotential& pot
   return out;
 }
 
-double GroupedReturn::root_of_share_sum(double s) const {  // S^γ, γ = 1 − 1/β
+// S^γ (γ = 1 − 1/β), for the guess and the far steps only: the cube root is approximate.
+double GroupedReturn::root_of_share_sum(double s) const {
   switch (exponent_) {
     case Exponent::One: return 1;
-    case Exponent::ThreeHalves: return std::cbrt(s);
+    case Exponent::ThreeHalves: return approximate_cube_root(s);
     case Exponent::Two: return std::sqrt(s);
     case Exponent::General: break;
   }
   return std::pow(s, gamma_);
 }
 
-GroupedReturn::Share GroupedReturn::solve_share(const Contribution& c,
-                                                const std::array<double, kMaxGroups>& resultant,
+GroupedReturn::Trial GroupedReturn::resolve(const Vector6& trial) const {
+  Trial t;
+  for (int g = 0; g < group_count_; ++g) {
+    const Group& gr = groups_[static_cast<std::size_t>(g)];
+    double v = 0;
+    for_each_bit(gr.components, [&](int c) {
+      const double x = gr.coefficient[c] * trial[c];
+      v = gr.macauley ? std::max(0.0, x) : v + x * x;
+    });
+    // A Macaulay group: its positive part (a negative one has no flow).
+    const double rg = gr.macauley ? v : std::sqrt(v);
+    t.resultant[static_cast<std::size_t>(g)] = rg;
+    t.reach[static_cast<std::size_t>(g)] = rg / gr.kappa;
+  }
+  for (int i = 0; i < contribution_count_; ++i) {
+    const auto ii = static_cast<std::size_t>(i);
+    t.positive[ii] = 0;
+    t.sum[ii] = t.kappa[ii] = 0;
+    t.first_clip[ii] = std::numeric_limits<double>::infinity();
+    for_each_bit(contributions_[ii].groups, [&](int g) {
+      const auto gg = static_cast<std::size_t>(g);
+      if (!(t.resultant[gg] > 0)) return;
+      t.positive[ii] |= 1u << g;
+      t.sum[ii] += t.resultant[gg];
+      t.kappa[ii] += groups_[gg].kappa;
+      t.first_clip[ii] = std::min(t.first_clip[ii], t.reach[gg]);
+    });
+  }
+  return t;
+}
+
+[[gnu::always_inline]] inline GroupedReturn::Share GroupedReturn::solve_share(int contribution, const Trial& t,
                                                 double multiplier, const YieldSample& y) const {
+  const auto ii = static_cast<std::size_t>(contribution);
+  const Contribution& c = contributions_[ii];
   Share s;
   const double rf = c.scale * y.value;  // R_i F_y
-  unsigned mask = 0;
-  for_each_bit(c.groups, [&](int g) {
-    if (resultant[static_cast<std::size_t>(g)] > 0) mask |= 1u << g;
-  });
+  unsigned mask = t.positive[ii];
+  double sum = t.sum[ii], kappa = t.kappa[ii], first_clip = t.first_clip[ii];
   // Start with every positive group and drop those the solution clips. Taking a clipped group
   // as positive underestimates E_i(y), hence z and y, so a group found clipped at that z is
   // clipped at the true one too: the loop ends on the exact set, dropping at least one a pass.
   while (mask) {
-    double sum = 0, kappa = 0;
-    for_each_bit(mask, [&](int g) {
-      sum += resultant[static_cast<std::size_t>(g)];
-      kappa += groups_[static_cast<std::size_t>(g)].kappa;
-    });
     const double bk = multiplier * kappa * c.inverse_scale;  // Φ_i = rf z + bk z^(β−1) − sum
     // ∂Φ_i/∂z = rf + bk·(z^(β−1))′; each case forms its inverse with as few divisions as it can.
     switch (exponent_) {
@@ -180,70 +229,75 @@ GroupedReturn::Share GroupedReturn::solve_share(const Contribution& c,
       }
     }
     s.y = multiplier * s.zb1 * c.inverse_scale;
-    unsigned clipped = 0;
-    for_each_bit(mask, [&](int g) {
-      if (resultant[static_cast<std::size_t>(g)] <= groups_[static_cast<std::size_t>(g)].kappa * s.y) {
-        clipped |= 1u << g;
-      }
-    });
-    if (!clipped) {
+    if (s.y < first_clip) {
       s.active = mask;
       s.b = c.scale * y.slope * s.z + kappa * s.zb1 * c.inverse_scale;
       return s;
     }
-    mask &= ~clipped;
+    const unsigned kept = mask;
+    mask = 0;
+    sum = kappa = 0;
+    first_clip = std::numeric_limits<double>::infinity();
+    for_each_bit(kept, [&](int g) {
+      const auto gg = static_cast<std::size_t>(g);
+      if (t.reach[gg] <= s.y) return;  // clipped
+      mask |= 1u << g;
+      sum += t.resultant[gg];
+      kappa += groups_[gg].kappa;
+      first_clip = std::min(first_clip, t.reach[gg]);
+    });
   }
   return Share{0, 0, 1 / rf, 0, 0, 0, 0};  // nothing positive: E_i = 0
 }
 
-void GroupedReturn::evaluate(const std::array<double, kMaxGroups>& resultant, double multiplier,
-                             const YieldSample& y, Iterate& it) const {
+[[gnu::always_inline]] inline void GroupedReturn::evaluate(const Trial& t, double multiplier, const YieldSample& y,
+                             Iterate& it) const {
   it.sum = 0;
   it.slope = 0;
   for (int i = 0; i < contribution_count_; ++i) {
-    const Share s = solve_share(contributions_[static_cast<std::size_t>(i)], resultant, multiplier, y);
+    const Share s = solve_share(i, t, multiplier, y);
     it.share[static_cast<std::size_t>(i)] = s;
     it.sum += s.z * s.zb1;
     it.slope += beta_ * s.zb1 * s.b * s.inv_a;
   }
 }
 
-// The first Δλ: the radial guess. Were every share to shrink by the same factor
-// λ = S₀^(1/β) = P(F^tr)/F_y, contribution i would need Δλ_i = s_i (1 − 1/λ)/(k̃_i ẑ_i^(β−1))
-// (its equation at ẑ_i = z_i⁰/λ, k̃_i = K_i/R_i, F_y frozen); their mean weighted by ẑ_i^β is
-// (1 − 1/λ) Σ_i s_i ẑ_i/k̃_i, exact for a single contribution of perfect plasticity.
-double GroupedReturn::radial_guess(const std::array<double, kMaxGroups>& resultant,
-                                   const Iterate& at_zero) const {
-  const double lambda = at_zero.sum / root_of_share_sum(at_zero.sum);  // S^(1/β) = S/S^γ
-  double sum = 0;
+// The first Δλ: the radial guess. Were every E_i to shrink by the same factor μ = P(F^tr)/F_y
+// (F_y = F_y(ū_n) + h Δλ), each share would stay at ζ_i = E_i^tr/(R_i P(F^tr)) and so would its
+// slope n_i = ζ_i^(β−1)/R_i; contribution i would need Δλ_i = s_i (1 − 1/μ)/(K_i n_i). Their
+// mean weighted by ζ_i^β is (1 − 1/μ)·A with A = Σ_i ζ_i s_i R_i/K_i, which is linear in Δλ:
+// Δλ = A (P^tr − F_y)/(P^tr + A h). Exact for a single contribution with linear hardening.
+double GroupedReturn::radial_guess(const Trial& t, const Iterate& at_zero,
+                                   const YieldSample& y) const {
+  // P^tr/F_y = S^(1/β) = S/S^γ.
+  const double p_trial = y.value * at_zero.sum / root_of_share_sum(at_zero.sum);
+  double a = 0;
   for (int i = 0; i < contribution_count_; ++i) {
-    const Contribution& c = contributions_[static_cast<std::size_t>(i)];
-    const Share& s = at_zero.share[static_cast<std::size_t>(i)];
-    double positive = 0, kappa = 0;
-    for_each_bit(s.active, [&](int g) {
-      positive += resultant[static_cast<std::size_t>(g)];
-      kappa += groups_[static_cast<std::size_t>(g)].kappa;
-    });
-    if (kappa > 0) sum += positive * (s.z / lambda) * c.scale / kappa;
+    const auto ii = static_cast<std::size_t>(i);
+    if (t.kappa[ii] > 0) a += t.sum[ii] * t.sum[ii] / (p_trial * t.kappa[ii]);  // ζ_i s_i R_i/K_i
   }
-  return (1 - 1 / lambda) * sum;
+  return a * (p_trial - y.value) / (p_trial + a * y.slope);
+}
+
+// The distance from the surface that the outer Newton drives to zero, g = (1 − S^(−γ))/γ
+// (S − 1 for β = 1), and dg/dΔλ = −Q/S^(γ+1): far outside the surface z_i ∝ Δλ^(−1/(β−1)), so
+// S^(−γ) is nearly linear in Δλ where S is not. Near S = 1, S^γ comes from its series in S − 1
+// (third order) instead of a root.
+GroupedReturn::Distance GroupedReturn::distance(const Iterate& it) const {
+  const double psi = it.sum - 1;
+  if (exponent_ == Exponent::One) return {psi, -it.slope};
+  const double rise = std::abs(psi) < kNearSurface
+                          ? psi * (1 + (gamma_ - 1) * psi * (0.5 + (gamma_ - 2) * psi / 6))
+                          : (root_of_share_sum(it.sum) - 1) / gamma_;  // (S^γ − 1)/γ
+  const double s_gamma = 1 + gamma_ * rise;
+  return {rise / s_gamma, -it.slope / (it.sum * s_gamma)};
 }
 
 CoupledReturn GroupedReturn::solve(const IsotropicHardeningLaw& yield, const Vector6& trial,
                                    double equivalent_old, bool want_tangent) const {
   CoupledReturn out;
   out.force = trial;
-  // Trial resultants r_g (a Macaulay group: its positive part; a negative one has no flow).
-  std::array<double, kMaxGroups> r;
-  for (int g = 0; g < group_count_; ++g) {
-    const Group& gr = groups_[static_cast<std::size_t>(g)];
-    double v = 0;
-    for_each_bit(gr.components, [&](int c) {
-      const double x = gr.coefficient[c] * trial[c];
-      v = gr.macauley ? std::max(0.0, x) : v + x * x;
-    });
-    r[static_cast<std::size_t>(g)] = gr.macauley ? v : std::sqrt(v);
-  }
+  const Trial t = resolve(trial);
   YieldSample y = yield.at(equivalent_old);
   if (!(y.value > 0)) {  // shares of a vanished yield size are not defined
     out.plastic = true;
@@ -251,13 +305,15 @@ CoupledReturn GroupedReturn::solve(const IsotropicHardeningLaw& yield, const Vec
     return out;
   }
   Iterate it;
-  evaluate(r, 0, y, it);
+  evaluate(t, 0, y, it);
   // §6.4 step 1: at Δλ = 0 the shares are E_i^tr/(R_i F_y), so S > 1 ⇔ P(F^tr) > F_y.
   if (!(it.sum > 1)) return out;
   out.plastic = true;
 
   double dl = 0, lo = 0, hi = std::numeric_limits<double>::infinity();
-  double next = radial_guess(r, it);
+  double next = radial_guess(t, it, y);
+  Distance previous = distance(it);
+  double previous_dl = 0;
   bool ok = false;
   for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
     if (!(next > lo && next < hi)) {
@@ -269,7 +325,7 @@ CoupledReturn GroupedReturn::solve(const IsotropicHardeningLaw& yield, const Vec
         for (int g = 0; g < group_count_; ++g) {
           const Group& gr = groups_[static_cast<std::size_t>(g)];
           reach = std::max(reach, contributions_[static_cast<std::size_t>(gr.contribution)].scale *
-                                      r[static_cast<std::size_t>(g)] / gr.kappa);
+                                      t.reach[static_cast<std::size_t>(g)]);
         }
         next = dl > 0 ? 4 * dl : reach;
       }
@@ -277,7 +333,7 @@ CoupledReturn GroupedReturn::solve(const IsotropicHardeningLaw& yield, const Vec
     dl = next;
     y = yield.at(equivalent_old + dl);
     if (!(y.value > 0)) break;
-    evaluate(r, dl, y, it);
+    evaluate(t, dl, y, it);
     const double psi = it.sum - 1;
     if (std::abs(psi) <= beta_ * kTolerance) {
       ok = true;
@@ -285,18 +341,17 @@ CoupledReturn GroupedReturn::solve(const IsotropicHardeningLaw& yield, const Vec
     }
     (psi > 0 ? lo : hi) = dl;
     next = std::numeric_limits<double>::quiet_NaN();
-    if (!(it.slope > 0)) continue;
-    // Newton on χ = 1 − S^(−γ): Δλ += S (S^γ − 1)/(γ Q). Near the surface S^γ − 1 is its series
-    // in ψ = S − 1 (third order), so the root is taken only far from it.
-    double rise = 0;  // (S^γ − 1)/γ
-    if (exponent_ == Exponent::One) {
-      rise = psi;
-    } else if (std::abs(psi) < kNearSurface) {
-      rise = psi * (1 + (gamma_ - 1) * psi * (0.5 + (gamma_ - 2) * psi / 6));
-    } else {
-      rise = (root_of_share_sum(it.sum) - 1) / gamma_;
-    }
-    const double step = it.sum * rise / it.slope;
+    const Distance d = distance(it);
+    if (!(d.slope < 0)) continue;
+    // Halley's step, with g″ from the slopes at this and the previous iterate: Newton's
+    // quadratic convergence has a large constant here (z_i is far from linear in Δλ), and this
+    // saves about one evaluation per return at no cost. Outside [1/2, 2] the correction is not
+    // trusted and the step stays Newton's.
+    double step = -d.value / d.slope;
+    const double factor = 1 + step * (d.slope - previous.slope) / ((dl - previous_dl) * 2 * d.slope);
+    if (factor >= 0.5 && factor <= 2) step /= factor;
+    previous = d;
+    previous_dl = dl;
     if (std::abs(step) <= 4 * kEpsilon * dl && std::abs(psi) <= 1e3 * kTolerance) {
       ok = true;  // the remaining step is below the resolution of Δλ
       break;
@@ -309,77 +364,71 @@ CoupledReturn GroupedReturn::solve(const IsotropicHardeningLaw& yield, const Vec
   }
 
   // The forces: every group shrunk radially to T_g (zero where clipped).
-  for (int i = 0; i < contribution_count_; ++i) {
-    const Contribution& c = contributions_[static_cast<std::size_t>(i)];
-    const Share& s = it.share[static_cast<std::size_t>(i)];
-    for_each_bit(c.groups, [&](int g) {
-      const Group& gr = groups_[static_cast<std::size_t>(g)];
-      const double rg = r[static_cast<std::size_t>(g)];
-      if (rg <= 0) return;  // no flow: an inactive Macaulay term or a zero resultant
-      const double ratio = (s.active >> g) & 1u ? (rg - gr.kappa * s.y) / rg : 0.0;
-      for_each_bit(gr.components, [&](int k) { out.force[k] = trial[k] * ratio; });
-    });
+  for (int g = 0; g < group_count_; ++g) {
+    const Group& gr = groups_[static_cast<std::size_t>(g)];
+    const Share& s = it.share[static_cast<std::size_t>(gr.contribution)];
+    const double rg = t.resultant[static_cast<std::size_t>(g)];
+    if (rg <= 0) continue;  // no flow: an inactive Macaulay term or a zero resultant
+    const double ratio = (s.active >> g) & 1u ? std::max(0.0, 1 - gr.kappa * s.y / rg) : 0.0;
+    for_each_bit(gr.components, [&](int k) { out.force[k] = trial[k] * ratio; });
   }
   out.multiplier = dl;
-  if (want_tangent) tangent(trial, r, it, dl, out.tangent);
+  if (want_tangent) tangent(trial, t, it, dl, out.tangent);
   return out;
 }
 
 // ∂F/∂u at the converged state, from F_c = t_c T_g/r_g (c in group g, t = F^tr = K(u − u^pl_n)):
 //   dF_c = (T_g/r_g) dt_c + t_c d(T_g/r_g),  d(T_g/r_g) = κ_g y_i dr_g/r_g² − (κ_g/r_g) dy_i,
 // dr_h = ∇r_h·dt with ∇r_h = C²∘t/r_h, and dy_i from linearising Φ_i = 0 and Σ z^β = 1:
-//   dΔλ = Σ_h q_i(h) dr_h / Q,  q_i = β z_i^(β−1)/a_i,  dz_i = (Σ_(h in i) dr_h − b_i dΔλ)/a_i,
-//   dy_i = (z_i^(β−1) dΔλ + Δλ (z^(β−1))' dz_i)/R_i = Y_i dΔλ + X_i Σ_(h in i) dr_h.
-// A clipped group keeps F = 0 and does not enter E_i (zero rows and columns, as held kinks of
-// closest_point_tangent); a group without flow keeps F = t (the elastic row).
-void GroupedReturn::tangent(const Vector6& trial, const std::array<double, kMaxGroups>& r,
-                            const Iterate& it, double dl, Matrix6& out) const {
-  std::array<double, kMaxGroups> x, yy, u;  // X_i, Y_i per contribution; ∂Δλ/∂r_h per group
+//   dΔλ = Σ_j (q_j/Q) N_j·dt,  q_j = β z_j^(β−1)/a_j,  N_j = Σ_(h in j) ∇r_h,
+//   dz_i = (N_i·dt − b_i dΔλ)/a_i,  dy_i = (z_i^(β−1) dΔλ + Δλ (z^(β−1))′ dz_i)/R_i
+//        = Y_i dΔλ + X_i N_i·dt.
+// So row c of ∂F/∂t is (T_g/r_g) e_c + t_c [κ_g y_i/r_g² ∇r_g − (κ_g/r_g)(Y_i W + X_i N_i)] with
+// W = Σ_j (q_j/Q) N_j. A clipped group keeps F = 0 and does not enter E_i (zero rows and
+// columns, as held kinks of closest_point_tangent); a group without flow keeps F = t.
+void GroupedReturn::tangent(const Vector6& trial, const Trial& t, const Iterate& it, double dl,
+                            Matrix6& out) const {
+  // ∇r of the active groups times K (∂t/∂u = K), and its parts per contribution.
+  std::array<Vector6, kMaxGroups> n;
+  Vector6 w = Vector6::Zero();
+  std::array<double, kMaxGroups> x, yy;
   for (int i = 0; i < contribution_count_; ++i) {
-    const Share& s = it.share[static_cast<std::size_t>(i)];
-    const double inv_scale = contributions_[static_cast<std::size_t>(i)].inverse_scale;
-    const double xi = dl * s.dzb1_inv_a * inv_scale;
-    x[static_cast<std::size_t>(i)] = xi;
-    yy[static_cast<std::size_t>(i)] = s.zb1 * inv_scale - xi * s.b;
-    const double ui = beta_ * s.zb1 * s.inv_a / it.slope;
-    for_each_bit(s.active, [&](int h) { u[static_cast<std::size_t>(h)] = ui; });
+    const auto ii = static_cast<std::size_t>(i);
+    const Share& s = it.share[ii];
+    n[ii].setZero();
+    for_each_bit(s.active, [&](int h) {
+      const Group& gh = groups_[static_cast<std::size_t>(h)];
+      const double inv_r = 1 / t.resultant[static_cast<std::size_t>(h)];
+      for_each_bit(gh.components, [&](int e) {
+        n[ii][e] = gh.coefficient[e] * gh.coefficient[e] * trial[e] * inv_r * stiffness_[e];
+      });
+    });
+    w += (beta_ * s.zb1 * s.inv_a / it.slope) * n[ii];
+    const double inv_scale = contributions_[ii].inverse_scale;
+    x[ii] = dl * s.dzb1_inv_a * inv_scale;
+    yy[ii] = s.zb1 * inv_scale - x[ii] * s.b;
   }
-  // ∂F/∂t, then ∂F/∂u = ∂F/∂t · K.
-  out.setZero();
-  for (int g = 0; g < group_count_; ++g) {
+  Matrix6 d = Matrix6::Zero();
+  for (int c = 0; c < 6; ++c) {
+    const int g = group_of_[static_cast<std::size_t>(c)];
+    if (g < 0) continue;
     const Group& gg = groups_[static_cast<std::size_t>(g)];
     const auto i = static_cast<std::size_t>(gg.contribution);
     const Share& s = it.share[i];
-    const double rg = r[static_cast<std::size_t>(g)];
+    const double rg = t.resultant[static_cast<std::size_t>(g)];
     if (rg <= 0) {
-      for_each_bit(gg.components, [&](int c) { out(c, c) = 1; });
+      d(c, c) = stiffness_[c];
       continue;
     }
     if (!((s.active >> g) & 1u)) continue;  // clipped
-    const double ratio = (rg - gg.kappa * s.y) / rg;
-    for_each_bit(gg.components, [&](int c) { out(c, c) = ratio; });
     const double kr = gg.kappa / rg;
-    for (int j = 0; j < contribution_count_; ++j) {
-      for_each_bit(it.share[static_cast<std::size_t>(j)].active, [&](int h) {
-        const Group& gh = groups_[static_cast<std::size_t>(h)];
-        const double rh = r[static_cast<std::size_t>(h)];
-        double m = -kr * (yy[i] * u[static_cast<std::size_t>(h)] + (i == static_cast<std::size_t>(j) ? x[i] : 0.0));
-        if (g == h) m += kr * s.y / rg;
-        const double mr = m / rh;
-        for_each_bit(gg.components, [&](int c) {
-          const double tm = trial[c] * mr;
-          for_each_bit(gh.components, [&](int e) {
-            out(c, e) += tm * gh.coefficient[e] * gh.coefficient[e] * trial[e];
-          });
-        });
-      });
-    }
+    d.row(c) = (-trial[c] * kr) * (yy[i] * w + x[i] * n[i]).transpose();
+    const double own = trial[c] * kr * s.y / rg;
+    for_each_bit(gg.components, [&](int e) { d(c, e) += own * n[i][e]; });
+    d(c, c) += (1 - kr * s.y) * stiffness_[c];
   }
-  for (int e = 0; e < 6; ++e) out.col(e) *= stiffness_[e];
   // Symmetric in exact arithmetic (associated flow); symmetrising removes the round-off.
-  for (int c = 0; c < 6; ++c) {
-    for (int e = c + 1; e < 6; ++e) out(c, e) = out(e, c) = 0.5 * (out(c, e) + out(e, c));
-  }
+  out = 0.5 * (d + d.transpose());
 }
 
 }  // namespace clinch

@@ -50,28 +50,32 @@ class GroupedReturn {
   struct Contribution {
     double scale = 1;          // R_i
     double inverse_scale = 1;  // 1/R_i
-    int first = 0;             // its groups are a range of groups_ from `first`
     unsigned groups = 0;       // bits of its groups in groups_
   };
   // How z^(β−1) is formed from the share equation (§5 exponents get closed forms).
   enum class Exponent : std::uint8_t { One, ThreeHalves, Two, General };
+  struct Trial;
   struct Share;
   struct Iterate;
+  struct Distance {
+    double value, slope;
+  };
 
-  Share solve_share(const Contribution& c, const std::array<double, kMaxGroups>& resultant,
-                    double multiplier, const YieldSample& y) const;
-  void evaluate(const std::array<double, kMaxGroups>& resultant, double multiplier,
-                const YieldSample& y, Iterate& it) const;
+  Trial resolve(const Vector6& trial) const;
+  Share solve_share(int contribution, const Trial& t, double multiplier, const YieldSample& y) const;
+  void evaluate(const Trial& t, double multiplier, const YieldSample& y, Iterate& it) const;
   double root_of_share_sum(double s) const;
-  double radial_guess(const std::array<double, kMaxGroups>& resultant, const Iterate& at_zero) const;
-  void tangent(const Vector6& trial, const std::array<double, kMaxGroups>& resultant,
-               const Iterate& it, double multiplier, Matrix6& out) const;
+  Distance distance(const Iterate& it) const;
+  double radial_guess(const Trial& t, const Iterate& at_zero, const YieldSample& y) const;
+  void tangent(const Vector6& trial, const Trial& t, const Iterate& it, double multiplier,
+               Matrix6& out) const;
 
   std::array<Group, kMaxGroups> groups_{};
   int group_count_ = 0;
   std::array<Contribution, kMaxGroups> contributions_{};
   int contribution_count_ = 0;
   Vector6 stiffness_ = Vector6::Ones();  // the diagonal of K
+  std::array<std::int8_t, 6> group_of_{-1, -1, -1, -1, -1, -1};  // per component
   double beta_ = 2.0;
   double gamma_ = 0.5;  // 1 − 1/β
   Exponent exponent_ = Exponent::Two;
