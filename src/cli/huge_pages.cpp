@@ -52,6 +52,14 @@ void reexec_with_huge_pages(char** argv) {
   const std::string value =
       tunables && *tunables ? std::string(tunables) + ":" + kTunable : std::string(kTunable);
   if (setenv("GLIBC_TUNABLES", value.c_str(), 1) != 0) return;
+  // The program's own path rather than /proc/self/exe, so that the new image keeps its name
+  // ("clinch", not "exe") in ps, top and /proc/<pid>/comm.
+  char path[4096];
+  const ssize_t length = readlink("/proc/self/exe", path, sizeof path - 1);
+  if (length > 0) {
+    path[length] = '\0';
+    execv(path, argv);
+  }
   execv("/proc/self/exe", argv);
   // Only reached when execv failed: carry on in this process.
 #else
