@@ -10,30 +10,33 @@
 
 namespace clinch {
 
-std::optional<std::uint32_t> SourceManager::load(const std::string& path, SourceLoc included_from,
-                                                 std::string* error) {
+namespace {
+
+// Reads a regular file whole. False with *error set to the system's reason on failure.
+bool read_file(const std::string& path, std::unique_ptr<char[]>& bytes, std::size_t& size,
+               std::string* error) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) {
     if (error) *error = "Is a directory";
-    return std::nullopt;
+    return false;
   }
   // Devices and pipes (/dev/zero, a FIFO) could block or never end: decks are regular files.
   if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec)) {
     if (error) *error = "not a regular file";
-    return std::nullopt;
+    return false;
   }
   std::FILE* handle = std::fopen(path.c_str(), "rb");
   if (!handle) {
     if (error) *error = std::strerror(errno);
-    return std::nullopt;
+    return false;
   }
   // Read straight into the buffer when the size is known (a regular file): one allocation, one
   // copy. Anything left after that (a file that grew) is appended in chunks.
   std::error_code size_error;
   const auto expected = std::filesystem::file_size(path, size_error);
   std::size_t capacity = size_error ? 0 : static_cast<std::size_t>(expected);
-  std::unique_ptr<char[]> bytes(new char[std::max<std::size_t>(capacity, 1)]);
-  std::size_t size = capacity > 0 ? std::fread(bytes.get(), 1, capacity, handle) : 0;
+  bytes.reset(new char[std::max<std::size_t>(capacity, 1)]);
+  size = capacity > 0 ? std::fread(bytes.get(), 1, capacity, handle) : 0;
   char buffer[1 << 16];
   std::size_t got;
   while ((got = std::fread(buffer, 1, sizeof buffer, handle)) > 0) {
@@ -50,9 +53,46 @@ std::optional<std::uint32_t> SourceManager::load(const std::string& path, Source
   std::fclose(handle);
   if (failed) {
     if (error) *error = "read error";
-    return std::nullopt;
+    return false;
   }
-  return add(path, path, std::move(bytes), size, included_from);
+  return true;
+}
+
+}  // namespace
+
+std::optional<std::uint32_t> SourceManager::load(const std::string& path, SourceLoc included_from,
+                                                 std::string* error) {
+  std::unique_ptr<char[]> bytes;
+  std::size_t size = 0;
+  if (!read_file(path, bytes, size, error)) return std::nullopt;
+  const std::uint32_t index = add(path, path, std::move(bytes), size, included_from);
+  files_[index].on_disk = true;
+  return index;
+}
+
+void SourceManager::release_texts() {
+  for (SourceFile& file : files_) {
+    if (!file.on_disk || file.released) continue;
+    file.bytes.reset();
+    file.text = {};
+    file.released = true;
+  }
+}
+
+void SourceManager::restore(SourceFile& file) const {
+  if (!file.released) return;
+  file.released = false;  // one attempt: a file that cannot be read back shows no lines
+  std::unique_ptr<char[]> bytes;
+  std::size_t size = 0;
+  if (!read_file(file.path, bytes, size, nullptr) || size != file.size) return;
+  file.bytes = std::move(bytes);
+  file.text = std::string_view(file.bytes.get(), size);
+}
+
+std::string_view SourceManager::text(std::uint32_t index) const {
+  SourceFile& file = files_[index];
+  restore(file);
+  return file.text;
 }
 
 std::uint32_t SourceManager::add_buffer(std::string display_name, std::string text,
@@ -70,6 +110,7 @@ std::uint32_t SourceManager::add(std::string path, std::string display_name,
   file.display_name = std::move(display_name);
   file.text = std::string_view(bytes.get(), size);
   file.bytes = std::move(bytes);
+  file.size = size;
   file.included_from = included_from;
   files_.push_back(std::move(file));
   return static_cast<std::uint32_t>(files_.size() - 1);
@@ -92,6 +133,8 @@ void SourceManager::index_lines(SourceFile& file) const {
 std::string_view SourceManager::line_text(SourceLoc loc) const {
   if (!loc.valid() || loc.file >= files_.size() || loc.line == 0) return {};
   SourceFile& file = files_[loc.file];
+  restore(file);
+  if (file.text.size() != file.size) return {};  // released and not readable as it was
   index_lines(file);
   if (loc.line > file.line_starts.size()) return {};
   std::size_t begin = file.line_starts[loc.line - 1];

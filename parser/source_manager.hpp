@@ -24,6 +24,11 @@ struct SourceFile {
   std::unique_ptr<char[]> bytes;
   std::vector<std::uint32_t> line_starts;  // byte offset of each line (filled lazily)
   SourceLoc included_from;   // the *INCLUDE or INPUT= value that opened it; invalid for the deck
+  // Read from disk (not an in-memory buffer), so its contents can be released after parsing and
+  // read again when a diagnostic shows one of its lines.
+  bool on_disk = false;
+  bool released = false;
+  std::size_t size = 0;  // of the contents that were parsed
 };
 
 class SourceManager {
@@ -36,6 +41,14 @@ class SourceManager {
                            SourceLoc included_from = {});
 
   const SourceFile& file(std::uint32_t index) const { return files_[index]; }
+  // The whole contents of one file, read again from disk if they were released ("" when the
+  // file can no longer be read or its size changed since it was parsed).
+  std::string_view text(std::uint32_t index) const;
+  // Frees the contents of every file read from disk. Parsing is over once the model is built;
+  // only diagnostics look at the text again, and they read it back on demand (text, line_text).
+  // A deck as large as the memory it becomes is then no longer held through validation and the
+  // analysis.
+  void release_texts();
   std::uint32_t file_count() const { return static_cast<std::uint32_t>(files_.size()); }
   // The text of one physical line without its line end ("" when out of range).
   std::string_view line_text(SourceLoc loc) const;
@@ -48,6 +61,8 @@ class SourceManager {
   std::uint32_t add(std::string path, std::string display_name, std::unique_ptr<char[]> bytes,
                     std::size_t size, SourceLoc included_from);
   void index_lines(SourceFile& file) const;
+  // Reads a released file back (text() and line_text()).
+  void restore(SourceFile& file) const;
   mutable std::vector<SourceFile> files_;
 };
 

@@ -33,7 +33,7 @@ std::vector<Expectation> parse_expectations(const SourceManager& sources) {
       R"(expected-(error|warning)(@([+-]?\d+))?(:(\d+))?\s*\{\{(.*?)\}\})");
   std::vector<Expectation> out;
   for (std::uint32_t f = 0; f < sources.file_count(); ++f) {
-    std::istringstream text{std::string(sources.file(f).text)};
+    std::istringstream text{std::string(sources.text(f))};
     std::string line;
     std::uint32_t number = 0;
     while (std::getline(text, line)) {
