@@ -58,6 +58,7 @@ struct GroupedReturn::Share {
   double dzb1_inv_a;  // (z^(β−1))′/(∂Φ_i/∂z)
   double b;           // ∂Φ_i/∂Δλ
   double y;           // Δλ n_i
+  double curvature;   // d²(z^β)/dΔλ² (β = 1.5 only; NaN otherwise)
   unsigned active;    // bits of the groups (indices into groups_) with T_g > 0
 };
 
@@ -65,6 +66,7 @@ struct GroupedReturn::Iterate {
   std::array<Share, kMaxGroups> share;
   double sum = 0;    // S = Σ z_i^β
   double slope = 0;  // Q = −dS/dΔλ = Σ β z_i^(β−1) (∂Φ_i/∂Δλ)/(∂Φ_i/∂z)
+  double curvature = 0;  // d²S/dΔλ² (NaN where not formed)
 };
 
 std::optional<GroupedReturn> GroupedReturn::create(const ConnectorPotential& potential,
@@ -232,6 +234,17 @@ GroupedReturn::Trial GroupedReturn::resolve(const Vector6& trial) const {
     if (s.y < first_clip) {
       s.active = mask;
       s.b = c.scale * y.slope * s.z + kappa * s.zb1 * c.inverse_scale;
+      s.curvature = std::numeric_limits<double>::quiet_NaN();
+      if (exponent_ == Exponent::ThreeHalves) {
+        // With w = √z: w′ = −Φ_Δλ/ρ and w″ = −(Φ_ww w′² + 2 Φ_wΔλ w′)/ρ (F_y linear on its
+        // segment), Φ_ww = 2 R F_y, Φ_wΔλ = 2 R h w + K/R; (w³)″ = 6 w w′² + 3 w² w″.
+        const double w = s.zb1, inv_rho = s.dzb1_inv_a;
+        const double w1 = -s.b * inv_rho;
+        const double w2 =
+            -(2 * rf * w1 * w1 + 2 * (2 * c.scale * y.slope * w + kappa * c.inverse_scale) * w1) *
+            inv_rho;
+        s.curvature = 6 * w * w1 * w1 + 3 * w * w * w2;
+      }
       return s;
     }
     const unsigned kept = mask;
@@ -247,18 +260,20 @@ GroupedReturn::Trial GroupedReturn::resolve(const Vector6& trial) const {
       first_clip = std::min(first_clip, t.reach[gg]);
     });
   }
-  return Share{0, 0, 1 / rf, 0, 0, 0, 0};  // nothing positive: E_i = 0
+  return Share{0, 0, 1 / rf, 0, 0, 0, 0, 0};  // nothing positive: E_i = 0
 }
 
 [[gnu::always_inline]] inline void GroupedReturn::evaluate(const Trial& t, double multiplier, const YieldSample& y,
                              Iterate& it) const {
   it.sum = 0;
   it.slope = 0;
+  it.curvature = 0;
   for (int i = 0; i < contribution_count_; ++i) {
     const Share s = solve_share(i, t, multiplier, y);
     it.share[static_cast<std::size_t>(i)] = s;
     it.sum += s.z * s.zb1;
     it.slope += beta_ * s.zb1 * s.b * s.inv_a;
+    it.curvature += s.curvature;
   }
 }
 
@@ -285,12 +300,15 @@ double GroupedReturn::radial_guess(const Trial& t, const Iterate& at_zero,
 // (third order) instead of a root.
 GroupedReturn::Distance GroupedReturn::distance(const Iterate& it) const {
   const double psi = it.sum - 1;
-  if (exponent_ == Exponent::One) return {psi, -it.slope};
+  if (exponent_ == Exponent::One) return {psi, -it.slope, it.curvature};
   const double rise = std::abs(psi) < kNearSurface
                           ? psi * (1 + (gamma_ - 1) * psi * (0.5 + (gamma_ - 2) * psi / 6))
                           : (root_of_share_sum(it.sum) - 1) / gamma_;  // (S^γ − 1)/γ
   const double s_gamma = 1 + gamma_ * rise;
-  return {rise / s_gamma, -it.slope / (it.sum * s_gamma)};
+  // g′ = S^(−γ−1) S′ and g″ = S^(−γ−1) (S″ − (γ + 1) S′²/S), S′ = −Q.
+  const double weight = 1 / (it.sum * s_gamma);
+  return {rise / s_gamma, -it.slope * weight,
+          weight * (it.curvature - (gamma_ + 1) * it.slope * it.slope / it.sum)};
 }
 
 CoupledReturn GroupedReturn::solve(const IsotropicHardeningLaw& yield, const Vector6& trial,
@@ -343,12 +361,15 @@ CoupledReturn GroupedReturn::solve(const IsotropicHardeningLaw& yield, const Vec
     next = std::numeric_limits<double>::quiet_NaN();
     const Distance d = distance(it);
     if (!(d.slope < 0)) continue;
-    // Halley's step, with g″ from the slopes at this and the previous iterate: Newton's
-    // quadratic convergence has a large constant here (z_i is far from linear in Δλ), and this
-    // saves about one evaluation per return at no cost. Outside [1/2, 2] the correction is not
-    // trusted and the step stays Newton's.
+    // Halley's step: Newton's quadratic convergence has a large constant here (z_i is far from
+    // linear in Δλ). g″ is exact for β = 1.5 (Share::curvature) and taken from the slopes at this
+    // and the previous iterate otherwise; either saves about one evaluation per return. Outside
+    // [1/2, 2] the correction is not trusted and the step stays Newton's.
     double step = -d.value / d.slope;
-    const double factor = 1 + step * (d.slope - previous.slope) / ((dl - previous_dl) * 2 * d.slope);
+    const double factor = 1 + step * (std::isnan(d.curvature)
+                                          ? (d.slope - previous.slope) / (dl - previous_dl)
+                                          : d.curvature) /
+                                  (2 * d.slope);
     if (factor >= 0.5 && factor <= 2) step /= factor;
     previous = d;
     previous_dl = dl;

@@ -58,7 +58,7 @@ class GroupedReturn {
   struct Share;
   struct Iterate;
   struct Distance {
-    double value, slope;
+    double value, slope, curvature;  // g, dg/dΔλ, d²g/dΔλ² (NaN where S″ is not formed)
   };
 
   Trial resolve(const Vector6& trial) const;
