@@ -43,6 +43,7 @@ void for_each_bit(unsigned mask, F&& f) {
 // its groups with r_g > 0, their Σ r_g and Σ κ_g, and the smallest y_i at which one clips.
 struct GroupedReturn::Trial {
   std::array<double, kMaxGroups> resultant;  // r_g
+  std::array<double, kMaxGroups> inverse;    // 1/r_g (0 for r_g = 0)
   std::array<double, kMaxGroups> reach;      // r_g/κ_g: the y_i at which group g clips
   std::array<unsigned, kMaxGroups> positive;
   std::array<double, kMaxGroups> sum, kappa, first_clip;
@@ -108,6 +109,7 @@ std::optional<GroupedReturn> GroupedReturn::create(const ConnectorPotential& pot
       }
     }
     if (!(r.kappa > 0)) return std::nullopt;
+    r.inverse_kappa = 1 / r.kappa;
     for (int c = 0; c < 6; ++c) {
       if ((g.components >> c) & 1u) out.group_of_[static_cast<std::size_t>(c)] = static_cast<std::int8_t>(out.group_count_);
     }
@@ -154,7 +156,8 @@ GroupedReturn::Trial GroupedReturn::resolve(const Vector6& trial) const {
     // A Macaulay group: its positive part (a negative one has no flow).
     const double rg = gr.macauley ? v : std::sqrt(v);
     t.resultant[static_cast<std::size_t>(g)] = rg;
-    t.reach[static_cast<std::size_t>(g)] = rg / gr.kappa;
+    t.inverse[static_cast<std::size_t>(g)] = rg > 0 ? 1 / rg : 0.0;
+    t.reach[static_cast<std::size_t>(g)] = rg * gr.inverse_kappa;
   }
   for (int i = 0; i < contribution_count_; ++i) {
     const auto ii = static_cast<std::size_t>(i);
@@ -390,7 +393,8 @@ CoupledReturn GroupedReturn::solve(const IsotropicHardeningLaw& yield, const Vec
     const Share& s = it.share[static_cast<std::size_t>(gr.contribution)];
     const double rg = t.resultant[static_cast<std::size_t>(g)];
     if (rg <= 0) continue;  // no flow: an inactive Macaulay term or a zero resultant
-    const double ratio = (s.active >> g) & 1u ? std::max(0.0, 1 - gr.kappa * s.y / rg) : 0.0;
+    const double ratio =
+        (s.active >> g) & 1u ? std::max(0.0, 1 - gr.kappa * s.y * t.inverse[static_cast<std::size_t>(g)]) : 0.0;
     for_each_bit(gr.components, [&](int k) { out.force[k] = trial[k] * ratio; });
   }
   out.multiplier = dl;
@@ -419,7 +423,7 @@ void GroupedReturn::tangent(const Vector6& trial, const Trial& t, const Iterate&
     n[ii].setZero();
     for_each_bit(s.active, [&](int h) {
       const Group& gh = groups_[static_cast<std::size_t>(h)];
-      const double inv_r = 1 / t.resultant[static_cast<std::size_t>(h)];
+      const double inv_r = t.inverse[static_cast<std::size_t>(h)];
       for_each_bit(gh.components, [&](int e) {
         n[ii][e] = gh.coefficient[e] * gh.coefficient[e] * trial[e] * inv_r * stiffness_[e];
       });
@@ -442,9 +446,10 @@ void GroupedReturn::tangent(const Vector6& trial, const Trial& t, const Iterate&
       continue;
     }
     if (!((s.active >> g) & 1u)) continue;  // clipped
-    const double kr = gg.kappa / rg;
+    const double inv_rg = t.inverse[static_cast<std::size_t>(g)];
+    const double kr = gg.kappa * inv_rg;
     d.row(c) = (-trial[c] * kr) * (yy[i] * w + x[i] * n[i]).transpose();
-    const double own = trial[c] * kr * s.y / rg;
+    const double own = trial[c] * kr * s.y * inv_rg;
     for_each_bit(gg.components, [&](int e) { d(c, e) += own * n[i][e]; });
     d(c, c) += (1 - kr * s.y) * stiffness_[c];
   }

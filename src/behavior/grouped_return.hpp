@@ -46,6 +46,7 @@ class GroupedReturn {
     int contribution = 0;
     Vector6 coefficient = Vector6::Zero();  // C (sign included)
     double kappa = 0;                       // k·C², uniform over the group
+    double inverse_kappa = 0;
   };
   struct Contribution {
     double scale = 1;          // R_i
