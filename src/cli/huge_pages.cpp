@@ -12,6 +12,11 @@ namespace clinch {
 namespace {
 
 constexpr const char* kTunable = "glibc.malloc.hugetlb=1";
+// glibc's heap grows with brk in steps of top_pad (128 kB by default) and madvises each step for
+// huge pages, but a step smaller than 2 MB never holds an aligned huge page, so the heap's
+// allocations stayed in 4 kB pages (docs/performance.md). Steps of 128 MB of address space (only
+// touched pages count) let the kernel back the heap with huge pages.
+constexpr const char* kTopPad = "glibc.malloc.top_pad=134217728";
 
 bool transparent_huge_pages_on_request() {
   std::ifstream mode("/sys/kernel/mm/transparent_hugepage/enabled");
@@ -49,8 +54,8 @@ void reexec_with_huge_pages(char** argv) {
 #if defined(__linux__) && defined(__GLIBC__)
   if (!wanted(argv)) return;
   const char* tunables = std::getenv("GLIBC_TUNABLES");
-  const std::string value =
-      tunables && *tunables ? std::string(tunables) + ":" + kTunable : std::string(kTunable);
+  std::string value = tunables && *tunables ? std::string(tunables) + ":" + kTunable : kTunable;
+  if (!tunables || !std::strstr(tunables, "glibc.malloc.top_pad")) value += std::string(":") + kTopPad;
   if (setenv("GLIBC_TUNABLES", value.c_str(), 1) != 0) return;
   // The program's own path rather than /proc/self/exe, so that the new image keeps its name
   // ("clinch", not "exe") in ps, top and /proc/<pid>/comm.
