@@ -23,7 +23,7 @@ struct SourceFile {
   // performance.md).
   std::unique_ptr<char[]> bytes;
   std::vector<std::uint32_t> line_starts;  // byte offset of each line (filled lazily)
-  SourceLoc included_from;   // the *INCLUDE or INPUT= value that opened it; invalid for the deck
+  SourceLoc included_from;  // the *INCLUDE or INPUT= value that opened it; invalid for the deck
   // Read from disk (not an in-memory buffer), so its contents can be released after parsing and
   // read again when a diagnostic shows one of its lines.
   bool on_disk = false;

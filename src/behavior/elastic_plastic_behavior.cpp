@@ -158,8 +158,9 @@ class ElasticPlasticBehavior final : public Behavior {
       ri.kinematic = p.kinematic ? &*p.kinematic : nullptr;
       const UncoupledReturn r = uncoupled_return(ri);
       if (!r.converged) {
-        out.message = "connector return mapping did not converge (uncoupled plasticity, component " +
-                      std::to_string(i + 1) + ")";
+        out.message =
+            "connector return mapping did not converge (uncoupled plasticity, component " +
+            std::to_string(i + 1) + ")";
         return IntegrationStatus::Failure;
       }
       if (!r.plastic) continue;
@@ -175,7 +176,8 @@ class ElasticPlasticBehavior final : public Behavior {
         }
       } else {
         out.force.noalias() -= dl * k_.col(i);
-        if (consistent) out.tangent.noalias() -= k_.col(i) * (k_.col(i).transpose() / r.tangent_denominator);
+        if (consistent)
+          out.tangent.noalias() -= k_.col(i) * (k_.col(i).transpose() / r.tangent_denominator);
       }
     }
     Eigen::Map<Vector6>(h + kPlasticMotion) = plastic;

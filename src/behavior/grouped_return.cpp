@@ -10,7 +10,7 @@
 namespace clinch {
 namespace {
 
-constexpr int kMaxIterations = 60;  // Newton with bisection: far more than it ever needs
+constexpr int kMaxIterations = 60;    // Newton with bisection: far more than it ever needs
 constexpr double kTolerance = 1e-12;  // on P/F_y − 1 (§6.4); |S − 1| ≤ β·kTolerance
 // Within this distance of S = 1, S^γ is taken from its series (GroupedReturn::distance).
 constexpr double kNearSurface = 1e-2;
@@ -24,7 +24,8 @@ double approximate_cube_root(double x) {
   if (!(x >= std::numeric_limits<double>::min() && x <= std::numeric_limits<double>::max())) {
     return std::cbrt(x);
   }
-  const double y = std::bit_cast<double>(std::bit_cast<std::uint64_t>(x) / 3 + 0x2A9F7893782DA1CEull);
+  const double y =
+      std::bit_cast<double>(std::bit_cast<std::uint64_t>(x) / 3 + 0x2A9F7893782DA1CEull);
   const double y3 = y * y * y;
   return y * (y3 + 2 * x) / (2 * y3 + x);
 }
@@ -65,8 +66,8 @@ struct GroupedReturn::Share {
 
 struct GroupedReturn::Iterate {
   std::array<Share, kMaxGroups> share;
-  double sum = 0;    // S = Σ z_i^β
-  double slope = 0;  // Q = −dS/dΔλ = Σ β z_i^(β−1) (∂Φ_i/∂Δλ)/(∂Φ_i/∂z)
+  double sum = 0;        // S = Σ z_i^β
+  double slope = 0;      // Q = −dS/dΔλ = Σ β z_i^(β−1) (∂Φ_i/∂Δλ)/(∂Φ_i/∂z)
   double curvature = 0;  // d²S/dΔλ² (NaN where not formed)
 };
 
@@ -75,7 +76,8 @@ std::optional<GroupedReturn> GroupedReturn::create(const ConnectorPotential& pot
   std::vector<KinkGroup> groups;
   std::vector<double> scales;
   if (!potential.group_structure(groups, scales)) return std::nullopt;
-  if (static_cast<int>(scales.size()) > kMaxGroups || static_cast<int>(groups.size()) > kMaxGroups) {
+  if (static_cast<int>(scales.size()) > kMaxGroups ||
+      static_cast<int>(groups.size()) > kMaxGroups) {
     return std::nullopt;
   }
   const Matrix6& k = space.stiffness;
@@ -111,7 +113,8 @@ std::optional<GroupedReturn> GroupedReturn::create(const ConnectorPotential& pot
     if (!(r.kappa > 0)) return std::nullopt;
     r.inverse_kappa = 1 / r.kappa;
     for (int c = 0; c < 6; ++c) {
-      if ((g.components >> c) & 1u) out.group_of_[static_cast<std::size_t>(c)] = static_cast<std::int8_t>(out.group_count_);
+      if ((g.components >> c) & 1u)
+        out.group_of_[static_cast<std::size_t>(c)] = static_cast<std::int8_t>(out.group_count_);
     }
     out.groups_[static_cast<std::size_t>(out.group_count_++)] = r;
   }
@@ -120,7 +123,8 @@ std::optional<GroupedReturn> GroupedReturn::create(const ConnectorPotential& pot
     Contribution& c = out.contributions_[static_cast<std::size_t>(i)];
     c.scale = scales[static_cast<std::size_t>(i)];
     c.inverse_scale = 1 / c.scale;
-    while (next < out.group_count_ && out.groups_[static_cast<std::size_t>(next)].contribution == i) {
+    while (next < out.group_count_ &&
+           out.groups_[static_cast<std::size_t>(next)].contribution == i) {
       c.groups |= 1u << next++;
     }
   }
@@ -136,10 +140,14 @@ std::optional<GroupedReturn> GroupedReturn::create(const ConnectorPotential& pot
 // S^γ (γ = 1 − 1/β), for the guess and the far steps only: the cube root is approximate.
 double GroupedReturn::root_of_share_sum(double s) const {
   switch (exponent_) {
-    case Exponent::One: return 1;
-    case Exponent::ThreeHalves: return approximate_cube_root(s);
-    case Exponent::Two: return std::sqrt(s);
-    case Exponent::General: break;
+    case Exponent::One:
+      return 1;
+    case Exponent::ThreeHalves:
+      return approximate_cube_root(s);
+    case Exponent::Two:
+      return std::sqrt(s);
+    case Exponent::General:
+      break;
   }
   return std::pow(s, gamma_);
 }
@@ -176,8 +184,8 @@ GroupedReturn::Trial GroupedReturn::resolve(const Vector6& trial) const {
   return t;
 }
 
-[[gnu::always_inline]] inline GroupedReturn::Share GroupedReturn::solve_share(int contribution, const Trial& t,
-                                                double multiplier, const YieldSample& y) const {
+[[gnu::always_inline]] inline GroupedReturn::Share GroupedReturn::solve_share(
+    int contribution, const Trial& t, double multiplier, const YieldSample& y) const {
   const auto ii = static_cast<std::size_t>(contribution);
   const Contribution& c = contributions_[ii];
   Share s;
@@ -266,8 +274,9 @@ GroupedReturn::Trial GroupedReturn::resolve(const Vector6& trial) const {
   return Share{0, 0, 1 / rf, 0, 0, 0, 0, 0};  // nothing positive: E_i = 0
 }
 
-[[gnu::always_inline]] inline void GroupedReturn::evaluate(const Trial& t, double multiplier, const YieldSample& y,
-                             Iterate& it) const {
+[[gnu::always_inline]] inline void GroupedReturn::evaluate(const Trial& t, double multiplier,
+                                                           const YieldSample& y,
+                                                           Iterate& it) const {
   it.sum = 0;
   it.slope = 0;
   it.curvature = 0;
@@ -369,10 +378,11 @@ CoupledReturn GroupedReturn::solve(const IsotropicHardeningLaw& yield, const Vec
     // and the previous iterate otherwise; either saves about one evaluation per return. Outside
     // [1/2, 2] the correction is not trusted and the step stays Newton's.
     double step = -d.value / d.slope;
-    const double factor = 1 + step * (std::isnan(d.curvature)
-                                          ? (d.slope - previous.slope) / (dl - previous_dl)
-                                          : d.curvature) /
-                                  (2 * d.slope);
+    const double factor =
+        1 + step *
+                (std::isnan(d.curvature) ? (d.slope - previous.slope) / (dl - previous_dl)
+                                         : d.curvature) /
+                (2 * d.slope);
     if (factor >= 0.5 && factor <= 2) step /= factor;
     previous = d;
     previous_dl = dl;
@@ -394,7 +404,9 @@ CoupledReturn GroupedReturn::solve(const IsotropicHardeningLaw& yield, const Vec
     const double rg = t.resultant[static_cast<std::size_t>(g)];
     if (rg <= 0) continue;  // no flow: an inactive Macaulay term or a zero resultant
     const double ratio =
-        (s.active >> g) & 1u ? std::max(0.0, 1 - gr.kappa * s.y * t.inverse[static_cast<std::size_t>(g)]) : 0.0;
+        (s.active >> g) & 1u
+            ? std::max(0.0, 1 - gr.kappa * s.y * t.inverse[static_cast<std::size_t>(g)])
+            : 0.0;
     for_each_bit(gr.components, [&](int k) { out.force[k] = trial[k] * ratio; });
   }
   out.multiplier = dl;

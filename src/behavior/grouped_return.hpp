@@ -63,7 +63,8 @@ class GroupedReturn {
   };
 
   Trial resolve(const Vector6& trial) const;
-  Share solve_share(int contribution, const Trial& t, double multiplier, const YieldSample& y) const;
+  Share solve_share(int contribution, const Trial& t, double multiplier,
+                    const YieldSample& y) const;
   void evaluate(const Trial& t, double multiplier, const YieldSample& y, Iterate& it) const;
   double root_of_share_sum(double s) const;
   Distance distance(const Iterate& it) const;
@@ -75,7 +76,7 @@ class GroupedReturn {
   int group_count_ = 0;
   std::array<Contribution, kMaxGroups> contributions_{};
   int contribution_count_ = 0;
-  Vector6 stiffness_ = Vector6::Ones();  // the diagonal of K
+  Vector6 stiffness_ = Vector6::Ones();                          // the diagonal of K
   std::array<std::int8_t, 6> group_of_{-1, -1, -1, -1, -1, -1};  // per component
   double beta_ = 2.0;
   double gamma_ = 0.5;  // 1 − 1/β

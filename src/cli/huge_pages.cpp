@@ -55,7 +55,8 @@ void reexec_with_huge_pages(char** argv) {
   if (!wanted(argv)) return;
   const char* tunables = std::getenv("GLIBC_TUNABLES");
   std::string value = tunables && *tunables ? std::string(tunables) + ":" + kTunable : kTunable;
-  if (!tunables || !std::strstr(tunables, "glibc.malloc.top_pad")) value += std::string(":") + kTopPad;
+  if (!tunables || !std::strstr(tunables, "glibc.malloc.top_pad"))
+    value += std::string(":") + kTopPad;
   if (setenv("GLIBC_TUNABLES", value.c_str(), 1) != 0) return;
   // The program's own path rather than /proc/self/exe, so that the new image keeps its name
   // ("clinch", not "exe") in ps, top and /proc/<pid>/comm.

@@ -19,7 +19,9 @@ namespace {
 std::string spot_weld_body(const std::string& elasticity, const std::string& exponent = "1.5") {
   return elasticity +
          "*CONNECTOR PLASTICITY\n*CONNECTOR HARDENING\n40000., 0.\n60000., 0.5\n"
-         "*CONNECTOR POTENTIAL, EXPONENT=" + exponent + "\nnormal, 0.02, , MACAULEY, ,\n"
+         "*CONNECTOR POTENTIAL, EXPONENT=" +
+         exponent +
+         "\nnormal, 0.02, , MACAULEY, ,\n"
          "shear, 0.05, , ABS, ,\n"
          "*CONNECTOR DERIVED COMPONENT, NAME=normal, OPERATOR=MACAULEY SUM\n3\n1.0\n"
          "*CONNECTOR DERIVED COMPONENT, NAME=normal\n4, 5\n0.8, 0.8\n"
@@ -129,8 +131,7 @@ TEST(GroupedReturn, SatisfiesTheOptimalityConditionsAndAgreesWithTheGeneralRetur
     ++compared;
     EXPECT_LE((a.force - b.force).norm(), 1e-9 * trial.norm()) << trial.transpose();
     EXPECT_NEAR(a.multiplier, b.multiplier, 1e-9 * b.multiplier) << trial.transpose();
-    EXPECT_LE((a.tangent - b.tangent).cwiseAbs().maxCoeff(),
-              1e-6 * b.tangent.cwiseAbs().maxCoeff())
+    EXPECT_LE((a.tangent - b.tangent).cwiseAbs().maxCoeff(), 1e-6 * b.tangent.cwiseAbs().maxCoeff())
         << trial.transpose();
   }
   EXPECT_GE(solved, 1980);    // at most 1% left to the general return
@@ -164,7 +165,8 @@ TEST(GroupedReturn, EveryExponentAgreesWithTheGeneralReturnAndFiniteDifferences)
       if (!a.converged) continue;
       ++solved;
       EXPECT_LE(optimality_violation(p, trial, a), 1e-9) << trial.transpose();
-      const CoupledReturn b = closest_point_return(p.space, *p.potential, *p.yield, trial, 0.0, true);
+      const CoupledReturn b =
+          closest_point_return(p.space, *p.potential, *p.yield, trial, 0.0, true);
       if (!b.converged || optimality_violation(p, trial, b) > 1e-9) continue;
       ++compared;
       // Tolerances as in the test above.
@@ -218,14 +220,14 @@ TEST(GroupedReturn, SofteningEndsOnTheClosestPoint) {
     if (!a.converged) continue;
     ++solved;
     EXPECT_LE(optimality_violation(p, trial, a, ubar), 1e-9) << trial.transpose();
-    const CoupledReturn b = closest_point_return(p.space, *p.potential, *p.yield, trial, ubar, true);
+    const CoupledReturn b =
+        closest_point_return(p.space, *p.potential, *p.yield, trial, ubar, true);
     if (!b.converged || optimality_violation(p, trial, b, ubar) > 1e-9) continue;
     ++compared;
     // Tolerances as in the first test.
     EXPECT_LE((a.force - b.force).norm(), 1e-9 * trial.norm()) << trial.transpose();
     EXPECT_NEAR(a.multiplier, b.multiplier, 1e-9 * b.multiplier) << trial.transpose();
-    EXPECT_LE((a.tangent - b.tangent).cwiseAbs().maxCoeff(),
-              1e-6 * b.tangent.cwiseAbs().maxCoeff())
+    EXPECT_LE((a.tangent - b.tangent).cwiseAbs().maxCoeff(), 1e-6 * b.tangent.cwiseAbs().maxCoeff())
         << trial.transpose();
   }
   EXPECT_GE(solved, plastic * 99 / 100);
@@ -240,12 +242,14 @@ TEST(GroupedReturn, AppliesOnlyToRadialGroups) {
   Parts coupled = parts(
       "*CONNECTOR ELASTICITY\n1000., 100., 1000., 0., 0., 1000., 0., 0.\n"
       "0., 0., 1000., 0., 0., 0., 0., 0.\n0., 1000., 0., 0., 0.\n"
-      "*CONNECTOR PLASTICITY\n*CONNECTOR HARDENING\n100., 0.\n*CONNECTOR POTENTIAL\n1, 1.\n2, 1.\n");
+      "*CONNECTOR PLASTICITY\n*CONNECTOR HARDENING\n100., 0.\n*CONNECTOR POTENTIAL\n1, 1.\n2, "
+      "1.\n");
   EXPECT_FALSE(GroupedReturn::create(*coupled.potential, coupled.space));
   // A sum-type potential (H = NONE) is linear, not a sum of groups.
-  Parts linear = parts(uncoupled_elasticity({1e3, 1e3, 1e3, 1e3, 1e3, 1e3}) +
-                       "*CONNECTOR PLASTICITY\n*CONNECTOR HARDENING\n100., 0.\n"
-                       "*CONNECTOR POTENTIAL, EXPONENT=1.\n1, 1., 1., NONE, ,\n2, 2., 1., NONE, ,\n");
+  Parts linear =
+      parts(uncoupled_elasticity({1e3, 1e3, 1e3, 1e3, 1e3, 1e3}) +
+            "*CONNECTOR PLASTICITY\n*CONNECTOR HARDENING\n100., 0.\n"
+            "*CONNECTOR POTENTIAL, EXPONENT=1.\n1, 1., 1., NONE, ,\n2, 2., 1., NONE, ,\n");
   EXPECT_FALSE(GroupedReturn::create(*linear.potential, linear.space));
   // Intrinsic components under ABS (E11 of behaviors.md §6.7) are one-component groups.
   Parts circle = parts(uncoupled_elasticity({1e3, 1e3, 1e3, 1e3, 1e3, 1e3}) +

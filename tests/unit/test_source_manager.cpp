@@ -2,7 +2,6 @@
 // parsing and reads them back when a diagnostic shows one of its lines; a file that changed size
 // in between shows no line rather than a wrong one; in-memory buffers are never released.
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <filesystem>
@@ -37,7 +36,7 @@ TEST(SourceManager, ReleasedFileIsReadBackForItsLines) {
   const auto index = sources.load(deck.path(), {}, &error);
   ASSERT_TRUE(index) << error;
   sources.release_texts();
-  EXPECT_TRUE(sources.file(*index).text.empty());  // the memory is gone
+  EXPECT_TRUE(sources.file(*index).text.empty());                 // the memory is gone
   EXPECT_EQ(sources.line_text({*index, 2, 1}), "1, 0., 0., 0.");  // without the CR
   EXPECT_EQ(sources.line_text({*index, 3, 1}), "2, 1., 0., 0.");
   EXPECT_EQ(sources.text(*index).size(), 35u);
