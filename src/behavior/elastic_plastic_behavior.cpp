@@ -107,17 +107,8 @@ class ElasticPlasticBehavior final : public Behavior {
       for (int i = 0; i < 6; ++i) {
         if (!has_component(coupled_space_, i + 1)) trial[i] = 0.0;
       }
-      const CoupledPlasticity& c = *coupled_;
       const double ubar = h[kCoupledEquivalent];
-      CoupledReturn r;
-      if (c.potential.is_max()) {
-        r = multi_surface_return(space_, c.potential, c.yield, trial, ubar, consistent);
-      } else {
-        if (c.grouped) r = c.grouped->solve(c.yield, trial, ubar, consistent);
-        if (!c.grouped || !r.converged) {
-          r = closest_point_return(space_, c.potential, c.yield, trial, ubar, consistent);
-        }
-      }
+      const CoupledReturn r = coupled_return(trial, ubar, consistent);
       if (!r.converged) {
         out.message = "connector return mapping did not converge (coupled plasticity)";
         return IntegrationStatus::Failure;
@@ -211,6 +202,20 @@ class ElasticPlasticBehavior final : public Behavior {
   }
 
  private:
+  // §6.4/§6.6: the multi-surface return for a MAX potential; the grouped return where it
+  // applies, with the general closest-point return as its fallback.
+  CoupledReturn coupled_return(const Vector6& trial, double ubar, bool consistent) const {
+    const CoupledPlasticity& c = *coupled_;
+    if (c.potential.is_max()) {
+      return multi_surface_return(space_, c.potential, c.yield, trial, ubar, consistent);
+    }
+    if (c.grouped) {
+      CoupledReturn r = c.grouped->solve(c.yield, trial, ubar, consistent);
+      if (r.converged) return r;
+    }
+    return closest_point_return(space_, c.potential, c.yield, trial, ubar, consistent);
+  }
+
   Matrix6 k_;  // K on the linear components, zero elsewhere
   ComponentMask linear_;
   bool diagonal_;
