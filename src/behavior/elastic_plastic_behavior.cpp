@@ -29,7 +29,6 @@ constexpr int kUncoupledEquivalent = 6;
 constexpr int kCoupledEquivalent = 12;
 constexpr int kBackForce = 13;
 constexpr int kHistorySize = 19;
-constexpr ComponentMask kAllComponents = 0b111111;
 
 struct UncoupledPlasticity {
   int slot = 0;  // component − 1
@@ -121,18 +120,12 @@ class ElasticPlasticBehavior final : public Behavior {
           plastic.noalias() += space_.compliance * (trial - r.force);
         }
         h[kCoupledEquivalent] = ubar + r.multiplier;
-        if (coupled_space_ == kAllComponents) {
-          // The potential spans all six components (none padded): its block is all of F and D.
-          out.force = r.force;
-          if (consistent) out.tangent = r.tangent;
-        } else {
-          for (int i = 0; i < 6; ++i) {
-            if (!has_component(coupled_space_, i + 1)) continue;
-            out.force[i] = r.force[i];
-            if (!consistent) continue;
-            for (int j = 0; j < 6; ++j) {
-              if (has_component(coupled_space_, j + 1)) out.tangent(i, j) = r.tangent(i, j);
-            }
+        for (int i = 0; i < 6; ++i) {
+          if (!has_component(coupled_space_, i + 1)) continue;
+          out.force[i] = r.force[i];
+          if (!consistent) continue;
+          for (int j = 0; j < 6; ++j) {
+            if (has_component(coupled_space_, j + 1)) out.tangent(i, j) = r.tangent(i, j);
           }
         }
       }

@@ -40,14 +40,21 @@ void for_each_bit(unsigned mask, F&& f) {
 
 }  // namespace
 
-// What a return needs of the trial force: the group resultants r_g and, per contribution,
-// its groups with r_g > 0, their Σ r_g and Σ κ_g, and the smallest y_i at which one clips.
+// Some groups of one contribution that stay positive: their bits, Σ r_g, Σ κ_g, and the
+// smallest y_i at which one of them clips.
+struct GroupedReturn::GroupSet {
+  unsigned mask = 0;
+  double sum = 0, kappa = 0;
+  double first_clip = std::numeric_limits<double>::infinity();
+};
+
+// What a return needs of the trial force: the group resultants r_g and, per contribution, its
+// groups with r_g > 0.
 struct GroupedReturn::Trial {
   std::array<double, kMaxGroups> resultant;  // r_g
   std::array<double, kMaxGroups> inverse;    // 1/r_g (0 for r_g = 0)
   std::array<double, kMaxGroups> reach;      // r_g/κ_g: the y_i at which group g clips
-  std::array<unsigned, kMaxGroups> positive;
-  std::array<double, kMaxGroups> sum, kappa, first_clip;
+  std::array<GroupSet, kMaxGroups> positive;
 };
 
 // One contribution at a given Δλ: its share z = E_i/(R_i F_y), z^(β−1), the derivatives of its
@@ -167,21 +174,26 @@ GroupedReturn::Trial GroupedReturn::resolve(const Vector6& trial) const {
     t.inverse[static_cast<std::size_t>(g)] = rg > 0 ? 1 / rg : 0.0;
     t.reach[static_cast<std::size_t>(g)] = rg * gr.inverse_kappa;
   }
+  // r_g > 0 ⇔ r_g/κ_g > 0 (κ_g > 0).
   for (int i = 0; i < contribution_count_; ++i) {
     const auto ii = static_cast<std::size_t>(i);
-    t.positive[ii] = 0;
-    t.sum[ii] = t.kappa[ii] = 0;
-    t.first_clip[ii] = std::numeric_limits<double>::infinity();
-    for_each_bit(contributions_[ii].groups, [&](int g) {
-      const auto gg = static_cast<std::size_t>(g);
-      if (!(t.resultant[gg] > 0)) return;
-      t.positive[ii] |= 1u << g;
-      t.sum[ii] += t.resultant[gg];
-      t.kappa[ii] += groups_[gg].kappa;
-      t.first_clip[ii] = std::min(t.first_clip[ii], t.reach[gg]);
-    });
+    t.positive[ii] = reaching_beyond(contributions_[ii].groups, t, 0.0);
   }
   return t;
+}
+
+GroupedReturn::GroupSet GroupedReturn::reaching_beyond(unsigned candidates, const Trial& t,
+                                                       double y) const {
+  GroupSet set;
+  for_each_bit(candidates, [&](int g) {
+    const auto gg = static_cast<std::size_t>(g);
+    if (!(t.reach[gg] > y)) return;  // clipped at y
+    set.mask |= 1u << g;
+    set.sum += t.resultant[gg];
+    set.kappa += groups_[gg].kappa;
+    set.first_clip = std::min(set.first_clip, t.reach[gg]);
+  });
+  return set;
 }
 
 [[gnu::always_inline]] inline GroupedReturn::Share GroupedReturn::solve_share(
@@ -190,12 +202,11 @@ GroupedReturn::Trial GroupedReturn::resolve(const Vector6& trial) const {
   const Contribution& c = contributions_[ii];
   Share s;
   const double rf = c.scale * y.value;  // R_i F_y
-  unsigned mask = t.positive[ii];
-  double sum = t.sum[ii], kappa = t.kappa[ii], first_clip = t.first_clip[ii];
   // Start with every positive group and drop those the solution clips. Taking a clipped group
   // as positive underestimates E_i(y), hence z and y, so a group found clipped at that z is
   // clipped at the true one too: the loop ends on the exact set, dropping at least one a pass.
-  while (mask) {
+  for (GroupSet set = t.positive[ii]; set.mask; set = reaching_beyond(set.mask, t, s.y)) {
+    const double sum = set.sum, kappa = set.kappa;
     const double bk = multiplier * kappa * c.inverse_scale;  // Φ_i = rf z + bk z^(β−1) − sum
     // ∂Φ_i/∂z = rf + bk·(z^(β−1))′; each case forms its inverse with as few divisions as it can.
     switch (exponent_) {
@@ -242,8 +253,8 @@ GroupedReturn::Trial GroupedReturn::resolve(const Vector6& trial) const {
       }
     }
     s.y = multiplier * s.zb1 * c.inverse_scale;
-    if (s.y < first_clip) {
-      s.active = mask;
+    if (s.y < set.first_clip) {
+      s.active = set.mask;
       s.b = c.scale * y.slope * s.z + kappa * s.zb1 * c.inverse_scale;
       s.curvature = std::numeric_limits<double>::quiet_NaN();
       if (exponent_ == Exponent::ThreeHalves) {
@@ -258,18 +269,6 @@ GroupedReturn::Trial GroupedReturn::resolve(const Vector6& trial) const {
       }
       return s;
     }
-    const unsigned kept = mask;
-    mask = 0;
-    sum = kappa = 0;
-    first_clip = std::numeric_limits<double>::infinity();
-    for_each_bit(kept, [&](int g) {
-      const auto gg = static_cast<std::size_t>(g);
-      if (t.reach[gg] <= s.y) return;  // clipped
-      mask |= 1u << g;
-      sum += t.resultant[gg];
-      kappa += groups_[gg].kappa;
-      first_clip = std::min(first_clip, t.reach[gg]);
-    });
   }
   return Share{0, 0, 1 / rf, 0, 0, 0, 0, 0};  // nothing positive: E_i = 0
 }
@@ -301,7 +300,8 @@ double GroupedReturn::radial_guess(const Trial& t, const Iterate& at_zero,
   double a = 0;
   for (int i = 0; i < contribution_count_; ++i) {
     const auto ii = static_cast<std::size_t>(i);
-    if (t.kappa[ii] > 0) a += t.sum[ii] * t.sum[ii] / (p_trial * t.kappa[ii]);  // ζ_i s_i R_i/K_i
+    const GroupSet& g = t.positive[ii];
+    if (g.kappa > 0) a += g.sum * g.sum / (p_trial * g.kappa);  // ζ_i s_i R_i/K_i
   }
   return a * (p_trial - y.value) / (p_trial + a * y.slope);
 }

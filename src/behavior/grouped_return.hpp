@@ -55,6 +55,7 @@ class GroupedReturn {
   };
   // How z^(β−1) is formed from the share equation (§5 exponents get closed forms).
   enum class Exponent : std::uint8_t { One, ThreeHalves, Two, General };
+  struct GroupSet;
   struct Trial;
   struct Share;
   struct Iterate;
@@ -63,6 +64,8 @@ class GroupedReturn {
   };
 
   Trial resolve(const Vector6& trial) const;
+  // The groups among `candidates` that a y_i of `y` leaves positive (r_g/κ_g > y).
+  GroupSet reaching_beyond(unsigned candidates, const Trial& t, double y) const;
   Share solve_share(int contribution, const Trial& t, double multiplier,
                     const YieldSample& y) const;
   void evaluate(const Trial& t, double multiplier, const YieldSample& y, Iterate& it) const;

@@ -100,39 +100,49 @@ double optimality_violation(const Parts& p, const Vector6& trial, const CoupledR
   return worst;
 }
 
+// A trial force on a random ray, scaled to 1.05–20 × its first-yield force. With
+// `cut_component`, one component of the ray is cut to 1e-3 so that the return ends on a kink.
+Vector6 random_trial(const Parts& p, std::mt19937& rng, bool cut_component) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  Vector6 u;
+  for (int i = 0; i < 6; ++i) u[i] = 2 * unit(rng) - 1;
+  if (cut_component) u[static_cast<int>(6 * unit(rng))] *= 1e-3;
+  Vector6 trial = p.space.stiffness * u;
+  trial *= (1.05 + 19 * unit(rng)) * 40000.0 / p.potential->value(trial);
+  return trial;
+}
+
+// Where both returns meet the optimality conditions the closest point is unique, so they agree:
+// forces to 1e-9 of the trial force, Δλ to 1e-9, tangents to 1e-6 of their largest entry (both
+// formed by the closed form of §6.4 at states equal to that accuracy).
+void expect_same_return(const CoupledReturn& a, const CoupledReturn& b, const Vector6& trial) {
+  EXPECT_LE((a.force - b.force).norm(), 1e-9 * trial.norm()) << trial.transpose();
+  EXPECT_NEAR(a.multiplier, b.multiplier, 1e-9 * b.multiplier) << trial.transpose();
+  EXPECT_LE((a.tangent - b.tangent).cwiseAbs().maxCoeff(), 1e-6 * b.tangent.cwiseAbs().maxCoeff())
+      << trial.transpose();
+}
+
 TEST(GroupedReturn, SatisfiesTheOptimalityConditionsAndAgreesWithTheGeneralReturn) {
   // k·C² is uniform in each NORM group: (f1, f2) share k_t, (m1, m2) share k_r.
   Parts p = parts(spot_weld_body(uncoupled_elasticity({1e5, 1e5, 2e5, 1e6, 1e6, 5e5})));
   const std::optional<GroupedReturn> grouped = GroupedReturn::create(*p.potential, p.space);
   ASSERT_TRUE(grouped);
   std::mt19937 rng(5);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
   int solved = 0, clipped = 0, compared = 0;
   for (int trial_index = 0; trial_index < 2000; ++trial_index) {
-    Vector6 u;
-    for (int i = 0; i < 6; ++i) u[i] = 2 * unit(rng) - 1;
-    // Some rays with a component near zero, so that returns end on kinks.
-    if (trial_index % 3 == 0) u[static_cast<int>(6 * unit(rng))] *= 1e-3;
-    Vector6 trial = p.space.stiffness * u;
-    trial *= (1.05 + 19 * unit(rng)) * 40000.0 / p.potential->value(trial);
+    const Vector6 trial = random_trial(p, rng, trial_index % 3 == 0);
     const CoupledReturn a = grouped->solve(*p.yield, trial, 0.0, true);
     ASSERT_TRUE(a.plastic);
     if (!a.converged) continue;  // the behaviour then uses the general return
     ++solved;
-    // The scalar Newton stops at 1e-13 relative; 1e-9 leaves room for the round-off of forming
+    // The return stops at |P/F_y − 1| ≤ 1e-12; 1e-9 leaves room for the round-off of forming
     // the conditions from the forces.
     EXPECT_LE(optimality_violation(p, trial, a), 1e-9) << trial.transpose();
     for (int i = 0; i < 6; ++i) clipped += a.force[i] == 0.0 && trial[i] != 0.0;
-    // The closest point is unique: where the general return also meets the conditions, both
-    // agree (forces to 1e-9 of the trial force, Δλ to 1e-9, tangents to 1e-6 of their largest
-    // entry, both formed by the closed form of §6.4 at states equal to that accuracy).
     const CoupledReturn b = closest_point_return(p.space, *p.potential, *p.yield, trial, 0.0, true);
     if (!b.converged || optimality_violation(p, trial, b) > 1e-9) continue;
     ++compared;
-    EXPECT_LE((a.force - b.force).norm(), 1e-9 * trial.norm()) << trial.transpose();
-    EXPECT_NEAR(a.multiplier, b.multiplier, 1e-9 * b.multiplier) << trial.transpose();
-    EXPECT_LE((a.tangent - b.tangent).cwiseAbs().maxCoeff(), 1e-6 * b.tangent.cwiseAbs().maxCoeff())
-        << trial.transpose();
+    expect_same_return(a, b, trial);
   }
   EXPECT_GE(solved, 1980);    // at most 1% left to the general return
   EXPECT_GE(compared, 1500);  // the general return meets the conditions on most of them
@@ -152,14 +162,9 @@ TEST(GroupedReturn, EveryExponentAgreesWithTheGeneralReturnAndFiniteDifferences)
     const std::optional<GroupedReturn> grouped = GroupedReturn::create(*p.potential, p.space);
     ASSERT_TRUE(grouped);
     std::mt19937 rng(11);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
     int solved = 0, compared = 0;
     for (int trial_index = 0; trial_index < 300; ++trial_index) {
-      Vector6 u;
-      for (int i = 0; i < 6; ++i) u[i] = 2 * unit(rng) - 1;
-      if (trial_index % 3 == 0) u[static_cast<int>(6 * unit(rng))] *= 1e-3;
-      Vector6 trial = p.space.stiffness * u;
-      trial *= (1.05 + 19 * unit(rng)) * 40000.0 / p.potential->value(trial);
+      const Vector6 trial = random_trial(p, rng, trial_index % 3 == 0);
       const CoupledReturn a = grouped->solve(*p.yield, trial, 0.0, true);
       ASSERT_TRUE(a.plastic);
       if (!a.converged) continue;
@@ -169,12 +174,7 @@ TEST(GroupedReturn, EveryExponentAgreesWithTheGeneralReturnAndFiniteDifferences)
           closest_point_return(p.space, *p.potential, *p.yield, trial, 0.0, true);
       if (!b.converged || optimality_violation(p, trial, b) > 1e-9) continue;
       ++compared;
-      // Tolerances as in the test above.
-      EXPECT_LE((a.force - b.force).norm(), 1e-9 * trial.norm()) << trial.transpose();
-      EXPECT_NEAR(a.multiplier, b.multiplier, 1e-9 * b.multiplier) << trial.transpose();
-      EXPECT_LE((a.tangent - b.tangent).cwiseAbs().maxCoeff(),
-                1e-6 * b.tangent.cwiseAbs().maxCoeff())
-          << trial.transpose();
+      expect_same_return(a, b, trial);
     }
     EXPECT_GE(solved, 297);
     EXPECT_GE(compared, 200);
@@ -209,10 +209,7 @@ TEST(GroupedReturn, SofteningEndsOnTheClosestPoint) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   int plastic = 0, solved = 0, compared = 0;
   for (int trial_index = 0; trial_index < 500; ++trial_index) {
-    Vector6 u;
-    for (int i = 0; i < 6; ++i) u[i] = 2 * unit(rng) - 1;
-    Vector6 trial = p.space.stiffness * u;
-    trial *= (1.05 + 19 * unit(rng)) * 40000.0 / p.potential->value(trial);
+    const Vector6 trial = random_trial(p, rng, false);
     const double ubar = 0.4 * unit(rng);
     const CoupledReturn a = grouped->solve(*p.yield, trial, ubar, true);
     if (!a.plastic) continue;
@@ -224,11 +221,7 @@ TEST(GroupedReturn, SofteningEndsOnTheClosestPoint) {
         closest_point_return(p.space, *p.potential, *p.yield, trial, ubar, true);
     if (!b.converged || optimality_violation(p, trial, b, ubar) > 1e-9) continue;
     ++compared;
-    // Tolerances as in the first test.
-    EXPECT_LE((a.force - b.force).norm(), 1e-9 * trial.norm()) << trial.transpose();
-    EXPECT_NEAR(a.multiplier, b.multiplier, 1e-9 * b.multiplier) << trial.transpose();
-    EXPECT_LE((a.tangent - b.tangent).cwiseAbs().maxCoeff(), 1e-6 * b.tangent.cwiseAbs().maxCoeff())
-        << trial.transpose();
+    expect_same_return(a, b, trial);
   }
   EXPECT_GE(solved, plastic * 99 / 100);
   EXPECT_GE(compared, 300);

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 
 #include "parser/source_manager.hpp"
@@ -29,13 +30,20 @@ class TemporaryDeck {
   std::string path_;
 };
 
+// Loads the deck and releases its text, as read_deck_file does once parsing is over.
+std::optional<std::uint32_t> load_and_release(const TemporaryDeck& deck, SourceManager& sources) {
+  std::string error;
+  const std::optional<std::uint32_t> index = sources.load(deck.path(), {}, &error);
+  EXPECT_TRUE(index) << error;
+  sources.release_texts();
+  return index;
+}
+
 TEST(SourceManager, ReleasedFileIsReadBackForItsLines) {
   const TemporaryDeck deck("*NODE\n1, 0., 0., 0.\r\n2, 1., 0., 0.\n");
   SourceManager sources;
-  std::string error;
-  const auto index = sources.load(deck.path(), {}, &error);
-  ASSERT_TRUE(index) << error;
-  sources.release_texts();
+  const std::optional<std::uint32_t> index = load_and_release(deck, sources);
+  ASSERT_TRUE(index);
   EXPECT_TRUE(sources.file(*index).text.empty());                 // the memory is gone
   EXPECT_EQ(sources.line_text({*index, 2, 1}), "1, 0., 0., 0.");  // without the CR
   EXPECT_EQ(sources.line_text({*index, 3, 1}), "2, 1., 0., 0.");
@@ -45,10 +53,8 @@ TEST(SourceManager, ReleasedFileIsReadBackForItsLines) {
 TEST(SourceManager, FileThatChangedSizeShowsNoLine) {
   const TemporaryDeck deck("*NODE\n1, 0., 0., 0.\n");
   SourceManager sources;
-  std::string error;
-  const auto index = sources.load(deck.path(), {}, &error);
-  ASSERT_TRUE(index) << error;
-  sources.release_texts();
+  const std::optional<std::uint32_t> index = load_and_release(deck, sources);
+  ASSERT_TRUE(index);
   deck.write("*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n");  // edited while the run went on
   EXPECT_EQ(sources.line_text({*index, 2, 1}), "");
   EXPECT_EQ(sources.text(*index), "");
