@@ -13,6 +13,7 @@
 #include "parser/diagnostic.hpp"
 #include "parser/keyword_spec.hpp"
 #include "parser/lexer.hpp"
+#include "parser/source_manager.hpp"
 #include "src/model/model.hpp"
 #include "src/model/references.hpp"
 
@@ -52,13 +53,9 @@ class BlockContext {
   // Number of data lines seen so far in this block (the current line included).
   std::uint32_t line_index() const { return line_index_; }
   void set_line_index(std::uint32_t index) { line_index_ = index; }
-  // In begin() only: at most this many data lines follow in the keyword's own file (0 when
-  // unknown), for reserving storage. Counted on request, so that blocks that do not ask cost
-  // nothing.
-  std::size_t expected_lines() const {
-    return keyword_file_ ? keyword_file_->lines_before_next_keyword() : 0;
-  }
-  void set_keyword_file(const LineScanner* scanner) { keyword_file_ = scanner; }
+  // At most this many data lines follow the keyword line in its own file (0 when unknown), for
+  // reserving storage.
+  std::size_t expected_lines() const { return sources_.lines_after_keyword(keyword_.loc); }
 
   Diagnostic& report(DiagCode code, SourceLoc loc, std::string message);
   // Reports at a field; adds the note naming the parameter a substituted value came from.
@@ -100,7 +97,6 @@ class BlockContext {
   DiagnosticSink& sink_;
   const SourceManager& sources_;
   std::uint32_t line_index_ = 0;
-  const LineScanner* keyword_file_ = nullptr;  // during begin()
 };
 
 // Parses a real with the rules of input-syntax.md §3.2 (Fortran D exponents, no inf/nan/hex).

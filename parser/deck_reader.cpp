@@ -1,5 +1,7 @@
 #include "parser/deck_reader.hpp"
 
+#include <algorithm>
+#include <deque>
 #include <filesystem>
 #include <memory>
 #include <unordered_set>
@@ -10,6 +12,7 @@
 #include "parser/expression.hpp"
 #include "parser/keyword_handler.hpp"
 #include "parser/keyword_registry.hpp"
+#include "parser/file_scan.hpp"
 #include "parser/lexer.hpp"
 #include "parser/parameters.hpp"
 #include "parser/suggest.hpp"
@@ -20,15 +23,16 @@ namespace {
 
 constexpr std::size_t kMaxIncludeDepth = 32;
 
-// Physical lines of the deck with *INCLUDE splicing: a stack of files being read.
+// Physical lines of the deck with *INCLUDE splicing: a stack of files being read. The stream
+// that first reads a file records where its keyword lines are (SourceManager::begin_layout).
 class LineStream {
  public:
   LineStream(SourceManager& sources, DiagnosticSink& sink, bool checks = true)
       : sources_(sources), sink_(sink), checks_(checks) {}
 
   void push(std::uint32_t file) {
-    frames_.push_back(std::make_unique<Frame>(
-        Frame{file, LineScanner(sources_.file(file).text, file, sink_, checks_)}));
+    frames_.push_back(std::make_unique<Frame>(Frame{
+        file, scan_file(sources_, file, sink_, checks_), sources_.begin_layout(file)}));
   }
   bool empty() const { return frames_.empty(); }
   std::size_t depth() const { return frames_.size(); }
@@ -37,7 +41,7 @@ class LineStream {
   // Next line of the innermost open file; pops finished files. End only when all are done.
   LineScanner::Kind next() {
     while (!frames_.empty()) {
-      LineScanner::Kind kind = frames_.back()->scanner.next();
+      LineScanner::Kind kind = advance(*frames_.back());
       if (kind != LineScanner::Kind::End) return kind;
       frames_.pop_back();
     }
@@ -46,7 +50,7 @@ class LineStream {
   // Next line of the current file only (continuations must end in the same file, §5.1).
   LineScanner::Kind next_in_file() {
     if (frames_.empty()) return LineScanner::Kind::End;
-    return frames_.back()->scanner.next();
+    return advance(*frames_.back());
   }
   const LineScanner& scanner() const { return frames_.back()->scanner; }
 
@@ -54,7 +58,21 @@ class LineStream {
   struct Frame {
     std::uint32_t file;
     LineScanner scanner;
+    bool records_layout;
+    bool finished = false;
   };
+  LineScanner::Kind advance(Frame& frame) {
+    const LineScanner::Kind kind = frame.scanner.next();
+    if (kind == LineScanner::Kind::Keyword && frame.records_layout) {
+      sources_.record_keyword_line(frame.file, frame.scanner.line_number());
+    }
+    if (kind == LineScanner::Kind::End && !frame.finished) {
+      frame.finished = true;
+      if (frame.records_layout) sources_.end_layout(frame.file, frame.scanner.line_number());
+      check_read_whole(sources_, frame.scanner, frame.file, sink_);
+    }
+    return kind;
+  }
   SourceManager& sources_;
   DiagnosticSink& sink_;
   bool checks_;
@@ -135,12 +153,13 @@ class Reader {
             std::string path = resolve_path(sources_, stream.scanner().loc().file, p.value.text);
             auto idx = prepass_load(path, p.value.loc);
             if (!idx) continue;
-            LineScanner scanner(sources_.file(*idx).text, *idx, quiet);
+            LineScanner scanner = scan_file(sources_, *idx, quiet);
             for (auto k = scanner.next(); k != LineScanner::Kind::End; k = scanner.next()) {
               if (k == LineScanner::Kind::Data) {
                 parameters_.add_line({std::string(scanner.text()), scanner.loc()});
               }
             }
+            check_read_whole(sources_, scanner, *idx, sink_);
           }
         }
         continue;
@@ -199,8 +218,12 @@ class Reader {
       while (e > 0 && (t[e - 1] == ' ' || t[e - 1] == '\t')) --e;
       return e > 0 && t[e - 1] == ',';
     };
-    std::vector<std::string> held;  // continuation texts are views into files: stable
+    // A line's text lasts only until the scanner moves on: a continued keyword line keeps copies.
+    std::deque<std::string> held;
     while (ends_with_comma(segments.back().text)) {
+      if (held.size() < segments.size()) {
+        segments.back().text = held.emplace_back(segments.back().text);
+      }
       SourceLoc last = segments.back().loc.shifted(
           static_cast<std::uint32_t>(segments.back().text.size()));
       LineScanner::Kind k;
@@ -238,7 +261,7 @@ class Reader {
       return;
     }
     close_block();
-    open_block(std::move(line), stream ? &stream->scanner() : nullptr);
+    open_block(std::move(line));
   }
 
   void include(const KeywordLine& line, LineStream& stream) {
@@ -533,7 +556,7 @@ class Reader {
     }
   }
 
-  void open_block(KeywordLine line, const LineScanner* keyword_file) {
+  void open_block(KeywordLine line) {
     block_line_ = std::move(line);
     const KeywordLine& kl = block_line_;
     skip_block_ = true;
@@ -575,10 +598,8 @@ class Reader {
     data_line_reported_ = false;
     block_ctx_ = std::make_unique<BlockContext>(block_line_, *spec, block_params_, model_,
                                                 position_, sink_, sources_);
-    block_ctx_->set_keyword_file(keyword_file);
     handler_ = spec->make_handler ? spec->make_handler() : nullptr;
     if (handler_) handler_->begin(*block_ctx_);
-    block_ctx_->set_keyword_file(nullptr);
     read_input_file();
   }
 
@@ -623,7 +644,7 @@ class Reader {
       input_used_ = true;
       return;
     }
-    LineScanner scanner(sources_.file(*idx).text, *idx, sink_);
+    LineScanner scanner = scan_file(sources_, *idx, sink_);
     for (auto k = scanner.next(); k != LineScanner::Kind::End; k = scanner.next()) {
       if (k == LineScanner::Kind::Comment) continue;
       if (k == LineScanner::Kind::Keyword) {
@@ -633,6 +654,7 @@ class Reader {
       }
       deliver_data(scanner.text(), scanner.loc(), k == LineScanner::Kind::Blank);
     }
+    check_read_whole(sources_, scanner, *idx, sink_);
     input_used_ = true;
   }
 

@@ -268,24 +268,35 @@ LineScanner::LineScanner(std::string_view text, std::uint32_t file_index, Diagno
                          bool checks)
     : text_(text), file_(file_index), checks_(checks), sink_(sink) {}
 
-std::size_t LineScanner::lines_before_next_keyword() const {
-  std::size_t lines = 0;
-  for (std::size_t at = offset_; at < text_.size(); ++lines) {
-    const bool keyword = text_[at] == '*' && (at + 1 == text_.size() || text_[at + 1] != '*');
-    if (keyword) break;
-    const void* nl = std::memchr(text_.data() + at, '\n', text_.size() - at);
-    if (!nl) return lines + 1;
-    at = static_cast<std::size_t>(static_cast<const char*>(nl) - text_.data()) + 1;
+LineScanner::LineScanner(std::unique_ptr<FileWindow> window, std::uint32_t file_index,
+                         DiagnosticSink& sink, bool checks)
+    : window_(std::move(window)), file_(file_index), checks_(checks), sink_(sink) {}
+
+bool LineScanner::find_line_end(std::size_t& end) {
+  std::size_t searched = offset_;
+  while (true) {
+    if (searched < text_.size()) {
+      const void* nl = std::memchr(text_.data() + searched, '\n', text_.size() - searched);
+      if (nl) {
+        end = static_cast<std::size_t>(static_cast<const char*>(nl) - text_.data());
+        return true;
+      }
+    }
+    if (!window_) break;
+    const std::size_t pending = offset_ < text_.size() ? text_.size() - offset_ : 0;
+    if (!window_->refill(offset_)) break;
+    text_ = window_->contents();
+    offset_ = 0;
+    searched = pending;  // the kept start of the line has no line end
   }
-  return lines;
+  if (offset_ >= text_.size()) return false;
+  end = text_.size();
+  return true;
 }
 
 LineScanner::Kind LineScanner::next() {
-  if (offset_ >= text_.size()) return Kind::End;
-  const char* base = text_.data() + offset_;
-  const void* nl = std::memchr(base, '\n', text_.size() - offset_);
-  std::size_t end = nl ? static_cast<std::size_t>(static_cast<const char*>(nl) - text_.data())
-                       : text_.size();
+  std::size_t end;
+  if (!find_line_end(end)) return Kind::End;
   std::size_t line_end = end;
   if (line_end > offset_ && text_[line_end - 1] == '\r') --line_end;
   line_ = text_.substr(offset_, line_end - offset_);

@@ -5,11 +5,13 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "parser/diagnostic.hpp"
+#include "parser/file_window.hpp"
 
 namespace clinch {
 
@@ -68,8 +70,9 @@ bool parse_keyword_line(const std::vector<KeywordSegment>& segments, KeywordLine
 // Folds a keyword or parameter name: blanks removed, upper case.
 std::string fold_name(std::string_view text);
 
-// Iterates the physical lines of one file buffer: classification of §1.1, line-level checks
-// (control characters E0107, long lines W0101 once per file).
+// Iterates the physical lines of one file: classification of §1.1, line-level checks (control
+// characters E0107, long lines W0101 once per file). The file is either text in memory or read
+// through a FileWindow; text() is valid until the next call of next().
 class LineScanner {
  public:
   enum class Kind { Comment, Keyword, Blank, Data, End };
@@ -77,21 +80,33 @@ class LineScanner {
   // *PARAMETER and *INCLUDE lines and reports nothing).
   LineScanner(std::string_view text, std::uint32_t file_index, DiagnosticSink& sink,
               bool checks = true);
+  LineScanner(std::unique_ptr<FileWindow> window, std::uint32_t file_index, DiagnosticSink& sink,
+              bool checks = true);
   // Advances to the next line; returns its kind. text()/loc() describe the current line.
   Kind next();
   std::string_view text() const { return line_; }
   SourceLoc loc() const { return {file_, line_number_, 1}; }
+  std::uint32_t line_number() const { return line_number_; }
   // Column (1-based) of the first non-blank character of the current line.
   std::uint32_t first_non_blank_column() const { return first_non_blank_ + 1; }
   // The current line had a line-level error (E0107): callers skip it.
   bool line_rejected() const { return rejected_; }
-  // Lines after the current one up to the next keyword line or the end of the file (comment
-  // lines included): a bound on the data lines of the block that starts here, so that a handler
-  // can size its storage once (a 10⁶-node block would otherwise grow its array 20 times).
-  std::size_t lines_before_next_keyword() const;
+  // Bytes of the file seen so far, and whether reading it failed: at End, a file read from disk
+  // is complete only if it still has the size it had when it was opened.
+  std::uint64_t bytes_read() const { return window_ ? window_->bytes_read() : text_.size(); }
+  bool read_failed() const { return window_ && window_->read_failed(); }
+  // Why the file could not be opened ("" when it was, or is in memory).
+  std::string_view open_error() const {
+    return window_ && !window_->ok() ? std::string_view(window_->error()) : std::string_view();
+  }
 
  private:
+  // Offset of the '\n' that ends the line starting at offset_ (text_.size() for a last line
+  // without one), refilling the window as needed; false at the end of the file.
+  bool find_line_end(std::size_t& end);
+
   std::string_view text_;
+  std::unique_ptr<FileWindow> window_;
   std::size_t offset_ = 0;
   std::uint32_t file_;
   std::uint32_t line_number_ = 0;

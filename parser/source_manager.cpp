@@ -12,24 +12,28 @@ namespace clinch {
 
 namespace {
 
-// Reads a regular file whole. False with *error set to the system's reason on failure.
-bool read_file(const std::string& path, std::unique_ptr<char[]>& bytes, std::size_t& size,
-               std::string* error) {
+// Opens a regular file for reading. Null with *error set to the system's reason on failure.
+std::FILE* open_regular_file(const std::string& path, std::string* error) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) {
     if (error) *error = "Is a directory";
-    return false;
+    return nullptr;
   }
   // Devices and pipes (/dev/zero, a FIFO) could block or never end: decks are regular files.
   if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec)) {
     if (error) *error = "not a regular file";
-    return false;
+    return nullptr;
   }
   std::FILE* handle = std::fopen(path.c_str(), "rb");
-  if (!handle) {
-    if (error) *error = std::strerror(errno);
-    return false;
-  }
+  if (!handle && error) *error = std::strerror(errno);
+  return handle;
+}
+
+// Reads a regular file whole. False with *error set to the system's reason on failure.
+bool read_file(const std::string& path, std::unique_ptr<char[]>& bytes, std::size_t& size,
+               std::string* error) {
+  std::FILE* handle = open_regular_file(path, error);
+  if (!handle) return false;
   // Read straight into the buffer when the size is known (a regular file): one allocation, one
   // copy. Anything left after that (a file that grew) is appended in chunks.
   std::error_code size_error;
@@ -62,11 +66,14 @@ bool read_file(const std::string& path, std::unique_ptr<char[]>& bytes, std::siz
 
 std::optional<std::uint32_t> SourceManager::load(const std::string& path, SourceLoc included_from,
                                                  std::string* error) {
-  std::unique_ptr<char[]> bytes;
-  std::size_t size = 0;
-  if (!read_file(path, bytes, size, error)) return std::nullopt;
-  const std::uint32_t index = add(path, path, std::move(bytes), size, included_from);
+  std::FILE* handle = open_regular_file(path, error);
+  if (!handle) return std::nullopt;
+  std::fclose(handle);
+  std::error_code size_error;
+  const auto size = std::filesystem::file_size(path, size_error);
+  const std::uint32_t index = add(path, path, nullptr, size_error ? 0 : size, included_from);
   files_[index].on_disk = true;
+  files_[index].released = true;
   return index;
 }
 
@@ -75,8 +82,35 @@ void SourceManager::release_texts() {
     if (!file.on_disk || file.released) continue;
     file.bytes.reset();
     file.text = {};
+    file.line_starts = {};
     file.released = true;
   }
+}
+
+bool SourceManager::begin_layout(std::uint32_t index) {
+  SourceFile& file = files_[index];
+  if (file.layout_started) return false;
+  file.layout_started = true;
+  return true;
+}
+
+void SourceManager::record_keyword_line(std::uint32_t index, std::uint32_t line) {
+  files_[index].keyword_lines.push_back(line);
+}
+
+void SourceManager::end_layout(std::uint32_t index, std::uint32_t line_count) {
+  files_[index].line_count = line_count;
+  files_[index].layout_known = true;
+}
+
+std::size_t SourceManager::lines_after_keyword(SourceLoc keyword) const {
+  if (!keyword.valid() || keyword.file >= files_.size()) return 0;
+  const SourceFile& file = files_[keyword.file];
+  if (!file.layout_known || keyword.line > file.line_count) return 0;
+  const auto next = std::upper_bound(file.keyword_lines.begin(), file.keyword_lines.end(),
+                                     keyword.line);
+  const std::uint32_t stop = next == file.keyword_lines.end() ? file.line_count + 1 : *next;
+  return stop - keyword.line - 1;
 }
 
 void SourceManager::restore(SourceFile& file) const {
@@ -108,7 +142,7 @@ std::uint32_t SourceManager::add(std::string path, std::string display_name,
   SourceFile file;
   file.path = std::move(path);
   file.display_name = std::move(display_name);
-  file.text = std::string_view(bytes.get(), size);
+  if (bytes) file.text = std::string_view(bytes.get(), size);
   file.bytes = std::move(bytes);
   file.size = size;
   file.included_from = included_from;

@@ -17,23 +17,31 @@ namespace clinch {
 struct SourceFile {
   std::string path;          // as opened (resolved against the including file's directory)
   std::string display_name;  // as shown in diagnostics
-  std::string_view text;     // whole contents, in `bytes`
+  // Whole contents, in `bytes`: always for in-memory buffers; for a file on disk only once a
+  // diagnostic has asked for one of its lines (the reader streams it, lexer.hpp LineScanner).
+  std::string_view text;
   // Owns the contents. Not a std::string: its resize() would zero the buffer before the read
   // overwrites it, a pass over fresh memory that costs as much as the read itself (docs/
   // performance.md).
   std::unique_ptr<char[]> bytes;
   std::vector<std::uint32_t> line_starts;  // byte offset of each line (filled lazily)
   SourceLoc included_from;  // the *INCLUDE or INPUT= value that opened it; invalid for the deck
-  // Read from disk (not an in-memory buffer), so its contents can be released after parsing and
-  // read again when a diagnostic shows one of its lines.
+  // On disk (not an in-memory buffer): its contents are not held, and are read when a
+  // diagnostic shows one of its lines.
   bool on_disk = false;
-  bool released = false;
-  std::size_t size = 0;  // of the contents that were parsed
+  bool released = false;  // on disk and contents not in memory
+  std::size_t size = 0;   // when it was opened: a file of another size is not the one parsed
+  // Where its keyword lines are, learnt by the reader's first pass, so that a block can size its
+  // storage before its data lines are read (lines_after_keyword).
+  std::vector<std::uint32_t> keyword_lines;
+  std::uint32_t line_count = 0;
+  bool layout_started = false, layout_known = false;
 };
 
 class SourceManager {
  public:
-  // Reads a file. On failure returns nullopt and sets *error to the system's reason.
+  // Registers a file on disk after checking that it is a regular file that can be opened; its
+  // contents are not read. On failure returns nullopt and sets *error to the system's reason.
   std::optional<std::uint32_t> load(const std::string& path, SourceLoc included_from,
                                     std::string* error);
   // Adds in-memory text (tests, fuzzers).
@@ -44,11 +52,17 @@ class SourceManager {
   // The whole contents of one file, read again from disk if they were released ("" when the
   // file can no longer be read or its size changed since it was parsed).
   std::string_view text(std::uint32_t index) const;
-  // Frees the contents of every file read from disk. Parsing is over once the model is built;
-  // only diagnostics look at the text again, and they read it back on demand (text, line_text).
-  // A deck as large as the memory it becomes is then no longer held through validation and the
-  // analysis.
+  // Frees the contents of every file on disk that a diagnostic read back (text, line_text).
   void release_texts();
+  // The layout of a file's lines, recorded once by the reader's first pass: begin_layout is true
+  // for the scan that records it (the first), which then calls record_keyword_line for each
+  // keyword line and end_layout with the number of lines.
+  bool begin_layout(std::uint32_t index);
+  void record_keyword_line(std::uint32_t index, std::uint32_t line);
+  void end_layout(std::uint32_t index, std::uint32_t line_count);
+  // Lines after the keyword line at `keyword` up to the next keyword line or the end of its file
+  // (comment lines included): a bound on the data lines of its block; 0 when not recorded.
+  std::size_t lines_after_keyword(SourceLoc keyword) const;
   std::uint32_t file_count() const { return static_cast<std::uint32_t>(files_.size()); }
   // The text of one physical line without its line end ("" when out of range).
   std::string_view line_text(SourceLoc loc) const;

@@ -31,20 +31,6 @@ TEST(Lexer, LineKinds) {
   EXPECT_FALSE(sink.has_errors());
 }
 
-// The bound a block's handler reserves by: every line up to the next keyword line, comments
-// included (an over-count is harmless), and the last line of a file without a line end.
-TEST(Lexer, LinesBeforeTheNextKeywordBoundABlock) {
-  DiagnosticSink sink;
-  LineScanner scanner("*NODE\n1, 0.\n** comment\n2, 1.\n*ELEMENT, TYPE=CONN3D2\n1, 1, 2", 0, sink);
-  EXPECT_EQ(scanner.lines_before_next_keyword(), 0u);  // the keyword line comes first
-  ASSERT_EQ(scanner.next(), LineScanner::Kind::Keyword);
-  EXPECT_EQ(scanner.lines_before_next_keyword(), 3u);
-  for (int i = 0; i < 4; ++i) scanner.next();
-  EXPECT_EQ(scanner.lines_before_next_keyword(), 1u);
-  scanner.next();
-  EXPECT_EQ(scanner.lines_before_next_keyword(), 0u);
-}
-
 TEST(Lexer, ControlCharactersAreReportedOncePerLine) {
   DiagnosticSink sink;
   std::string text = std::string("1, \x01\x02, 3\n") + "2\t, 4\n";

@@ -1,0 +1,23 @@
+// Scanning one file of the source table: a file on disk is streamed through a FileWindow (it is
+// never held whole), an in-memory buffer is scanned in place; at its end, a file on disk must
+// have been read whole, as it was when it was opened.
+#pragma once
+
+#include <cstdint>
+
+#include "parser/diagnostic.hpp"
+#include "parser/lexer.hpp"
+#include "parser/source_manager.hpp"
+
+namespace clinch {
+
+LineScanner scan_file(const SourceManager& sources, std::uint32_t index, DiagnosticSink& sink,
+                      bool checks = true);
+
+// Called once the scanner is at End: E0108 if the file could not be read whole as it was when it
+// was opened (removed, truncated or grown in between, or a read error), at the *INCLUDE or
+// INPUT= value that opened it, or at the last line of the deck itself.
+void check_read_whole(const SourceManager& sources, const LineScanner& scanner,
+                      std::uint32_t index, DiagnosticSink& sink);
+
+}  // namespace clinch
