@@ -10,7 +10,7 @@
 #include "src/cli/run_command.hpp"
 
 int main(int argc, char** argv) {
-  clinch::reexec_with_huge_pages(argv);
+  clinch::use_huge_pages(argv);
   CLI::App app{"clinch: implicit analysis of connector elements from Abaqus-style keyword decks"};
   app.set_version_flag("--version", std::string("clinch ") + CLINCH_VERSION);
   app.require_subcommand(1);

@@ -1,9 +1,13 @@
 #include "src/cli/huge_pages.hpp"
 
+#include <malloc.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cstdint>
 #include <cstdlib>
+#include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <string>
@@ -25,34 +29,68 @@ bool transparent_huge_pages_on_request() {
   return text.find("[madvise]") != std::string::npos;
 }
 
-// Re-executing costs a second start-up (about 10 ms); it pays off only when some input is large.
+// Re-executing costs a second start-up (about 5 ms); it pays off only when some input is large.
 constexpr off_t kLargeInput = 4 << 20;
+// Below this the heap grows by less than one huge page, which would only round its size up.
+constexpr off_t kMediumInput = 256 << 10;
+constexpr std::size_t kHugePage = 2 << 20;
 
-bool has_large_input(char** argv) {
+// The size of the largest regular file among the arguments (0 if none).
+off_t largest_input(char** argv) {
+  off_t largest = 0;
   for (char** arg = argv + 1; *arg; ++arg) {
     struct stat info {};
-    if (stat(*arg, &info) == 0 && S_ISREG(info.st_mode) && info.st_size >= kLargeInput) {
-      return true;
-    }
+    if (stat(*arg, &info) == 0 && S_ISREG(info.st_mode)) largest = std::max(largest, info.st_size);
   }
-  return false;
+  return largest;
 }
 
-bool wanted(char** argv) {
+bool allowed() {
   const char* setting = std::getenv("CLINCH_HUGE_PAGES");
   if (setting && std::strcmp(setting, "0") == 0) return false;
   const char* tunables = std::getenv("GLIBC_TUNABLES");
   if (tunables && std::strstr(tunables, "glibc.malloc.hugetlb")) return false;  // set, or done
   const char* preload = std::getenv("LD_PRELOAD");
   if (preload && std::strstr(preload, "vgpreload")) return false;  // valgrind
-  return has_large_input(argv) && transparent_huge_pages_on_request();
+  return transparent_huge_pages_on_request();
+}
+
+// For a medium input, in this process: one brk step of the heap large enough for what the input
+// becomes (a `clinch check` needs about twice the deck, docs/performance.md), advised for huge
+// pages, with arrays up to 32 MB allocated from it rather than mapped on their own, and kept
+// rather than trimmed. The heap below the first 2 MB boundary cannot hold a huge page: a block
+// that is never freed (and never touched beyond its header) moves the allocations up to it. It
+// ends a page short of the boundary, so that malloc's header of the free rest lies below it too:
+// a 4 kB page touched in a 2 MB range before the advice keeps the whole range in 4 kB pages.
+void reserve_huge_page_heap(std::size_t input_size) {
+  static void* below_boundary = nullptr;
+  if (below_boundary) return;
+  const std::size_t reserve = (4 * input_size + 2 * kHugePage) & ~(kHugePage - 1);
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_TRIM_THRESHOLD, static_cast<int>(reserve));
+  mallopt(M_TOP_PAD, static_cast<int>(reserve));
+  // The free top of the heap, where the next large block is cut: from the break down by its size.
+  const auto top = reinterpret_cast<std::uintptr_t>(sbrk(0)) - mallinfo2().keepcost;
+  const auto boundary = (top + 2 * 4096 + kHugePage - 1) & ~(kHugePage - 1);
+  // Extends the heap by the pad (the request is larger than the top chunk after start-up).
+  below_boundary = std::malloc(boundary - top - 4096);
+  mallopt(M_TOP_PAD, 128 << 10);  // later steps as glibc makes them
+  if (!below_boundary) return;
+  const auto end = reinterpret_cast<std::uintptr_t>(sbrk(0)) & ~(kHugePage - 1);
+  if (end > boundary) madvise(reinterpret_cast<void*>(boundary), end - boundary, MADV_HUGEPAGE);
 }
 
 }  // namespace
 
-void reexec_with_huge_pages(char** argv) {
+void use_huge_pages(char** argv) {
 #if defined(__linux__) && defined(__GLIBC__)
-  if (!wanted(argv)) return;
+  if (!allowed()) return;
+  const off_t input = largest_input(argv);
+  if (input < kMediumInput) return;
+  if (input < kLargeInput) {
+    reserve_huge_page_heap(static_cast<std::size_t>(input));
+    return;
+  }
   const char* tunables = std::getenv("GLIBC_TUNABLES");
   std::string value = tunables && *tunables ? std::string(tunables) + ":" + kTunable : kTunable;
   if (!tunables || !std::strstr(tunables, "glibc.malloc.top_pad"))

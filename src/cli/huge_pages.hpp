@@ -3,16 +3,20 @@
 // CHOLMOD's factor. Where the kernel gives huge pages only on request (THP mode "madvise",
 // Debian's default), glibc's malloc requests them when the tunable glibc.malloc.hugetlb=1 is set,
 // which cuts the page faults of such a run by two orders of magnitude. glibc reads its tunables
-// at start-up, so clinch executes itself once more with the tunable added to GLIBC_TUNABLES.
+// at start-up, so clinch executes itself once more with the tunable added to GLIBC_TUNABLES; for a
+// medium deck, where that second start-up would cost more than it saves, clinch reserves a heap in
+// huge pages itself.
 #pragma once
 
 namespace clinch {
 
-// Re-executes the program with glibc.malloc.hugetlb=1 when that helps: Linux with THP in
-// "madvise" mode, an argument that names a file of 4 MiB or more (the deck; a second start-up
-// costs more than a small deck gains), the tunable not already set, CLINCH_HUGE_PAGES not "0",
-// and not under valgrind (whose tools would lose the process). Returns (and the run goes on unchanged) when any
-// of that does not hold or the re-execution fails.
-void reexec_with_huge_pages(char** argv);
+// On Linux with THP in "madvise" mode, the tunable not already set, CLINCH_HUGE_PAGES not "0" and
+// not under valgrind (whose tools would lose the process), by the largest file among the
+// arguments (the deck):
+// - 4 MiB or more: re-executes the program with glibc.malloc.hugetlb=1 (a second start-up costs
+//   more than a smaller deck gains); returns only if that fails;
+// - 256 KiB to 4 MiB: reserves a heap in huge pages in this process (malloc options and madvise);
+// - smaller: nothing (its heap grows by less than one huge page).
+void use_huge_pages(char** argv);
 
 }  // namespace clinch
