@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -100,6 +101,29 @@ TEST(FileScan, WindowedFileScansLikeTheTextInMemory) {
     EXPECT_EQ(file_sink.diagnostics()[i].loc, memory_sink.diagnostics()[i].loc);
     EXPECT_EQ(file_sink.diagnostics()[i].message, memory_sink.diagnostics()[i].message);
   }
+}
+
+// Every deck of the repository (examples, verification cases, bad decks) read through a window of
+// 7 bytes, so that nearly every line straddles a refill: the same lines and line-level
+// diagnostics as the text in memory.
+TEST(FileScan, EveryRepositoryDeckScansLikeItsTextThroughATinyWindow) {
+  int decks = 0;
+  for (const char* folder : {"decks", "tests/diagnostics"}) {
+    for (const auto& entry :
+         std::filesystem::recursive_directory_iterator(std::string(CLINCH_SOURCE_DIR) + "/" + folder)) {
+      if (entry.path().extension() != ".inp") continue;
+      std::ifstream file(entry.path(), std::ios::binary);
+      const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+      DiagnosticSink memory_sink, file_sink;
+      LineScanner in_memory(text, 0, memory_sink);
+      LineScanner windowed(std::make_unique<FileWindow>(entry.path().string(), 7), 0, file_sink);
+      EXPECT_EQ(scan_all(windowed), scan_all(in_memory)) << entry.path();
+      EXPECT_EQ(windowed.bytes_read(), text.size()) << entry.path();
+      EXPECT_EQ(file_sink.diagnostics().size(), memory_sink.diagnostics().size()) << entry.path();
+      ++decks;
+    }
+  }
+  EXPECT_GT(decks, 100);
 }
 
 // A file that grew between being opened and being read is not the deck that was checked.
