@@ -159,8 +159,7 @@ double GroupedReturn::root_of_share_sum(double s) const {
   return std::pow(s, gamma_);
 }
 
-GroupedReturn::Trial GroupedReturn::resolve(const Vector6& trial) const {
-  Trial t;
+void GroupedReturn::resolve_resultants(const Vector6& trial, Trial& t) const {
   for (int g = 0; g < group_count_; ++g) {
     const Group& gr = groups_[static_cast<std::size_t>(g)];
     double v = 0;
@@ -169,17 +168,49 @@ GroupedReturn::Trial GroupedReturn::resolve(const Vector6& trial) const {
       v = gr.macauley ? std::max(0.0, x) : v + x * x;
     });
     // A Macaulay group: its positive part (a negative one has no flow).
-    const double rg = gr.macauley ? v : std::sqrt(v);
-    t.resultant[static_cast<std::size_t>(g)] = rg;
-    t.inverse[static_cast<std::size_t>(g)] = rg > 0 ? 1 / rg : 0.0;
-    t.reach[static_cast<std::size_t>(g)] = rg * gr.inverse_kappa;
+    t.resultant[static_cast<std::size_t>(g)] = gr.macauley ? v : std::sqrt(v);
+  }
+}
+
+double GroupedReturn::trial_share_sum(const Trial& t, double yield_size) const {
+  double sum = 0;
+  int g = 0;
+  for (int i = 0; i < contribution_count_; ++i) {
+    double e = 0;  // E_i^tr: the groups of a contribution are consecutive
+    for (; g < group_count_ && groups_[static_cast<std::size_t>(g)].contribution == i; ++g) {
+      e += t.resultant[static_cast<std::size_t>(g)];
+    }
+    const double z = e * contributions_[static_cast<std::size_t>(i)].inverse_scale / yield_size;
+    switch (exponent_) {
+      case Exponent::One:
+        sum += z;
+        break;
+      case Exponent::ThreeHalves:
+        sum += z * std::sqrt(z);
+        break;
+      case Exponent::Two:
+        sum += z * z;
+        break;
+      case Exponent::General:
+        sum += std::pow(z, beta_);
+        break;
+    }
+  }
+  return sum;
+}
+
+void GroupedReturn::resolve_groups(Trial& t) const {
+  for (int g = 0; g < group_count_; ++g) {
+    const auto gg = static_cast<std::size_t>(g);
+    const double rg = t.resultant[gg];
+    t.inverse[gg] = rg > 0 ? 1 / rg : 0.0;
+    t.reach[gg] = rg * groups_[gg].inverse_kappa;
   }
   // r_g > 0 ⇔ r_g/κ_g > 0 (κ_g > 0).
   for (int i = 0; i < contribution_count_; ++i) {
     const auto ii = static_cast<std::size_t>(i);
     t.positive[ii] = reaching_beyond(contributions_[ii].groups, t, 0.0);
   }
-  return t;
 }
 
 GroupedReturn::GroupSet GroupedReturn::reaching_beyond(unsigned candidates, const Trial& t,
@@ -327,17 +358,21 @@ CoupledReturn GroupedReturn::solve(const IsotropicHardeningLaw& yield, const Vec
                                    double equivalent_old, bool want_tangent) const {
   CoupledReturn out;
   out.force = trial;
-  const Trial t = resolve(trial);
+  Trial t;
+  resolve_resultants(trial, t);
   YieldSample y = yield.at(equivalent_old);
   if (!(y.value > 0)) {  // shares of a vanished yield size are not defined
     out.plastic = true;
     out.converged = false;
     return out;
   }
+  // §6.4 step 1: at Δλ = 0 the shares are E_i^tr/(R_i F_y), so S > 1 ⇔ P(F^tr) > F_y. Most
+  // updates end here, before any of the return's bookkeeping.
+  if (!(trial_share_sum(t, y.value) > 1)) return out;
+  resolve_groups(t);
   Iterate it;
   evaluate(t, 0, y, it);
-  // §6.4 step 1: at Δλ = 0 the shares are E_i^tr/(R_i F_y), so S > 1 ⇔ P(F^tr) > F_y.
-  if (!(it.sum > 1)) return out;
+  if (!(it.sum > 1)) return out;  // at round-off from the surface: the same test, exactly
   out.plastic = true;
 
   double dl = 0, lo = 0, hi = std::numeric_limits<double>::infinity();

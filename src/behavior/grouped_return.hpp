@@ -63,7 +63,11 @@ class GroupedReturn {
     double value, slope, curvature;  // g, dg/dΔλ, d²g/dΔλ² (NaN where S″ is not formed)
   };
 
-  Trial resolve(const Vector6& trial) const;
+  // The group resultants r_g of the trial force; then the rest of Trial, for a plastic update.
+  void resolve_resultants(const Vector6& trial, Trial& t) const;
+  void resolve_groups(Trial& t) const;
+  // S = Σ z_i^β at Δλ = 0 (z_i = E_i^tr/(R_i F_y)), from the resultants alone: the yield check.
+  double trial_share_sum(const Trial& t, double yield_size) const;
   // The groups among `candidates` that a y_i of `y` leaves positive (r_g/κ_g > y).
   GroupSet reaching_beyond(unsigned candidates, const Trial& t, double y) const;
   Share solve_share(int contribution, const Trial& t, double multiplier,
