@@ -1,6 +1,5 @@
 #include "parser/deck_reader.hpp"
 
-#include <algorithm>
 #include <deque>
 #include <filesystem>
 #include <memory>
@@ -10,9 +9,9 @@
 
 #include "parser/block_context.hpp"
 #include "parser/expression.hpp"
+#include "parser/file_scan.hpp"
 #include "parser/keyword_handler.hpp"
 #include "parser/keyword_registry.hpp"
-#include "parser/file_scan.hpp"
 #include "parser/lexer.hpp"
 #include "parser/parameters.hpp"
 #include "parser/suggest.hpp"
@@ -31,8 +30,8 @@ class LineStream {
       : sources_(sources), sink_(sink), checks_(checks) {}
 
   void push(std::uint32_t file) {
-    frames_.push_back(std::make_unique<Frame>(Frame{
-        file, scan_file(sources_, file, sink_, checks_), sources_.begin_layout(file)}));
+    frames_.push_back(std::make_unique<Frame>(
+        Frame{file, scan_file(sources_, file, sink_, checks_), sources_.begin_layout(file)}));
   }
   bool empty() const { return frames_.empty(); }
   std::size_t depth() const { return frames_.size(); }
@@ -175,7 +174,7 @@ class Reader {
     return load_once(path, at, &error);
   }
 
-  // Each file is read from disk once; both passes (and repeated includes) share its text.
+  // Each file is registered once; both passes (and repeated includes) share its entry.
   std::optional<std::uint32_t> load_once(const std::string& path, SourceLoc at,
                                          std::string* error) {
     std::string key = canonical(path);
@@ -495,7 +494,6 @@ class Reader {
           }
           static const std::vector<std::string_view> kYesNo = {"YES", "NO"};
           const auto& values = match->kind == ParamKind::FlagOrYesNo ? kYesNo : match->values;
-          ReaderPosition unused;
           BlockContext ctx(line, spec, out, model_, position_, sink_, sources_);
           auto word = ctx.word(param.value, values, match->name);
           if (!word) continue;

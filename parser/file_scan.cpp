@@ -1,8 +1,8 @@
 #include "parser/file_scan.hpp"
 
-#include <algorithm>
-
 #include <fmt/format.h>
+
+#include <algorithm>
 
 namespace clinch {
 
@@ -13,8 +13,8 @@ LineScanner scan_file(const SourceManager& sources, std::uint32_t index, Diagnos
   return LineScanner(std::make_unique<FileWindow>(file.path), index, sink, checks);
 }
 
-void check_read_whole(const SourceManager& sources, const LineScanner& scanner,
-                      std::uint32_t index, DiagnosticSink& sink) {
+void check_read_whole(const SourceManager& sources, const LineScanner& scanner, std::uint32_t index,
+                      DiagnosticSink& sink) {
   const SourceFile& file = sources.file(index);
   if (!file.on_disk || (!scanner.read_failed() && scanner.bytes_read() == file.size)) return;
   const SourceLoc at = file.included_from.valid()

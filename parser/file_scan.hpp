@@ -17,7 +17,7 @@ LineScanner scan_file(const SourceManager& sources, std::uint32_t index, Diagnos
 // Called once the scanner is at End: E0108 if the file could not be read whole as it was when it
 // was opened (removed, truncated or grown in between, or a read error), at the *INCLUDE or
 // INPUT= value that opened it, or at the last line of the deck itself.
-void check_read_whole(const SourceManager& sources, const LineScanner& scanner,
-                      std::uint32_t index, DiagnosticSink& sink);
+void check_read_whole(const SourceManager& sources, const LineScanner& scanner, std::uint32_t index,
+                      DiagnosticSink& sink);
 
 }  // namespace clinch

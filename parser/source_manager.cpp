@@ -107,8 +107,8 @@ std::size_t SourceManager::lines_after_keyword(SourceLoc keyword) const {
   if (!keyword.valid() || keyword.file >= files_.size()) return 0;
   const SourceFile& file = files_[keyword.file];
   if (!file.layout_known || keyword.line > file.line_count) return 0;
-  const auto next = std::upper_bound(file.keyword_lines.begin(), file.keyword_lines.end(),
-                                     keyword.line);
+  const auto next =
+      std::upper_bound(file.keyword_lines.begin(), file.keyword_lines.end(), keyword.line);
   const std::uint32_t stop = next == file.keyword_lines.end() ? file.line_count + 1 : *next;
   return stop - keyword.line - 1;
 }

@@ -109,11 +109,12 @@ TEST(FileScan, WindowedFileScansLikeTheTextInMemory) {
 TEST(FileScan, EveryRepositoryDeckScansLikeItsTextThroughATinyWindow) {
   int decks = 0;
   for (const char* folder : {"decks", "tests/diagnostics"}) {
-    for (const auto& entry :
-         std::filesystem::recursive_directory_iterator(std::string(CLINCH_SOURCE_DIR) + "/" + folder)) {
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(
+             std::string(CLINCH_SOURCE_DIR) + "/" + folder)) {
       if (entry.path().extension() != ".inp") continue;
       std::ifstream file(entry.path(), std::ios::binary);
-      const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+      const std::string text((std::istreambuf_iterator<char>(file)),
+                             std::istreambuf_iterator<char>());
       DiagnosticSink memory_sink, file_sink;
       LineScanner in_memory(text, 0, memory_sink);
       LineScanner windowed(std::make_unique<FileWindow>(entry.path().string(), 7), 0, file_sink);
