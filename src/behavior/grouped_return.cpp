@@ -348,10 +348,11 @@ GroupedReturn::Distance GroupedReturn::distance(const Iterate& it) const {
                           ? psi * (1 + (gamma_ - 1) * psi * (0.5 + (gamma_ - 2) * psi / 6))
                           : (root_of_share_sum(it.sum) - 1) / gamma_;  // (S^γ − 1)/γ
   const double s_gamma = 1 + gamma_ * rise;
-  // g′ = S^(−γ−1) S′ and g″ = S^(−γ−1) (S″ − (γ + 1) S′²/S), S′ = −Q.
+  // g′ = S^(−γ−1) S′ and g″ = S^(−γ−1) (S″ − (γ + 1) S′²/S), S′ = −Q; one division for
+  // 1/S^γ, 1/S and S^(−γ−1).
   const double weight = 1 / (it.sum * s_gamma);
-  return {rise / s_gamma, -it.slope * weight,
-          weight * (it.curvature - (gamma_ + 1) * it.slope * it.slope / it.sum)};
+  return {rise * it.sum * weight, -it.slope * weight,
+          weight * (it.curvature - (gamma_ + 1) * it.slope * it.slope * s_gamma * weight)};
 }
 
 CoupledReturn GroupedReturn::solve(const IsotropicHardeningLaw& yield, const Vector6& trial,
@@ -410,15 +411,18 @@ CoupledReturn GroupedReturn::solve(const IsotropicHardeningLaw& yield, const Vec
     if (!(d.slope < 0)) continue;
     // Halley's step: Newton's quadratic convergence has a large constant here (z_i is far from
     // linear in Δλ). g″ is exact for β = 1.5 (Share::curvature) and taken from the slopes at this
-    // and the previous iterate otherwise; either saves about one evaluation per return. Outside
-    // [1/2, 2] the correction is not trusted and the step stays Newton's.
-    double step = -d.value / d.slope;
-    const double factor =
-        1 + step *
-                (std::isnan(d.curvature) ? (d.slope - previous.slope) / (dl - previous_dl)
-                                         : d.curvature) /
-                (2 * d.slope);
-    if (factor >= 0.5 && factor <= 2) step /= factor;
+    // and the previous iterate otherwise; either saves about one evaluation per return. With
+    // Newton's step −g/g′ and φ = 1 − g g″/(2 g′²), Halley's step −g/(g′ φ) = −2 g g′/(2 g′² − g g″)
+    // takes one division. Outside φ ∈ [1/2, 2] (2 g′² φ outside [g′², 4 g′²]; a NaN curvature
+    // included) the correction is not trusted and the step stays Newton's.
+    const double curvature = std::isnan(d.curvature)
+                                 ? (d.slope - previous.slope) / (dl - previous_dl)
+                                 : d.curvature;
+    const double slope2 = d.slope * d.slope;
+    const double halley = 2 * slope2 - d.value * curvature;
+    const double step = halley >= slope2 && halley <= 4 * slope2
+                            ? -2 * d.value * d.slope / halley
+                            : -d.value / d.slope;
     previous = d;
     previous_dl = dl;
     if (std::abs(step) <= 4 * kEpsilon * dl && std::abs(psi) <= 1e3 * kTolerance) {
