@@ -13,9 +13,11 @@ namespace clinch {
 // On Linux with THP in "madvise" mode, the tunable not already set, CLINCH_HUGE_PAGES not "0" and
 // not under valgrind (whose tools would lose the process), by the largest file among the
 // arguments (the deck):
-// - 4 MiB or more: re-executes the program with glibc.malloc.hugetlb=1 (a second start-up costs
-//   more than a smaller deck gains); returns only if that fails;
-// - 256 KiB to 4 MiB: reserves a heap in huge pages in this process (malloc options and madvise);
+// - 4 MiB or more (128 KiB or more for `clinch run`): re-executes the program with
+//   glibc.malloc.hugetlb=1 (a second start-up costs more than a smaller deck gains); returns only
+//   if that fails;
+// - other subcommands, 256 KiB to 4 MiB: reserves a heap in huge pages in this process (malloc
+//   options and madvise);
 // - smaller: nothing (its heap grows by less than one huge page).
 void use_huge_pages(char** argv);
 
