@@ -96,10 +96,11 @@ bool crosses(const KinkGroup& g, const Vector6& from, const Vector6& to) {
 }
 
 // With group `g` held at zero, the dropped rows of the flow rule, K⁻¹(F − F^tr) + Δλ ζ̃ = 0, need
-// ζ̃ in the subdifferential n_i·(C∘ζ), ‖ζ‖ ≤ 1 (NORM) or ζ ∈ [0, 1] (MACAULEY). False means the
-// exact return leaves the kink, and the group must be released.
-bool hold_is_admissible(const KinkGroup& g, const ElasticSpace& space, const Vector6& trial,
-                        const Iterate& it) {
+// ζ̃ in the subdifferential n_i·(C∘ζ), ‖ζ‖ ≤ 1 (NORM) or ζ ∈ [0, 1] (MACAULEY). Returns by how
+// much ζ leaves that set (0 when the hold is admissible): a positive value means the exact
+// return leaves the kink, and the group must be released.
+double hold_violation(const KinkGroup& g, const ElasticSpace& space, const Vector6& trial,
+                      const Iterate& it) {
   const Vector6 r = space.compliance * (it.force - trial);
   const double weight =
       it.multiplier * it.potential.slope[static_cast<std::size_t>(g.contribution)];
@@ -108,12 +109,15 @@ bool hold_is_admissible(const KinkGroup& g, const ElasticSpace& space, const Vec
   for (int i = 0; i < 6; ++i) {
     if (!((g.components >> i) & 1u)) continue;
     const double scale = weight * g.coefficient[i];
-    if (scale == 0) return std::abs(r[i]) <= kTolerance * space.compliance(i, i) * it.yield.value;
+    if (scale == 0) {
+      const double bound = kTolerance * space.compliance(i, i) * it.yield.value;
+      return std::abs(r[i]) <= bound ? 0.0 : std::abs(r[i]) / bound;
+    }
     const double zeta = -r[i] / scale;
-    if (g.macauley) return zeta >= -kSlack && zeta <= 1.0 + kSlack;
+    if (g.macauley) return std::max({0.0, zeta - (1.0 + kSlack), -kSlack - zeta});
     zeta_sq += zeta * zeta;
   }
-  return zeta_sq <= (1.0 + kSlack) * (1.0 + kSlack);
+  return std::max(0.0, std::sqrt(zeta_sq) - (1.0 + kSlack));
 }
 
 }  // namespace
@@ -167,10 +171,17 @@ CoupledReturn closest_point_return(const ElasticSpace& space, const ConnectorPot
   for (int iteration = 0; iteration < kMaxNewtonIterations; ++iteration) {
     Iterate& it = buffers[cur];
     if (converged(it, scales)) {
+      // One group at a time, the one whose subgradient is furthest from admissible: releasing
+      // every inadmissible hold at once let a group that belongs at zero (and is held again by
+      // the next step) pull the others across their kinks, and the active set cycled.
       ComponentMask released = 0;
+      double worst = 0;
       for (const KinkGroup& g : groups) {
-        if ((held & g.components) == g.components && !hold_is_admissible(g, space, trial, it)) {
-          released = static_cast<ComponentMask>(released | g.components);
+        if ((held & g.components) != g.components) continue;
+        const double violation = hold_violation(g, space, trial, it);
+        if (violation > worst) {
+          worst = violation;
+          released = g.components;
         }
       }
       if (!released) {
