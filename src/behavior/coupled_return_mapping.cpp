@@ -16,6 +16,8 @@ constexpr double kTolerance = 1e-12;             // §6.4 steps 2 and 3
 // Armijo constant of the backtracking line search: any decrease proportional to the step is
 // enough; the merit only guards Newton against overshooting a kink of the potential.
 constexpr double kArmijo = 1e-4;
+// Where a released kink group restarts, as a fraction of its trial force (closest_point_return).
+constexpr double kReleaseOffset = 1e-6;
 
 // One iterate of the closest-point Newton: (F, Δλ), P and its derivatives at F, F_y and h at
 // ū_n + Δλ, the residuals of §6.4 and the merit. Components of `held` (collapsed kink groups)
@@ -192,6 +194,13 @@ CoupledReturn closest_point_return(const ElasticSpace& space, const ConnectorPot
       // cutting plane takes over (§6.4 step 3).
       if (++releases > kMaxReleases) break;
       held = static_cast<ComponentMask>(held & ~released);
+      // The released group leaves its kink along the trial force: at exactly zero the spec's
+      // gradient of a NORM or Macaulay term is 0 and gives Newton no direction, and the line
+      // search stalled there. 1e-6 of the trial moves the state by no more than the next step
+      // corrects.
+      for (int i = 0; i < 6; ++i) {
+        if ((released >> i) & 1u) it.force[i] = kReleaseOffset * trial[i];
+      }
       evaluate(space, potential, yield, trial, equivalent_old, scales, true, held, it);
     }
     // Newton on [K⁻¹ + Δλ N2, n; nᵀ, −h] (§6.4) by the Schur complement of the symmetric 6×6

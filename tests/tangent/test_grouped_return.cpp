@@ -198,9 +198,9 @@ TEST(GroupedReturn, EveryExponentAgreesWithTheGeneralReturnAndFiniteDifferences)
 // Softening (h = −40000 from a hardened state): the outer equation is no longer monotone in Δλ
 // for large trials, and the safeguarded Newton must still end on the closest point. The general
 // return's cutting-plane fallback ends on the surface but away from it on a few of these trials
-// (11 of 500: its Newton cycles between holding and releasing the `normal` groups at their
-// kinks), so the comparison is limited to trials where the general return meets the conditions
-// too. Releasing all inadmissible holds at once, the general return cycled on 21.
+// (7 of 500: its Newton cycles between holding and releasing a group at its kink), so the
+// comparison is limited to trials where the general return meets the conditions too (21 before
+// holds were released one at a time and off their kink).
 TEST(GroupedReturn, SofteningEndsOnTheClosestPoint) {
   std::string body = spot_weld_body(uncoupled_elasticity({1e5, 1e5, 2e5, 1e6, 1e6, 5e5}));
   body.replace(body.find("60000., 0.5"), 11, "20000., 0.5");
@@ -226,7 +226,7 @@ TEST(GroupedReturn, SofteningEndsOnTheClosestPoint) {
     expect_same_return(a, b, trial);
   }
   EXPECT_GE(solved, plastic * 99 / 100);
-  EXPECT_GE(compared, 485);
+  EXPECT_GE(compared, 490);
 }
 
 // The general return where it is the only one: the spot weld with k1 ≠ k2, so that the flow in
@@ -234,10 +234,10 @@ TEST(GroupedReturn, SofteningEndsOnTheClosestPoint) {
 // 1e-3, so that the return ends on a kink), hardening and softening. Counted: the plastic
 // updates that end on the closest point (optimality_violation ≤ 1e-9, the return's own
 // tolerance with margin). The rest fall back to the cutting plane, which ends on the surface but
-// not at the closest point, when the active set on the kinks cycles or the line search stalls
-// next to a kink (docs/decisions.md "General return"); releasing every inadmissible hold at once
-// rather than the worst one, 1865 of the 1981 hardening updates and 479 of the 500 softening
-// ones ended on the closest point.
+// not at the closest point, when the active set on the kinks cycles (docs/decisions.md, "Returns
+// that end on a kink"). Releasing every inadmissible hold at once, and at exactly zero, 1865 of
+// the 1981 hardening updates and 479 of the 500 softening ones ended on the closest point; now
+// 1952 and 492.
 int updates_on_the_closest_point(const Parts& p, int trials, bool cut_components, int* plastic) {
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -260,12 +260,12 @@ TEST(GeneralReturn, EndsOnTheClosestPointOfTheSpotWeldWithUnequalShearStiffness)
   Parts hardening = parts(body);
   ASSERT_FALSE(GroupedReturn::create(*hardening.potential, hardening.space));
   int plastic = 0;
-  EXPECT_GE(updates_on_the_closest_point(hardening, 2000, true, &plastic), 1910);
+  EXPECT_GE(updates_on_the_closest_point(hardening, 2000, true, &plastic), 1950);
   EXPECT_EQ(plastic, 1981);
   std::string softening_body = body;
   softening_body.replace(softening_body.find("60000., 0.5"), 11, "20000., 0.5");
   Parts softening = parts(softening_body);
-  EXPECT_GE(updates_on_the_closest_point(softening, 500, false, &plastic), 485);
+  EXPECT_GE(updates_on_the_closest_point(softening, 500, false, &plastic), 490);
   EXPECT_EQ(plastic, 500);
 }
 
