@@ -31,7 +31,8 @@ bool transparent_huge_pages_on_request() {
 
 // Re-executing costs a second start-up (about 5 ms); it pays off only when some input is large:
 // for `clinch check` a deck of 4 MiB, for `clinch run`, which builds and factorizes far more
-// than the deck, one of 128 KiB (the AXIAL lattice of 10³ nodes, 178 kB: 0.17–0.25 s → 0.11–0.14 s).
+// than the deck, one of 128 KiB (the AXIAL lattice of 10³ nodes, 178 kB: 0.21–0.23 s →
+// 0.13–0.19 s, docs/performance.md).
 constexpr off_t kLargeInput = 4 << 20;
 constexpr off_t kLargeInputToRun = 128 << 10;
 // Below this the heap grows by less than one huge page, which would only round its size up.
