@@ -104,6 +104,7 @@ std::optional<GroupedReturn> GroupedReturn::create(const ConnectorPotential& pot
     Group r;
     r.components = g.components;
     r.macauley = g.macauley;
+    r.single = std::popcount(static_cast<unsigned>(g.components)) == 1;
     r.contribution = g.contribution;
     r.coefficient = g.coefficient;
     bool first = true;
@@ -165,14 +166,15 @@ void GroupedReturn::resolve_resultants(const Vector6& trial, Trial& t) const {
     double v = 0;
     for_each_bit(gr.components, [&](int c) {
       const double x = gr.coefficient[c] * trial[c];
-      v = gr.macauley ? std::max(0.0, x) : v + x * x;
+      v = gr.macauley ? std::max(0.0, x) : gr.single ? std::abs(x) : v + x * x;
     });
     // A Macaulay group: its positive part (a negative one has no flow).
-    t.resultant[static_cast<std::size_t>(g)] = gr.macauley ? v : std::sqrt(v);
+    t.resultant[static_cast<std::size_t>(g)] = gr.macauley || gr.single ? v : std::sqrt(v);
   }
 }
 
 double GroupedReturn::trial_share_sum(const Trial& t, double yield_size) const {
+  const double inverse_yield = 1 / yield_size;
   double sum = 0;
   int g = 0;
   for (int i = 0; i < contribution_count_; ++i) {
@@ -180,7 +182,7 @@ double GroupedReturn::trial_share_sum(const Trial& t, double yield_size) const {
     for (; g < group_count_ && groups_[static_cast<std::size_t>(g)].contribution == i; ++g) {
       e += t.resultant[static_cast<std::size_t>(g)];
     }
-    const double z = e * contributions_[static_cast<std::size_t>(i)].inverse_scale / yield_size;
+    const double z = e * contributions_[static_cast<std::size_t>(i)].inverse_scale * inverse_yield;
     switch (exponent_) {
       case Exponent::One:
         sum += z;

@@ -43,6 +43,7 @@ class GroupedReturn {
   struct Group {
     ComponentMask components = 0;
     bool macauley = false;
+    bool single = false;  // one component: its resultant is |C x|, no root
     int contribution = 0;
     Vector6 coefficient = Vector6::Zero();  // C (sign included)
     double kappa = 0;                       // k·C², uniform over the group
