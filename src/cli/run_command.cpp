@@ -63,6 +63,7 @@ int run_deck(const RunCommandOptions& options) {
     if (d.severity == Severity::Error) log.error(text);
     else log.warning(text);
   }
+  sources.release_texts();  // the lines a warning showed are not held through the analysis
   if (sink.has_errors()) {
     log.error(fmt::format("{}: {}, {}; nothing was run", options.deck,
                           count_of(sink.error_count(), "error"),
