@@ -880,7 +880,6 @@ ReadStatus read_deck_file(const std::string& path, SourceManager& sources, Model
     return ReadStatus::IoError;
   }
   Reader(sources, model, sink).run(*idx);
-  sources.release_texts();
   validate_model(model, sink);
   return ReadStatus::Ok;
 }

@@ -1,7 +1,8 @@
 // A file read front to back through one reused buffer. The deck reader scans a file line by line
 // and never looks back, so it needs only the current line in memory: a deck of 10⁶ connectors
 // (84 MB) is read through a quarter-megabyte window that stays in cache, instead of becoming a
-// fresh 84 MB buffer that the kernel must zero and fill (docs/performance.md "Reading the deck").
+// fresh 84 MB buffer that the kernel must zero and fill (docs/performance.md, "The deck is
+// streamed, never held whole").
 #pragma once
 
 #include <cstdint>

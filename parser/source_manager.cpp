@@ -29,37 +29,16 @@ std::FILE* open_regular_file(const std::string& path, std::string* error) {
   return handle;
 }
 
-// Reads a regular file whole. False with *error set to the system's reason on failure.
-bool read_file(const std::string& path, std::unique_ptr<char[]>& bytes, std::size_t& size,
-               std::string* error) {
-  std::FILE* handle = open_regular_file(path, error);
+// Reads a regular file that must still hold exactly `size` bytes (the size it had when it was
+// parsed): one allocation, one read. False if it cannot be read or its size changed.
+bool read_file_of_size(const std::string& path, std::size_t size, std::unique_ptr<char[]>& bytes) {
+  std::FILE* handle = open_regular_file(path, nullptr);
   if (!handle) return false;
-  // Read straight into the buffer when the size is known (a regular file): one allocation, one
-  // copy. Anything left after that (a file that grew) is appended in chunks.
-  std::error_code size_error;
-  const auto expected = std::filesystem::file_size(path, size_error);
-  std::size_t capacity = size_error ? 0 : static_cast<std::size_t>(expected);
-  bytes.reset(new char[std::max<std::size_t>(capacity, 1)]);
-  size = capacity > 0 ? std::fread(bytes.get(), 1, capacity, handle) : 0;
-  char buffer[1 << 16];
-  std::size_t got;
-  while ((got = std::fread(buffer, 1, sizeof buffer, handle)) > 0) {
-    if (size + got > capacity) {
-      capacity = std::max(2 * capacity, size + got);
-      std::unique_ptr<char[]> grown(new char[capacity]);
-      std::memcpy(grown.get(), bytes.get(), size);
-      bytes = std::move(grown);
-    }
-    std::memcpy(bytes.get() + size, buffer, got);
-    size += got;
-  }
-  const bool failed = std::ferror(handle) != 0;
+  bytes.reset(new char[std::max<std::size_t>(size, 1)]);
+  const bool whole = std::fread(bytes.get(), 1, size, handle) == size &&
+                     std::fgetc(handle) == EOF && !std::ferror(handle);
   std::fclose(handle);
-  if (failed) {
-    if (error) *error = "read error";
-    return false;
-  }
-  return true;
+  return whole;
 }
 
 }  // namespace
@@ -117,10 +96,9 @@ void SourceManager::restore(SourceFile& file) const {
   if (!file.released) return;
   file.released = false;  // one attempt: a file that cannot be read back shows no lines
   std::unique_ptr<char[]> bytes;
-  std::size_t size = 0;
-  if (!read_file(file.path, bytes, size, nullptr) || size != file.size) return;
+  if (!read_file_of_size(file.path, file.size, bytes)) return;
   file.bytes = std::move(bytes);
-  file.text = std::string_view(file.bytes.get(), size);
+  file.text = std::string_view(file.bytes.get(), file.size);
 }
 
 std::string_view SourceManager::text(std::uint32_t index) const {
