@@ -229,6 +229,22 @@ GroupedReturn::GroupSet GroupedReturn::reaching_beyond(unsigned candidates, cons
   return set;
 }
 
+GroupedReturn::GroupSet GroupedReturn::last_to_clip(unsigned candidates, const Trial& t) const {
+  int last = -1;
+  for_each_bit(candidates, [&](int g) {
+    if (last < 0 || t.reach[static_cast<std::size_t>(g)] > t.reach[static_cast<std::size_t>(last)])
+      last = g;
+  });
+  GroupSet set;
+  if (last < 0) return set;
+  const auto gg = static_cast<std::size_t>(last);
+  set.mask = 1u << last;
+  set.sum = t.resultant[gg];
+  set.kappa = groups_[gg].kappa;
+  set.first_clip = t.reach[gg];
+  return set;
+}
+
 [[gnu::always_inline]] inline GroupedReturn::Share GroupedReturn::solve_share(
     int contribution, const Trial& t, double multiplier, const YieldSample& y) const {
   const auto ii = static_cast<std::size_t>(contribution);
@@ -326,10 +342,10 @@ GroupedReturn::GroupSet GroupedReturn::reaching_beyond(unsigned candidates, cons
 // slope n_i = ζ_i^(β−1)/R_i; contribution i would need Δλ_i = s_i (1 − 1/μ)/(K_i n_i). Their
 // mean weighted by ζ_i^β is (1 − 1/μ)·A with A = Σ_i ζ_i s_i R_i/K_i, which is linear in Δλ:
 // Δλ = A (P^tr − F_y)/(P^tr + A h). Exact for a single contribution with linear hardening.
-double GroupedReturn::radial_guess(const Trial& t, const Iterate& at_zero,
-                                   const YieldSample& y) const {
-  // P^tr/F_y = S^(1/β) = S/S^γ.
-  const double p_trial = y.value * at_zero.sum / root_of_share_sum(at_zero.sum);
+double GroupedReturn::radial_guess(const Trial& t, const Iterate& at_zero, const YieldSample& y,
+                                   double root) const {
+  // P^tr/F_y = S^(1/β) = S/S^γ (root = S^γ).
+  const double p_trial = y.value * at_zero.sum / root;
   double a = 0;
   for (int i = 0; i < contribution_count_; ++i) {
     const auto ii = static_cast<std::size_t>(i);
@@ -363,7 +379,7 @@ CoupledReturn GroupedReturn::solve(const IsotropicHardeningLaw& yield, const Vec
   out.force = trial;
   Trial t;
   resolve_resultants(trial, t);
-  YieldSample y = yield.at(equivalent_old);
+  const YieldSample y = yield.at(equivalent_old);
   if (!(y.value > 0)) {  // shares of a vanished yield size are not defined
     out.plastic = true;
     out.converged = false;
@@ -378,11 +394,131 @@ CoupledReturn GroupedReturn::solve(const IsotropicHardeningLaw& yield, const Vec
   if (!(it.sum > 1)) return out;  // at round-off from the surface: the same test, exactly
   out.plastic = true;
 
+  double dl = 0;
+  const bool ok = (exponent_ == Exponent::ThreeHalves &&
+                   solve_jointly(t, yield, equivalent_old, it, dl)) ||
+                  solve_multiplier(t, yield, equivalent_old, it, dl);
+  if (!ok || !(it.slope > 0)) {
+    out.converged = false;
+    return out;
+  }
+
+  // The forces: every group shrunk radially to T_g (zero where clipped).
+  for (int g = 0; g < group_count_; ++g) {
+    const Group& gr = groups_[static_cast<std::size_t>(g)];
+    const Share& s = it.share[static_cast<std::size_t>(gr.contribution)];
+    const double rg = t.resultant[static_cast<std::size_t>(g)];
+    if (rg <= 0) continue;  // no flow: an inactive Macaulay term or a zero resultant
+    const double ratio =
+        (s.active >> g) & 1u
+            ? std::max(0.0, 1 - gr.kappa * s.y * t.inverse[static_cast<std::size_t>(g)])
+            : 0.0;
+    for_each_bit(gr.components, [&](int k) { out.force[k] = trial[k] * ratio; });
+  }
+  out.multiplier = dl;
+  if (want_tangent) tangent(trial, t, it, dl, out.tangent);
+  return out;
+}
+
+// β = 1.5: Newton on Δλ and the roots of the shares w_i = √z_i together, on
+//   Φ_i = R_i F_y w_i² + Δλ (K_i/R_i) w_i − Σ_g r_g = 0,  Σ_i w_i³ = 1,
+// with the groups that stay positive taken at the iterate (E_i is piecewise linear in y_i, so
+// this is a semismooth Newton). The equations are polynomials: a step takes one division per
+// contribution and one for Δλ, where solve_multiplier takes a root and two divisions per
+// contribution for each Δλ. It starts from the radial guess of Δλ with every share solved there
+// (which saves one to two steps over the radial shares ζ_i) and stops when every Φ_i is within
+// kTolerance of its Σ_g r_g and |S − 1| within β·kTolerance, the test of solve_multiplier. An
+// iterate past the last clip of a contribution (the solution keeps E_i > 0 for β > 1) extends
+// that group's linear piece. It gives up (false, `it` unchanged) where the plain Newton is not
+// safe: a non-positive iterate, a vanished yield size, or no convergence in kJointIterations
+// (an active set that cycles on a kink); solve_multiplier then takes over.
+bool GroupedReturn::solve_jointly(const Trial& t, const IsotropicHardeningLaw& yield,
+                                  double equivalent_old, Iterate& it, double& multiplier) const {
+  constexpr int kJointIterations = 12;  // it takes 3–7 steps where it converges at all
+  YieldSample y = yield.at(equivalent_old);
+  const double root = root_of_share_sum(it.sum);  // S^(1/3) at Δλ = 0
+  double dl = radial_guess(t, it, y, root);
+  std::array<double, kMaxGroups> w{};
+  if (dl > 0) {
+    const YieldSample y0 = yield.at(equivalent_old + dl);
+    for (int i = 0; i < contribution_count_; ++i) {
+      w[static_cast<std::size_t>(i)] = solve_share(i, t, dl, y0).zb1;
+    }
+  }
+  Iterate next;
+  std::array<double, kMaxGroups> phi{};
+  for (int iteration = 0; iteration < kJointIterations; ++iteration) {
+    if (!(dl > 0)) return false;
+    y = yield.at(equivalent_old + dl);
+    if (!(y.value > 0)) return false;
+    double psi = -1, weighted_residual = 0, slope = 0;  // S − 1, Σ q_i Φ_i, Q = Σ q_i b_i
+    bool shares_converged = true;
+    for (int i = 0; i < contribution_count_; ++i) {
+      const auto ii = static_cast<std::size_t>(i);
+      Share& s = next.share[ii];
+      if (!t.positive[ii].mask) {  // E_i^tr = 0: the share stays 0
+        s = Share{0, 0, 0, 0, 0, 0, 0, 0};
+        phi[ii] = 0;
+        continue;
+      }
+      const Contribution& c = contributions_[ii];
+      const double wi = w[ii];
+      if (!(wi > 0)) return false;
+      s.y = dl * wi * c.inverse_scale;
+      GroupSet set = reaching_beyond(t.positive[ii].mask, t, s.y);
+      const bool extended = !set.mask;  // not a solution: that group's T_g would be negative
+      if (extended) set = last_to_clip(t.positive[ii].mask, t);
+      const double rf = c.scale * y.value;
+      const double kr = set.kappa * c.inverse_scale;  // K_i/R_i
+      phi[ii] = (rf * wi + dl * kr) * wi - set.sum;
+      const double inv_a = 1 / (2 * rf * wi + dl * kr);  // 1/(∂Φ_i/∂w)
+      s.z = wi * wi;
+      s.zb1 = wi;
+      s.inv_a = 2 * wi * inv_a;  // 1/(∂Φ_i/∂z), ∂w/∂z = 1/(2w)
+      s.dzb1_inv_a = inv_a;
+      s.b = (c.scale * y.slope * wi + kr) * wi;  // ∂Φ_i/∂Δλ
+      s.curvature = std::numeric_limits<double>::quiet_NaN();
+      s.active = set.mask;
+      const double q = 3 * s.z * inv_a;  // ∂(w_i³)/∂w_i / (∂Φ_i/∂w)
+      psi += s.z * wi;
+      weighted_residual += q * phi[ii];
+      slope += q * s.b;
+      shares_converged =
+          shares_converged && !extended && std::abs(phi[ii]) <= kTolerance * set.sum;
+    }
+    if (!(slope > 0)) return false;
+    if (shares_converged && std::abs(psi) <= beta_ * kTolerance) {
+      for (int i = 0; i < contribution_count_; ++i) {
+        it.share[static_cast<std::size_t>(i)] = next.share[static_cast<std::size_t>(i)];
+      }
+      it.sum = psi + 1;
+      it.slope = slope;  // Σ β z^(β−1) b/(∂Φ/∂z) = Σ 3 w² b/(∂Φ/∂w)
+      multiplier = dl;
+      return true;
+    }
+    // Σ 3 w_i² dw_i = −(S − 1) with dw_i = −(Φ_i + b_i dΔλ)/(∂Φ_i/∂w).
+    const double step = (psi - weighted_residual) / slope;
+    dl += step;
+    for (int i = 0; i < contribution_count_; ++i) {
+      const auto ii = static_cast<std::size_t>(i);
+      const Share& s = next.share[ii];
+      w[ii] -= (phi[ii] + s.b * step) * s.dzb1_inv_a;
+    }
+  }
+  return false;
+}
+
+// Δλ for the shares at Δλ = 0 in `it` (in: the shares at Δλ = 0; out: at the solution), by a
+// safeguarded Newton on the distance from the surface with Halley's correction, each iterate
+// solving every share equation for its Δλ (solve_share).
+bool GroupedReturn::solve_multiplier(const Trial& t, const IsotropicHardeningLaw& yield,
+                                     double equivalent_old, Iterate& it,
+                                     double& multiplier) const {
+  YieldSample y = yield.at(equivalent_old);
   double dl = 0, lo = 0, hi = std::numeric_limits<double>::infinity();
-  double next = radial_guess(t, it, y);
+  double next = radial_guess(t, it, y, root_of_share_sum(it.sum));
   Distance previous = distance(it);
   double previous_dl = 0;
-  bool ok = false;
   for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
     if (!(next > lo && next < hi)) {
       if (std::isfinite(hi)) {
@@ -400,13 +536,11 @@ CoupledReturn GroupedReturn::solve(const IsotropicHardeningLaw& yield, const Vec
     }
     dl = next;
     y = yield.at(equivalent_old + dl);
-    if (!(y.value > 0)) break;
+    if (!(y.value > 0)) return false;
     evaluate(t, dl, y, it);
     const double psi = it.sum - 1;
-    if (std::abs(psi) <= beta_ * kTolerance) {
-      ok = true;
-      break;
-    }
+    multiplier = dl;
+    if (std::abs(psi) <= beta_ * kTolerance) return true;
     (psi > 0 ? lo : hi) = dl;
     next = std::numeric_limits<double>::quiet_NaN();
     const Distance d = distance(it);
@@ -428,31 +562,11 @@ CoupledReturn GroupedReturn::solve(const IsotropicHardeningLaw& yield, const Vec
     previous = d;
     previous_dl = dl;
     if (std::abs(step) <= 4 * kEpsilon * dl && std::abs(psi) <= 1e3 * kTolerance) {
-      ok = true;  // the remaining step is below the resolution of Δλ
-      break;
+      return true;  // the remaining step is below the resolution of Δλ
     }
     next = dl + step;
   }
-  if (!ok || !(it.slope > 0)) {
-    out.converged = false;
-    return out;
-  }
-
-  // The forces: every group shrunk radially to T_g (zero where clipped).
-  for (int g = 0; g < group_count_; ++g) {
-    const Group& gr = groups_[static_cast<std::size_t>(g)];
-    const Share& s = it.share[static_cast<std::size_t>(gr.contribution)];
-    const double rg = t.resultant[static_cast<std::size_t>(g)];
-    if (rg <= 0) continue;  // no flow: an inactive Macaulay term or a zero resultant
-    const double ratio =
-        (s.active >> g) & 1u
-            ? std::max(0.0, 1 - gr.kappa * s.y * t.inverse[static_cast<std::size_t>(g)])
-            : 0.0;
-    for_each_bit(gr.components, [&](int k) { out.force[k] = trial[k] * ratio; });
-  }
-  out.multiplier = dl;
-  if (want_tangent) tangent(trial, t, it, dl, out.tangent);
-  return out;
+  return false;
 }
 
 // ∂F/∂u at the converged state, from F_c = t_c T_g/r_g (c in group g, t = F^tr = K(u − u^pl_n)):

@@ -71,12 +71,22 @@ class GroupedReturn {
   double trial_share_sum(const Trial& t, double yield_size) const;
   // The groups among `candidates` that a y_i of `y` leaves positive (r_g/κ_g > y).
   GroupSet reaching_beyond(unsigned candidates, const Trial& t, double y) const;
+  // The group among `candidates` that clips last (largest r_g/κ_g), alone.
+  GroupSet last_to_clip(unsigned candidates, const Trial& t) const;
   Share solve_share(int contribution, const Trial& t, double multiplier,
                     const YieldSample& y) const;
   void evaluate(const Trial& t, double multiplier, const YieldSample& y, Iterate& it) const;
   double root_of_share_sum(double s) const;
   Distance distance(const Iterate& it) const;
-  double radial_guess(const Trial& t, const Iterate& at_zero, const YieldSample& y) const;
+  // `root`: S^γ of the shares at Δλ = 0 in `at_zero`.
+  double radial_guess(const Trial& t, const Iterate& at_zero, const YieldSample& y,
+                      double root) const;
+  // β = 1.5: Δλ and the shares at it in `it` (the shares at Δλ = 0 on entry, kept on failure).
+  bool solve_jointly(const Trial& t, const IsotropicHardeningLaw& yield, double equivalent_old,
+                     Iterate& it, double& multiplier) const;
+  // Any β, the same by Newton–Halley on Δλ alone with every share solved at each iterate.
+  bool solve_multiplier(const Trial& t, const IsotropicHardeningLaw& yield, double equivalent_old,
+                        Iterate& it, double& multiplier) const;
   void tangent(const Vector6& trial, const Trial& t, const Iterate& it, double multiplier,
                Matrix6& out) const;
 
