@@ -395,9 +395,9 @@ CoupledReturn GroupedReturn::solve(const IsotropicHardeningLaw& yield, const Vec
   out.plastic = true;
 
   double dl = 0;
-  const bool ok = (exponent_ == Exponent::ThreeHalves &&
-                   solve_jointly(t, yield, equivalent_old, it, dl)) ||
-                  solve_multiplier(t, yield, equivalent_old, it, dl);
+  const bool ok =
+      (exponent_ == Exponent::ThreeHalves && solve_jointly(t, yield, equivalent_old, it, dl)) ||
+      solve_multiplier(t, yield, equivalent_old, it, dl);
   if (!ok || !(it.slope > 0)) {
     out.converged = false;
     return out;
@@ -483,8 +483,7 @@ bool GroupedReturn::solve_jointly(const Trial& t, const IsotropicHardeningLaw& y
       psi += s.z * wi;
       weighted_residual += q * phi[ii];
       slope += q * s.b;
-      shares_converged =
-          shares_converged && !extended && std::abs(phi[ii]) <= kTolerance * set.sum;
+      shares_converged = shares_converged && !extended && std::abs(phi[ii]) <= kTolerance * set.sum;
     }
     if (!(slope > 0)) return false;
     if (shares_converged && std::abs(psi) <= beta_ * kTolerance) {
@@ -512,8 +511,7 @@ bool GroupedReturn::solve_jointly(const Trial& t, const IsotropicHardeningLaw& y
 // safeguarded Newton on the distance from the surface with Halley's correction, each iterate
 // solving every share equation for its Δλ (solve_share).
 bool GroupedReturn::solve_multiplier(const Trial& t, const IsotropicHardeningLaw& yield,
-                                     double equivalent_old, Iterate& it,
-                                     double& multiplier) const {
+                                     double equivalent_old, Iterate& it, double& multiplier) const {
   YieldSample y = yield.at(equivalent_old);
   double dl = 0, lo = 0, hi = std::numeric_limits<double>::infinity();
   double next = radial_guess(t, it, y, root_of_share_sum(it.sum));
@@ -548,17 +546,15 @@ bool GroupedReturn::solve_multiplier(const Trial& t, const IsotropicHardeningLaw
     // Halley's step: Newton's quadratic convergence has a large constant here (z_i is far from
     // linear in Δλ). g″ is exact for β = 1.5 (Share::curvature) and taken from the slopes at this
     // and the previous iterate otherwise; either saves about one evaluation per return. With
-    // Newton's step −g/g′ and φ = 1 − g g″/(2 g′²), Halley's step −g/(g′ φ) = −2 g g′/(2 g′² − g g″)
-    // takes one division. Outside φ ∈ [1/2, 2] (2 g′² φ outside [g′², 4 g′²]; a NaN curvature
+    // Newton's step −g/g′ and φ = 1 − g g″/(2 g′²), Halley's step −g/(g′ φ) = −2 g g′/(2 g′² − g
+    // g″) takes one division. Outside φ ∈ [1/2, 2] (2 g′² φ outside [g′², 4 g′²]; a NaN curvature
     // included) the correction is not trusted and the step stays Newton's.
-    const double curvature = std::isnan(d.curvature)
-                                 ? (d.slope - previous.slope) / (dl - previous_dl)
-                                 : d.curvature;
+    const double curvature =
+        std::isnan(d.curvature) ? (d.slope - previous.slope) / (dl - previous_dl) : d.curvature;
     const double slope2 = d.slope * d.slope;
     const double halley = 2 * slope2 - d.value * curvature;
-    const double step = halley >= slope2 && halley <= 4 * slope2
-                            ? -2 * d.value * d.slope / halley
-                            : -d.value / d.slope;
+    const double step = halley >= slope2 && halley <= 4 * slope2 ? -2 * d.value * d.slope / halley
+                                                                 : -d.value / d.slope;
     previous = d;
     previous_dl = dl;
     if (std::abs(step) <= 4 * kEpsilon * dl && std::abs(psi) <= 1e3 * kTolerance) {
