@@ -342,10 +342,10 @@ GroupedReturn::GroupSet GroupedReturn::last_to_clip(unsigned candidates, const T
 // slope n_i = ζ_i^(β−1)/R_i; contribution i would need Δλ_i = s_i (1 − 1/μ)/(K_i n_i). Their
 // mean weighted by ζ_i^β is (1 − 1/μ)·A with A = Σ_i ζ_i s_i R_i/K_i, which is linear in Δλ:
 // Δλ = A (P^tr − F_y)/(P^tr + A h). Exact for a single contribution with linear hardening.
-double GroupedReturn::radial_guess(const Trial& t, const Iterate& at_zero, const YieldSample& y,
+double GroupedReturn::radial_guess(const Trial& t, double share_sum, const YieldSample& y,
                                    double root) const {
   // P^tr/F_y = S^(1/β) = S/S^γ (root = S^γ).
-  const double p_trial = y.value * at_zero.sum / root;
+  const double p_trial = y.value * share_sum / root;
   double a = 0;
   for (int i = 0; i < contribution_count_; ++i) {
     const auto ii = static_cast<std::size_t>(i);
@@ -387,17 +387,22 @@ CoupledReturn GroupedReturn::solve(const IsotropicHardeningLaw& yield, const Vec
   }
   // §6.4 step 1: at Δλ = 0 the shares are E_i^tr/(R_i F_y), so S > 1 ⇔ P(F^tr) > F_y. Most
   // updates end here, before any of the return's bookkeeping.
-  if (!(trial_share_sum(t, y.value) > 1)) return out;
+  const double share_sum = trial_share_sum(t, y.value);
+  if (!(share_sum > 1)) return out;
   resolve_groups(t);
-  Iterate it;
-  evaluate(t, 0, y, it);
-  if (!(it.sum > 1)) return out;  // at round-off from the surface: the same test, exactly
   out.plastic = true;
-
+  Iterate it;
   double dl = 0;
-  const bool ok =
-      (exponent_ == Exponent::ThreeHalves && solve_jointly(t, yield, equivalent_old, it, dl)) ||
-      solve_multiplier(t, yield, equivalent_old, it, dl);
+  bool ok = exponent_ == Exponent::ThreeHalves &&
+            solve_jointly(t, yield, equivalent_old, share_sum, it, dl);
+  if (!ok) {
+    evaluate(t, 0, y, it);
+    if (!(it.sum > 1)) {  // at round-off from the surface: the same test, exactly
+      out.plastic = false;
+      return out;
+    }
+    ok = solve_multiplier(t, yield, equivalent_old, it, dl);
+  }
   if (!ok || !(it.slope > 0)) {
     out.converged = false;
     return out;
@@ -433,11 +438,11 @@ CoupledReturn GroupedReturn::solve(const IsotropicHardeningLaw& yield, const Vec
 // safe: a non-positive iterate, a vanished yield size, or no convergence in kJointIterations
 // (an active set that cycles on a kink); solve_multiplier then takes over.
 bool GroupedReturn::solve_jointly(const Trial& t, const IsotropicHardeningLaw& yield,
-                                  double equivalent_old, Iterate& it, double& multiplier) const {
+                                  double equivalent_old, double share_sum, Iterate& it,
+                                  double& multiplier) const {
   constexpr int kJointIterations = 12;  // it takes 3–7 steps where it converges at all
   YieldSample y = yield.at(equivalent_old);
-  const double root = root_of_share_sum(it.sum);  // S^(1/3) at Δλ = 0
-  double dl = radial_guess(t, it, y, root);
+  double dl = radial_guess(t, share_sum, y, root_of_share_sum(share_sum));
   std::array<double, kMaxGroups> w{};
   if (dl > 0) {
     const YieldSample y0 = yield.at(equivalent_old + dl);
@@ -514,7 +519,7 @@ bool GroupedReturn::solve_multiplier(const Trial& t, const IsotropicHardeningLaw
                                      double equivalent_old, Iterate& it, double& multiplier) const {
   YieldSample y = yield.at(equivalent_old);
   double dl = 0, lo = 0, hi = std::numeric_limits<double>::infinity();
-  double next = radial_guess(t, it, y, root_of_share_sum(it.sum));
+  double next = radial_guess(t, it.sum, y, root_of_share_sum(it.sum));
   Distance previous = distance(it);
   double previous_dl = 0;
   for (int iteration = 0; iteration < kMaxIterations; ++iteration) {

@@ -78,12 +78,11 @@ class GroupedReturn {
   void evaluate(const Trial& t, double multiplier, const YieldSample& y, Iterate& it) const;
   double root_of_share_sum(double s) const;
   Distance distance(const Iterate& it) const;
-  // `root`: S^γ of the shares at Δλ = 0 in `at_zero`.
-  double radial_guess(const Trial& t, const Iterate& at_zero, const YieldSample& y,
-                      double root) const;
-  // β = 1.5: Δλ and the shares at it in `it` (the shares at Δλ = 0 on entry, kept on failure).
+  // From S = Σ z_i^β at Δλ = 0 and root = S^γ.
+  double radial_guess(const Trial& t, double share_sum, const YieldSample& y, double root) const;
+  // β = 1.5: Δλ and the shares at it in `it` (left as it is on failure), from S at Δλ = 0.
   bool solve_jointly(const Trial& t, const IsotropicHardeningLaw& yield, double equivalent_old,
-                     Iterate& it, double& multiplier) const;
+                     double share_sum, Iterate& it, double& multiplier) const;
   // Any β, the same by Newton–Halley on Δλ alone with every share solved at each iterate.
   bool solve_multiplier(const Trial& t, const IsotropicHardeningLaw& yield, double equivalent_old,
                         Iterate& it, double& multiplier) const;
