@@ -578,51 +578,60 @@ bool GroupedReturn::solve_multiplier(const Trial& t, const IsotropicHardeningLaw
 //        = Y_i dΔλ + X_i N_i·dt.
 // So row c of ∂F/∂t is (T_g/r_g) e_c + t_c [κ_g y_i/r_g² ∇r_g − (κ_g/r_g)(Y_i W + X_i N_i)] with
 // W = Σ_j (q_j/Q) N_j. A clipped group keeps F = 0 and does not enter E_i (zero rows and
-// columns, as held kinks of closest_point_tangent); a group without flow keeps F = t.
+// columns, as held kinks of closest_point_tangent); a group without flow keeps F = t. Each
+// component is in one group at most, so N (the N_j side by side) and W are vectors over the
+// components, and the tangent is formed entry by entry, symmetric by construction.
 void GroupedReturn::tangent(const Vector6& trial, const Trial& t, const Iterate& it, double dl,
                             Matrix6& out) const {
-  // ∇r of the active groups times K (∂t/∂u = K), and its parts per contribution.
-  std::array<Vector6, kMaxGroups> n;
-  Vector6 w = Vector6::Zero();
-  std::array<double, kMaxGroups> x, yy;
+  std::array<double, kMaxGroups> x, yy, weight;  // X_i, Y_i, q_i/Q
   for (int i = 0; i < contribution_count_; ++i) {
     const auto ii = static_cast<std::size_t>(i);
     const Share& s = it.share[ii];
-    n[ii].setZero();
-    for_each_bit(s.active, [&](int h) {
-      const Group& gh = groups_[static_cast<std::size_t>(h)];
-      const double inv_r = t.inverse[static_cast<std::size_t>(h)];
-      for_each_bit(gh.components, [&](int e) {
-        n[ii][e] = gh.coefficient[e] * gh.coefficient[e] * trial[e] * inv_r * stiffness_[e];
-      });
-    });
-    w += (beta_ * s.zb1 * s.inv_a / it.slope) * n[ii];
     const double inv_scale = contributions_[ii].inverse_scale;
     x[ii] = dl * s.dzb1_inv_a * inv_scale;
     yy[ii] = s.zb1 * inv_scale - x[ii] * s.b;
+    weight[ii] = beta_ * s.zb1 * s.inv_a / it.slope;
   }
-  Matrix6 d = Matrix6::Zero();
+  // Per component c of group g and contribution i: N_c and W_c (∇r times K, ∂t/∂u = K), the
+  // row's factor −t_c κ_g/r_g, y_i/r_g, and the coefficient T_g/r_g k_c of e_c.
+  Vector6 n = Vector6::Zero(), w = Vector6::Zero(), row = Vector6::Zero();
+  Vector6 own = Vector6::Zero(), diagonal = Vector6::Zero();
   for (int c = 0; c < 6; ++c) {
     const int g = group_of_[static_cast<std::size_t>(c)];
     if (g < 0) continue;
     const Group& gg = groups_[static_cast<std::size_t>(g)];
     const auto i = static_cast<std::size_t>(gg.contribution);
     const Share& s = it.share[i];
-    const double rg = t.resultant[static_cast<std::size_t>(g)];
-    if (rg <= 0) {
-      d(c, c) = stiffness_[c];
+    if (t.resultant[static_cast<std::size_t>(g)] <= 0) {
+      diagonal[c] = stiffness_[c];
       continue;
     }
     if (!((s.active >> g) & 1u)) continue;  // clipped
     const double inv_rg = t.inverse[static_cast<std::size_t>(g)];
     const double kr = gg.kappa * inv_rg;
-    d.row(c) = (-trial[c] * kr) * (yy[i] * w + x[i] * n[i]).transpose();
-    const double own = trial[c] * kr * s.y * inv_rg;
-    for_each_bit(gg.components, [&](int e) { d(c, e) += own * n[i][e]; });
-    d(c, c) += (1 - kr * s.y) * stiffness_[c];
+    n[c] = gg.coefficient[c] * gg.coefficient[c] * trial[c] * inv_rg * stiffness_[c];
+    w[c] = weight[i] * n[c];
+    row[c] = -trial[c] * kr;
+    own[c] = s.y * inv_rg;
+    diagonal[c] = (1 - kr * s.y) * stiffness_[c];
   }
+  auto entry = [&](int c, int e) {  // (∂F/∂u)_ce before symmetrising
+    const int g = group_of_[static_cast<std::size_t>(c)];
+    const int h = group_of_[static_cast<std::size_t>(e)];
+    if (g < 0 || h < 0) return 0.0;
+    const int i = groups_[static_cast<std::size_t>(g)].contribution;
+    double v = yy[static_cast<std::size_t>(i)] * w[e];
+    if (groups_[static_cast<std::size_t>(h)].contribution == i) {
+      v += x[static_cast<std::size_t>(i)] * n[e];
+    }
+    if (h == g) v -= own[c] * n[e];
+    return row[c] * v;
+  };
   // Symmetric in exact arithmetic (associated flow); symmetrising removes the round-off.
-  out = 0.5 * (d + d.transpose());
+  for (int c = 0; c < 6; ++c) {
+    out(c, c) = entry(c, c) + diagonal[c];
+    for (int e = c + 1; e < 6; ++e) out(c, e) = out(e, c) = 0.5 * (entry(c, e) + entry(e, c));
+  }
 }
 
 }  // namespace clinch
