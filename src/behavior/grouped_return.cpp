@@ -51,10 +51,21 @@ struct GroupedReturn::GroupSet {
 // What a return needs of the trial force: the group resultants r_g and, per contribution, its
 // groups with r_g > 0.
 struct GroupedReturn::Trial {
+  Vector6 force;                             // F^tr
   std::array<double, kMaxGroups> resultant;  // r_g
   std::array<double, kMaxGroups> inverse;    // 1/r_g (0 for r_g = 0)
-  std::array<double, kMaxGroups> reach;      // r_g/κ_g: the y_i at which group g clips
+  std::array<double, kMaxGroups> reach;      // the y_i at which group g clips (r_g/κ_g if uniform)
+  // κ_g of a uniform group; of a non-uniform one −dT_g/dy at y = 0, Σ_c a_c κ_c/r_g² (a_c below)
+  std::array<double, kMaxGroups> kappa;
   std::array<GroupSet, kMaxGroups> positive;
+};
+
+// E_i and K_i = −dE_i/dy_i of one contribution at a given y_i, from the groups that stay
+// positive (`mask`); `extended` where all have clipped and the last one's piece is continued.
+struct GroupedReturn::Response {
+  double force = 0, rate = 0;
+  unsigned mask = 0;
+  bool extended = false;
 };
 
 // One contribution at a given Δλ: its share z = E_i/(R_i F_y), z^(β−1), the derivatives of its
@@ -73,6 +84,8 @@ struct GroupedReturn::Share {
 
 struct GroupedReturn::Iterate {
   std::array<Share, kMaxGroups> share;
+  // Per group: T_g and −dT_g/dy_i at the iterate (0 where clipped).
+  std::array<double, kMaxGroups> group_force{}, group_rate{};
   double sum = 0;        // S = Σ z_i^β
   double slope = 0;      // Q = −dS/dΔλ = Σ β z_i^(β−1) (∂Φ_i/∂Δλ)/(∂Φ_i/∂z)
   double curvature = 0;  // d²S/dΔλ² (NaN where not formed)
@@ -111,15 +124,17 @@ std::optional<GroupedReturn> GroupedReturn::create(const ConnectorPotential& pot
     for (int c = 0; c < 6; ++c) {
       if (!((g.components >> c) & 1u)) continue;
       const double kappa = k(c, c) * g.coefficient[c] * g.coefficient[c];
+      if (!(kappa > 0)) return std::nullopt;
+      r.component_kappa[c] = kappa;
       if (first) {
         r.kappa = kappa;
         first = false;
       } else if (std::abs(kappa - r.kappa) > 1e-12 * r.kappa) {
-        return std::nullopt;  // the flow would not be radial in this group
+        r.uniform = false;  // the flow is not radial in this group
       }
     }
-    if (!(r.kappa > 0)) return std::nullopt;
     r.inverse_kappa = 1 / r.kappa;
+    out.nonuniform_ = out.nonuniform_ || !r.uniform;
     for (int c = 0; c < 6; ++c) {
       if ((g.components >> c) & 1u)
         out.group_of_[static_cast<std::size_t>(c)] = static_cast<std::int8_t>(out.group_count_);
@@ -142,6 +157,8 @@ std::optional<GroupedReturn> GroupedReturn::create(const ConnectorPotential& pot
                   : out.beta_ == 1.5 ? Exponent::ThreeHalves
                   : out.beta_ == 2.0 ? Exponent::Two
                                      : Exponent::General;
+  // A non-uniform group has no closed-form share: only the joint Newton (β = 1.5) takes it.
+  if (out.nonuniform_ && out.exponent_ != Exponent::ThreeHalves) return std::nullopt;
   return out;
 }
 
@@ -161,6 +178,7 @@ double GroupedReturn::root_of_share_sum(double s) const {
 }
 
 void GroupedReturn::resolve_resultants(const Vector6& trial, Trial& t) const {
+  t.force = trial;
   for (int g = 0; g < group_count_; ++g) {
     const Group& gr = groups_[static_cast<std::size_t>(g)];
     double v = 0;
@@ -206,7 +224,21 @@ void GroupedReturn::resolve_groups(Trial& t) const {
     const auto gg = static_cast<std::size_t>(g);
     const double rg = t.resultant[gg];
     t.inverse[gg] = rg > 0 ? 1 / rg : 0.0;
-    t.reach[gg] = rg * groups_[gg].inverse_kappa;
+    const Group& gr = groups_[gg];
+    if (gr.uniform) {
+      t.reach[gg] = rg * gr.inverse_kappa;
+      t.kappa[gg] = gr.kappa;
+      continue;
+    }
+    // The group clips where its subgradient ζ_c = C_c t_c/(κ_c y) reaches |ζ| = 1.
+    double reach2 = 0, weighted = 0;
+    for_each_bit(gr.components, [&](int c) {
+      const double a = gr.coefficient[c] * gr.coefficient[c] * t.force[c] * t.force[c];
+      reach2 += a / (gr.component_kappa[c] * gr.component_kappa[c]);
+      weighted += a * gr.component_kappa[c];
+    });
+    t.reach[gg] = std::sqrt(reach2);
+    t.kappa[gg] = rg > 0 ? weighted * t.inverse[gg] * t.inverse[gg] : gr.kappa;
   }
   // r_g > 0 ⇔ r_g/κ_g > 0 (κ_g > 0).
   for (int i = 0; i < contribution_count_; ++i) {
@@ -223,7 +255,7 @@ GroupedReturn::GroupSet GroupedReturn::reaching_beyond(unsigned candidates, cons
     if (!(t.reach[gg] > y)) return;  // clipped at y
     set.mask |= 1u << g;
     set.sum += t.resultant[gg];
-    set.kappa += groups_[gg].kappa;
+    set.kappa += t.kappa[gg];
     set.first_clip = std::min(set.first_clip, t.reach[gg]);
   });
   return set;
@@ -240,9 +272,96 @@ GroupedReturn::GroupSet GroupedReturn::last_to_clip(unsigned candidates, const T
   const auto gg = static_cast<std::size_t>(last);
   set.mask = 1u << last;
   set.sum = t.resultant[gg];
-  set.kappa = groups_[gg].kappa;
+  set.kappa = t.kappa[gg];
   set.first_clip = t.reach[gg];
   return set;
+}
+
+// A NORM group whose k_c C_c² = κ_c differ: F_c = t_c T/(T + κ_c y) from the flow rule, so its
+// resultant T = |C∘F| solves h(T) = Σ_c a_c/(T + κ_c y)² = 1 (a_c = C_c² t_c²) for y below the
+// clip. h is convex and decreasing in T, so Newton from the left end of the bracket
+// [r − κ_max y, r − κ_min y] (at most 0 below) rises to the root monotonically, quadratically.
+// Returns T and −dT/dy = Σ a_c κ_c/s_c³ / Σ a_c/s_c³ (s_c = T + κ_c y).
+[[gnu::noinline]] std::pair<double, double> GroupedReturn::norm_group_response(int group,
+                                                                               const Trial& t,
+                                                                               double y) const {
+  const Group& gr = groups_[static_cast<std::size_t>(group)];
+  double kappa_max = 0;
+  for_each_bit(gr.components,
+               [&](int c) { kappa_max = std::max(kappa_max, gr.component_kappa[c]); });
+  const double r = t.resultant[static_cast<std::size_t>(group)];
+  double force = std::max(0.0, r - kappa_max * y);
+  double slope_sum = 0, rate_sum = 0;  // Σ a_c/s_c³, Σ a_c κ_c/s_c³
+  for (int k = 0; k < 60; ++k) {
+    double h = 0;
+    slope_sum = rate_sum = 0;
+    for_each_bit(gr.components, [&](int c) {
+      const double coefficient = gr.coefficient[c] * t.force[c];
+      const double inv_s = 1 / (force + gr.component_kappa[c] * y);
+      const double term = coefficient * coefficient * inv_s * inv_s;
+      h += term;
+      slope_sum += term * inv_s;
+      rate_sum += term * inv_s * gr.component_kappa[c];
+    });
+    const double step = (h - 1) / (2 * slope_sum);  // −(h − 1)/h′, h′ = −2 Σ a_c/s_c³
+    force += step;
+    if (!(step > 4 * kEpsilon * (force + y * kappa_max))) break;
+  }
+  return {force, rate_sum / slope_sum};
+}
+
+template <bool kAllUniform>
+[[gnu::always_inline]] inline GroupedReturn::Response GroupedReturn::respond(int contribution,
+                                                                             const Trial& t,
+                                                                             double y,
+                                                                             Iterate& it) const {
+  const auto ii = static_cast<std::size_t>(contribution);
+  Response out;
+  if constexpr (kAllUniform) {  // linear pieces: T_g = r_g − κ_g y (filled in after the solve)
+    GroupSet set = reaching_beyond(t.positive[ii].mask, t, y);
+    out.extended = !set.mask && t.positive[ii].mask;
+    if (out.extended) set = last_to_clip(t.positive[ii].mask, t);
+    out.force = set.sum - set.kappa * y;
+    out.rate = set.kappa;
+    out.mask = set.mask;
+    return out;
+  }
+  for_each_bit(contributions_[ii].groups, [&](int g) {
+    const auto gg = static_cast<std::size_t>(g);
+    it.group_force[gg] = it.group_rate[gg] = 0;
+    if (!(t.reach[gg] > y)) return;  // clipped at y (or no flow)
+    const Group& gr = groups_[gg];
+    const auto [force, rate] = gr.uniform ? std::pair{t.resultant[gg] - gr.kappa * y, gr.kappa}
+                                          : norm_group_response(g, t, y);
+    it.group_force[gg] = force;
+    it.group_rate[gg] = rate;
+    out.force += force;
+    out.rate += rate;
+    out.mask |= 1u << g;
+  });
+  if (out.mask || !t.positive[ii].mask) return out;
+  // Past the last clip the iterate has overshot (the solution keeps E_i > 0 for β > 1): that
+  // group's piece is continued linearly from its clip, with the slope it has there.
+  const GroupSet last = last_to_clip(t.positive[ii].mask, t);
+  const int g = std::countr_zero(last.mask);
+  const auto gg = static_cast<std::size_t>(g);
+  const Group& gr = groups_[gg];
+  double rate = gr.kappa;
+  if (!gr.uniform) {  // −dT/dy at T = 0: Σ a_c/κ_c² / Σ a_c/κ_c³
+    double num = 0, den = 0;
+    for_each_bit(gr.components, [&](int c) {
+      const double a = gr.coefficient[c] * gr.coefficient[c] * t.force[c] * t.force[c];
+      const double inv_k = 1 / gr.component_kappa[c];
+      num += a * inv_k * inv_k;
+      den += a * inv_k * inv_k * inv_k;
+    });
+    rate = num / den;
+  }
+  out.force = rate * (t.reach[gg] - y);
+  out.rate = rate;
+  out.mask = last.mask;
+  out.extended = true;
+  return out;
 }
 
 [[gnu::always_inline]] inline GroupedReturn::Share GroupedReturn::solve_share(
@@ -393,8 +512,15 @@ CoupledReturn GroupedReturn::solve(const IsotropicHardeningLaw& yield, const Vec
   out.plastic = true;
   Iterate it;
   double dl = 0;
-  bool ok = exponent_ == Exponent::ThreeHalves &&
-            solve_jointly(t, yield, equivalent_old, share_sum, it, dl);
+  const bool joint =
+      exponent_ == Exponent::ThreeHalves &&
+      (nonuniform_ ? solve_jointly<false>(t, yield, equivalent_old, share_sum, it, dl)
+                   : solve_jointly<true>(t, yield, equivalent_old, share_sum, it, dl));
+  bool ok = joint;
+  if (!ok && nonuniform_) {  // no closed-form shares: the general return takes over
+    out.converged = false;
+    return out;
+  }
   if (!ok) {
     evaluate(t, 0, y, it);
     if (!(it.sum > 1)) {  // at round-off from the surface: the same test, exactly
@@ -408,17 +534,35 @@ CoupledReturn GroupedReturn::solve(const IsotropicHardeningLaw& yield, const Vec
     return out;
   }
 
-  // The forces: every group shrunk radially to T_g (zero where clipped).
+  if (!nonuniform_) {  // every group uniform: T_g = r_g − κ_g y_i
+    for (int g = 0; g < group_count_; ++g) {
+      const auto gg = static_cast<std::size_t>(g);
+      const Share& s = it.share[static_cast<std::size_t>(groups_[gg].contribution)];
+      const bool active = (s.active >> g) & 1u;
+      it.group_force[gg] = active ? std::max(0.0, t.resultant[gg] - groups_[gg].kappa * s.y) : 0;
+      it.group_rate[gg] = active ? groups_[gg].kappa : 0;
+    }
+  }
+  // The forces F_c = t_c T_g/(T_g + κ_c y_i) (zero where clipped; T_g + κ y_i = r_g where
+  // uniform, a radial shrink).
   for (int g = 0; g < group_count_; ++g) {
-    const Group& gr = groups_[static_cast<std::size_t>(g)];
+    const auto gg = static_cast<std::size_t>(g);
+    const Group& gr = groups_[gg];
     const Share& s = it.share[static_cast<std::size_t>(gr.contribution)];
-    const double rg = t.resultant[static_cast<std::size_t>(g)];
-    if (rg <= 0) continue;  // no flow: an inactive Macaulay term or a zero resultant
-    const double ratio =
-        (s.active >> g) & 1u
-            ? std::max(0.0, 1 - gr.kappa * s.y * t.inverse[static_cast<std::size_t>(g)])
-            : 0.0;
-    for_each_bit(gr.components, [&](int k) { out.force[k] = trial[k] * ratio; });
+    if (t.resultant[gg] <= 0) continue;  // no flow: an inactive Macaulay term or a zero resultant
+    if (!((s.active >> g) & 1u)) {       // clipped
+      for_each_bit(gr.components, [&](int k) { out.force[k] = 0; });
+      continue;
+    }
+    const double force = it.group_force[gg];
+    if (gr.uniform) {
+      const double ratio = force * t.inverse[gg];
+      for_each_bit(gr.components, [&](int k) { out.force[k] = trial[k] * ratio; });
+      continue;
+    }
+    for_each_bit(gr.components, [&](int k) {
+      out.force[k] = trial[k] * force / (force + gr.component_kappa[k] * s.y);
+    });
   }
   out.multiplier = dl;
   if (want_tangent) tangent(trial, t, it, dl, out.tangent);
@@ -437,6 +581,7 @@ CoupledReturn GroupedReturn::solve(const IsotropicHardeningLaw& yield, const Vec
 // that group's linear piece. It gives up (false, `it` unchanged) where the plain Newton is not
 // safe: a non-positive iterate, a vanished yield size, or no convergence in kJointIterations
 // (an active set that cycles on a kink); solve_multiplier then takes over.
+template <bool kAllUniform>
 bool GroupedReturn::solve_jointly(const Trial& t, const IsotropicHardeningLaw& yield,
                                   double equivalent_old, double share_sum, Iterate& it,
                                   double& multiplier) const {
@@ -470,12 +615,10 @@ bool GroupedReturn::solve_jointly(const Trial& t, const IsotropicHardeningLaw& y
       const double wi = w[ii];
       if (!(wi > 0)) return false;
       s.y = dl * wi * c.inverse_scale;
-      GroupSet set = reaching_beyond(t.positive[ii].mask, t, s.y);
-      const bool extended = !set.mask;  // not a solution: that group's T_g would be negative
-      if (extended) set = last_to_clip(t.positive[ii].mask, t);
+      const Response e = respond<kAllUniform>(i, t, s.y, next);
       const double rf = c.scale * y.value;
-      const double kr = set.kappa * c.inverse_scale;  // K_i/R_i
-      phi[ii] = (rf * wi + dl * kr) * wi - set.sum;
+      const double kr = e.rate * c.inverse_scale;  // K_i/R_i
+      phi[ii] = rf * wi * wi - e.force;
       const double inv_a = 1 / (2 * rf * wi + dl * kr);  // 1/(∂Φ_i/∂w)
       s.z = wi * wi;
       s.zb1 = wi;
@@ -483,18 +626,22 @@ bool GroupedReturn::solve_jointly(const Trial& t, const IsotropicHardeningLaw& y
       s.dzb1_inv_a = inv_a;
       s.b = (c.scale * y.slope * wi + kr) * wi;  // ∂Φ_i/∂Δλ
       s.curvature = std::numeric_limits<double>::quiet_NaN();
-      s.active = set.mask;
+      s.active = e.mask;
       const double q = 3 * s.z * inv_a;  // ∂(w_i³)/∂w_i / (∂Φ_i/∂w)
       psi += s.z * wi;
       weighted_residual += q * phi[ii];
       slope += q * s.b;
-      shares_converged = shares_converged && !extended && std::abs(phi[ii]) <= kTolerance * set.sum;
+      // An extended piece is not a solution: that group's T_g would be negative.
+      shares_converged =
+          shares_converged && !e.extended && std::abs(phi[ii]) <= kTolerance * t.positive[ii].sum;
     }
     if (!(slope > 0)) return false;
     if (shares_converged && std::abs(psi) <= beta_ * kTolerance) {
       for (int i = 0; i < contribution_count_; ++i) {
         it.share[static_cast<std::size_t>(i)] = next.share[static_cast<std::size_t>(i)];
       }
+      it.group_force = next.group_force;
+      it.group_rate = next.group_rate;
       it.sum = psi + 1;
       it.slope = slope;  // Σ β z^(β−1) b/(∂Φ/∂z) = Σ 3 w² b/(∂Φ/∂w)
       multiplier = dl;
@@ -502,11 +649,28 @@ bool GroupedReturn::solve_jointly(const Trial& t, const IsotropicHardeningLaw& y
     }
     // Σ 3 w_i² dw_i = −(S − 1) with dw_i = −(Φ_i + b_i dΔλ)/(∂Φ_i/∂w).
     const double step = (psi - weighted_residual) / slope;
-    dl += step;
+    std::array<double, kMaxGroups> dw;
     for (int i = 0; i < contribution_count_; ++i) {
       const auto ii = static_cast<std::size_t>(i);
-      const Share& s = next.share[ii];
-      w[ii] -= (phi[ii] + s.b * step) * s.dzb1_inv_a;
+      dw[ii] = -(phi[ii] + next.share[ii].b * step) * next.share[ii].dzb1_inv_a;
+    }
+    // Without the nested solve to fall back on (a non-uniform group), a step that would take
+    // Δλ or a w_i below a tenth of its value (the solution has both positive) is shortened to
+    // that; the direction stays Newton's. (It costs the uniform case a tenth of its time, and
+    // there a non-positive iterate hands over to the nested solve instead.)
+    double length = 1;
+    if constexpr (!kAllUniform) {
+      if (step < -0.9 * dl) length = -0.9 * dl / step;
+      for (int i = 0; i < contribution_count_; ++i) {
+        const auto ii = static_cast<std::size_t>(i);
+        if (t.positive[ii].mask && length * dw[ii] < -0.9 * w[ii]) {
+          length = -0.9 * w[ii] / dw[ii];
+        }
+      }
+    }
+    dl += length * step;
+    for (int i = 0; i < contribution_count_; ++i) {
+      w[static_cast<std::size_t>(i)] += length * dw[static_cast<std::size_t>(i)];
     }
   }
   return false;
@@ -578,9 +742,13 @@ bool GroupedReturn::solve_multiplier(const Trial& t, const IsotropicHardeningLaw
 //        = Y_i dΔλ + X_i N_i·dt.
 // So row c of ∂F/∂t is (T_g/r_g) e_c + t_c [κ_g y_i/r_g² ∇r_g − (κ_g/r_g)(Y_i W + X_i N_i)] with
 // W = Σ_j (q_j/Q) N_j. A clipped group keeps F = 0 and does not enter E_i (zero rows and
-// columns, as held kinks of closest_point_tangent); a group without flow keeps F = t. Each
-// component is in one group at most, so N (the N_j side by side) and W are vectors over the
-// components, and the tangent is formed entry by entry, symmetric by construction.
+// columns, as held kinks of closest_point_tangent); a group without flow keeps F = t.
+// A non-uniform NORM group has F_c = t_c T_g/s_c with s_c = T_g + κ_c y_i, and from
+// Σ_c a_c/s_c² = 1, dT_g = ∇T_g·dt − κ̄_g dy_i with ∇T_g = (C²∘t/s²)/Σ a/s³ and κ̄_g = −dT_g/dy;
+// then dF_c = (T_g/s_c) dt_c + t_c κ_c/s_c² (y_i ∇T_g·dt − (T_g + κ̄_g y_i) dy_i), N_i sums
+// ∇T_g, and with s_c = r_g, κ̄_g = κ_g this is the uniform row above. Each component is in one
+// group at most, so N and W are vectors over the components, and the tangent is formed entry by
+// entry, symmetric by construction.
 void GroupedReturn::tangent(const Vector6& trial, const Trial& t, const Iterate& it, double dl,
                             Matrix6& out) const {
   std::array<double, kMaxGroups> x, yy, weight;  // X_i, Y_i, q_i/Q
@@ -592,28 +760,51 @@ void GroupedReturn::tangent(const Vector6& trial, const Trial& t, const Iterate&
     yy[ii] = s.zb1 * inv_scale - x[ii] * s.b;
     weight[ii] = beta_ * s.zb1 * s.inv_a / it.slope;
   }
-  // Per component c of group g and contribution i: N_c and W_c (∇r times K, ∂t/∂u = K), the
-  // row's factor −t_c κ_g/r_g, y_i/r_g, and the coefficient T_g/r_g k_c of e_c.
+  // Per component c of group g and contribution i: N_c and W_c (∇T_g times K, ∂t/∂u = K), the
+  // factors of dy_i and of ∇T_g·dt in row c, and the coefficient T_g/s_c k_c of e_c.
   Vector6 n = Vector6::Zero(), w = Vector6::Zero(), row = Vector6::Zero();
   Vector6 own = Vector6::Zero(), diagonal = Vector6::Zero();
-  for (int c = 0; c < 6; ++c) {
-    const int g = group_of_[static_cast<std::size_t>(c)];
-    if (g < 0) continue;
-    const Group& gg = groups_[static_cast<std::size_t>(g)];
-    const auto i = static_cast<std::size_t>(gg.contribution);
+  for (int g = 0; g < group_count_; ++g) {
+    const auto gg = static_cast<std::size_t>(g);
+    const Group& gr = groups_[gg];
+    const auto i = static_cast<std::size_t>(gr.contribution);
     const Share& s = it.share[i];
-    if (t.resultant[static_cast<std::size_t>(g)] <= 0) {
-      diagonal[c] = stiffness_[c];
+    if (t.resultant[gg] <= 0) {
+      for_each_bit(gr.components, [&](int c) { diagonal[c] = stiffness_[c]; });
       continue;
     }
     if (!((s.active >> g) & 1u)) continue;  // clipped
-    const double inv_rg = t.inverse[static_cast<std::size_t>(g)];
-    const double kr = gg.kappa * inv_rg;
-    n[c] = gg.coefficient[c] * gg.coefficient[c] * trial[c] * inv_rg * stiffness_[c];
-    w[c] = weight[i] * n[c];
-    row[c] = -trial[c] * kr;
-    own[c] = s.y * inv_rg;
-    diagonal[c] = (1 - kr * s.y) * stiffness_[c];
+    const double force = it.group_force[gg];
+    if (gr.uniform) {  // s_c = r_g, Σ a_c/s_c³ = 1/r_g, κ̄_g = κ_g
+      const double inv_r = t.inverse[gg];
+      const double kr = gr.kappa * inv_r;
+      for_each_bit(gr.components, [&](int c) {
+        n[c] = gr.coefficient[c] * gr.coefficient[c] * trial[c] * inv_r * stiffness_[c];
+        w[c] = weight[i] * n[c];
+        row[c] = -trial[c] * kr;
+        own[c] = trial[c] * kr * s.y * inv_r;
+        diagonal[c] = force * inv_r * stiffness_[c];
+      });
+      continue;
+    }
+    Vector6 inverse_s = Vector6::Zero();  // 1/s_c
+    double scale = 0;                     // 1/Σ_c a_c/s_c³
+    for_each_bit(gr.components, [&](int c) {
+      const double a = gr.coefficient[c] * gr.coefficient[c] * trial[c] * trial[c];
+      inverse_s[c] = 1 / (force + gr.component_kappa[c] * s.y);
+      scale += a * inverse_s[c] * inverse_s[c] * inverse_s[c];
+    });
+    scale = 1 / scale;
+    for_each_bit(gr.components, [&](int c) {
+      const double inv_s = inverse_s[c];
+      const double kappa_s2 = gr.component_kappa[c] * inv_s * inv_s;
+      n[c] =
+          gr.coefficient[c] * gr.coefficient[c] * trial[c] * inv_s * inv_s * scale * stiffness_[c];
+      w[c] = weight[i] * n[c];
+      row[c] = -trial[c] * kappa_s2 * (force + it.group_rate[gg] * s.y);
+      own[c] = trial[c] * kappa_s2 * s.y;
+      diagonal[c] = force * inv_s * stiffness_[c];
+    });
   }
   auto entry = [&](int c, int e) {  // (∂F/∂u)_ce before symmetrising
     const int g = group_of_[static_cast<std::size_t>(c)];
@@ -624,8 +815,7 @@ void GroupedReturn::tangent(const Vector6& trial, const Trial& t, const Iterate&
     if (groups_[static_cast<std::size_t>(h)].contribution == i) {
       v += x[static_cast<std::size_t>(i)] * n[e];
     }
-    if (h == g) v -= own[c] * n[e];
-    return row[c] * v;
+    return row[c] * v + (h == g ? own[c] * n[e] : 0.0);
   };
   // Symmetric in exact arithmetic (associated flow); symmetrising removes the round-off.
   for (int c = 0; c < 6; ++c) {

@@ -18,6 +18,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <utility>
 
 #include "src/behavior/connector_potential.hpp"
 #include "src/behavior/isotropic_hardening.hpp"
@@ -46,8 +47,10 @@ class GroupedReturn {
     bool single = false;  // one component: its resultant is |C x|, no root
     int contribution = 0;
     Vector6 coefficient = Vector6::Zero();  // C (sign included)
-    double kappa = 0;                       // k·C², uniform over the group
+    double kappa = 0;                       // k·C² (of its first component where not uniform)
     double inverse_kappa = 0;
+    Vector6 component_kappa = Vector6::Zero();  // κ_c = k_c C_c²
+    bool uniform = true;                        // κ_c the same over the group: radial flow
   };
   struct Contribution {
     double scale = 1;          // R_i
@@ -60,6 +63,7 @@ class GroupedReturn {
   struct Trial;
   struct Share;
   struct Iterate;
+  struct Response;
   struct Distance {
     double value, slope, curvature;  // g, dg/dΔλ, d²g/dΔλ² (NaN where S″ is not formed)
   };
@@ -73,6 +77,11 @@ class GroupedReturn {
   GroupSet reaching_beyond(unsigned candidates, const Trial& t, double y) const;
   // The group among `candidates` that clips last (largest r_g/κ_g), alone.
   GroupSet last_to_clip(unsigned candidates, const Trial& t) const;
+  // T_g and −dT_g/dy of a non-uniform NORM group at y below its clip.
+  std::pair<double, double> norm_group_response(int group, const Trial& t, double y) const;
+  // E_i(y) and −dE_i/dy of a contribution, with T_g and −dT_g/dy of its groups into `it`.
+  template <bool kAllUniform>
+  Response respond(int contribution, const Trial& t, double y, Iterate& it) const;
   Share solve_share(int contribution, const Trial& t, double multiplier,
                     const YieldSample& y) const;
   void evaluate(const Trial& t, double multiplier, const YieldSample& y, Iterate& it) const;
@@ -81,6 +90,7 @@ class GroupedReturn {
   // From S = Σ z_i^β at Δλ = 0 and root = S^γ.
   double radial_guess(const Trial& t, double share_sum, const YieldSample& y, double root) const;
   // β = 1.5: Δλ and the shares at it in `it` (left as it is on failure), from S at Δλ = 0.
+  template <bool kAllUniform>
   bool solve_jointly(const Trial& t, const IsotropicHardeningLaw& yield, double equivalent_old,
                      double share_sum, Iterate& it, double& multiplier) const;
   // Any β, the same by Newton–Halley on Δλ alone with every share solved at each iterate.
@@ -98,6 +108,7 @@ class GroupedReturn {
   double beta_ = 2.0;
   double gamma_ = 0.5;  // 1 − 1/β
   Exponent exponent_ = Exponent::Two;
+  bool nonuniform_ = false;  // some NORM group has unequal κ_c (solve_jointly only)
 };
 
 }  // namespace clinch

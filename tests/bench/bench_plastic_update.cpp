@@ -9,8 +9,8 @@
 
 #include <fstream>
 #include <memory>
-#include <sstream>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -37,11 +37,23 @@ BUSHING,
 GLOBAL
 )";
 
-std::string spot_weld_deck() {
+// The weld's stiffnesses k1..k6 as the deck has them, and a variant with k2 = 2e5 and
+// k5 = 1.6e6: its (f1, f2) and (m1, m2) groups then have unequal k C², so that the flow in them
+// is not radial.
+const Vector6 kStiffness = (Vector6() << 1e5, 1e5, 2e5, 1e6, 1e6, 5e5).finished();
+const Vector6 kUnequalStiffness = (Vector6() << 1e5, 2e5, 2e5, 1e6, 1.6e6, 5e5).finished();
+
+std::string spot_weld_deck(const Vector6& stiffness) {
   std::ifstream file(std::string(CLINCH_SOURCE_DIR) + "/decks/bench/spot_weld_behavior.inp");
-  std::stringstream text;
-  text << kConnector << file.rdbuf() << "*STEP\n*STATIC\n*END STEP\n";
-  return text.str();
+  std::stringstream behavior;
+  behavior << file.rdbuf();
+  std::string text = behavior.str();
+  for (int c = 0; c < 6; ++c) {
+    const std::string key = "COMPONENT=" + std::to_string(c + 1) + "\n";
+    const std::size_t at = text.find(key) + key.size();
+    text.replace(at, text.find('\n', at) - at, std::to_string(stiffness[c]));
+  }
+  return kConnector + text + "*STEP\n*STATIC\n*END STEP\n";
 }
 
 struct SpotWeld {
@@ -49,8 +61,8 @@ struct SpotWeld {
   Model model;
   DiagnosticSink sink;
   std::unique_ptr<Behavior> behavior;
-  SpotWeld() {
-    read_deck_text("spot_weld.inp", spot_weld_deck(), sources, model, sink);
+  explicit SpotWeld(const Vector6& stiffness) {
+    read_deck_text("spot_weld.inp", spot_weld_deck(stiffness), sources, model, sink);
     if (sink.has_errors() || model.behaviors.behaviors.empty()) return;  // run() skips
     behavior = make_connector_behavior(model.behaviors.behaviors.front(), 0b111111);
   }
@@ -58,10 +70,10 @@ struct SpotWeld {
 
 // Trial motions from the virgin state along random rays, scaled to `lo`…`hi` times the motion of
 // first yield on the ray: P is positively homogeneous, so first yield is at F_y(0) / P(K u).
-std::vector<Vector6> trial_motions(const ConnectorBehavior& behavior, double lo, double hi) {
+std::vector<Vector6> trial_motions(const ConnectorBehavior& behavior, const Vector6& stiffness,
+                                   double lo, double hi) {
   const ConnectorPotential potential =
       ConnectorPotential::compile(behavior, behavior.potentials.at(0));
-  const Vector6 stiffness = (Vector6() << 1e5, 1e5, 2e5, 1e6, 1e6, 5e5).finished();
   constexpr double kInitialYield = 40000.0;
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -76,13 +88,14 @@ std::vector<Vector6> trial_motions(const ConnectorBehavior& behavior, double lo,
   return motions;
 }
 
-void run(benchmark::State& state, double lo, double hi) {
-  SpotWeld weld;
+void run(benchmark::State& state, double lo, double hi, const Vector6& stiffness = kStiffness) {
+  SpotWeld weld(stiffness);
   if (!weld.behavior) {
     state.SkipWithError("no behaviour");
     return;
   }
-  const std::vector<Vector6> motions = trial_motions(weld.model.behaviors.behaviors.at(0), lo, hi);
+  const std::vector<Vector6> motions =
+      trial_motions(weld.model.behaviors.behaviors.at(0), stiffness, lo, hi);
   std::vector<double> history(static_cast<std::size_t>(weld.behavior->history_size()), 0.0);
   std::vector<double> trial(history.size());
   const Vector6 zero = Vector6::Zero();
@@ -107,6 +120,11 @@ BENCHMARK(BM_SpotWeldNearYield);
 void BM_SpotWeldElasticUpdate(benchmark::State& state) { run(state, 1e-3, 1e-2); }
 BENCHMARK(BM_SpotWeldPlasticUpdate);
 BENCHMARK(BM_SpotWeldElasticUpdate);
+// Plastic updates of the variant with unequal stiffnesses in its NORM groups.
+void BM_SpotWeldUnequalStiffnessPlasticUpdate(benchmark::State& state) {
+  run(state, 2.0, 20.0, kUnequalStiffness);
+}
+BENCHMARK(BM_SpotWeldUnequalStiffnessPlasticUpdate);
 
 }  // namespace
 }  // namespace clinch
