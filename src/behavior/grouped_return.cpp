@@ -279,18 +279,24 @@ GroupedReturn::GroupSet GroupedReturn::last_to_clip(unsigned candidates, const T
 
 // A NORM group whose k_c C_c² = κ_c differ: F_c = t_c T/(T + κ_c y) from the flow rule, so its
 // resultant T = |C∘F| solves h(T) = Σ_c a_c/(T + κ_c y)² = 1 (a_c = C_c² t_c²) for y below the
-// clip. h is convex and decreasing in T, so Newton from the left end of the bracket
-// [r − κ_max y, r − κ_min y] (at most 0 below) rises to the root monotonically, quadratically.
-// Returns T and −dT/dy = Σ a_c κ_c/s_c³ / Σ a_c/s_c³ (s_c = T + κ_c y).
+// clip, in the bracket [r − κ_max y, r − κ_min y] (at least 0). h is convex and decreasing, so
+// Newton lands left of the root from anywhere in the bracket (clamped to its lower end) and then
+// rises to it monotonically, quadratically. It starts from `guess` (T at the previous iterate of
+// the joint Newton) where that is in the bracket. Returns T and −dT/dy =
+// Σ a_c κ_c/s_c³ / Σ a_c/s_c³ (s_c = T + κ_c y).
 [[gnu::noinline]] std::pair<double, double> GroupedReturn::norm_group_response(int group,
                                                                                const Trial& t,
-                                                                               double y) const {
+                                                                               double y,
+                                                                               double guess) const {
   const Group& gr = groups_[static_cast<std::size_t>(group)];
-  double kappa_max = 0;
-  for_each_bit(gr.components,
-               [&](int c) { kappa_max = std::max(kappa_max, gr.component_kappa[c]); });
+  double kappa_max = 0, kappa_min = std::numeric_limits<double>::infinity();
+  for_each_bit(gr.components, [&](int c) {
+    kappa_max = std::max(kappa_max, gr.component_kappa[c]);
+    kappa_min = std::min(kappa_min, gr.component_kappa[c]);
+  });
   const double r = t.resultant[static_cast<std::size_t>(group)];
-  double force = std::max(0.0, r - kappa_max * y);
+  const double lower = std::max(0.0, r - kappa_max * y);
+  double force = std::clamp(guess, lower, r - kappa_min * y);
   double slope_sum = 0, rate_sum = 0;  // Σ a_c/s_c³, Σ a_c κ_c/s_c³
   for (int k = 0; k < 60; ++k) {
     double h = 0;
@@ -304,8 +310,11 @@ GroupedReturn::GroupSet GroupedReturn::last_to_clip(unsigned candidates, const T
       rate_sum += term * inv_s * gr.component_kappa[c];
     });
     const double step = (h - 1) / (2 * slope_sum);  // −(h − 1)/h′, h′ = −2 Σ a_c/s_c³
-    force += step;
-    if (!(step > 4 * kEpsilon * (force + y * kappa_max))) break;
+    const double previous = force;
+    force = std::max(lower, force + step);
+    // Quadratic convergence: after a step of 1e-7 the error left is of order 1e-14, below what
+    // the joint Newton resolves, so that step is the last (the rates are those before it).
+    if (!(std::abs(force - previous) > 1e-7 * (force + y * kappa_max))) break;
   }
   return {force, rate_sum / slope_sum};
 }
@@ -328,11 +337,13 @@ template <bool kAllUniform>
   }
   for_each_bit(contributions_[ii].groups, [&](int g) {
     const auto gg = static_cast<std::size_t>(g);
-    it.group_force[gg] = it.group_rate[gg] = 0;
-    if (!(t.reach[gg] > y)) return;  // clipped at y (or no flow)
+    if (!(t.reach[gg] > y)) {  // clipped at y (or no flow)
+      it.group_force[gg] = it.group_rate[gg] = 0;
+      return;
+    }
     const Group& gr = groups_[gg];
     const auto [force, rate] = gr.uniform ? std::pair{t.resultant[gg] - gr.kappa * y, gr.kappa}
-                                          : norm_group_response(g, t, y);
+                                          : norm_group_response(g, t, y, it.group_force[gg]);
     it.group_force[gg] = force;
     it.group_rate[gg] = rate;
     out.force += force;

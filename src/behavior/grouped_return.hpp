@@ -77,8 +77,9 @@ class GroupedReturn {
   GroupSet reaching_beyond(unsigned candidates, const Trial& t, double y) const;
   // The group among `candidates` that clips last (largest r_g/κ_g), alone.
   GroupSet last_to_clip(unsigned candidates, const Trial& t) const;
-  // T_g and −dT_g/dy of a non-uniform NORM group at y below its clip.
-  std::pair<double, double> norm_group_response(int group, const Trial& t, double y) const;
+  // T_g and −dT_g/dy of a non-uniform NORM group at y below its clip, from a guess of T_g.
+  std::pair<double, double> norm_group_response(int group, const Trial& t, double y,
+                                                double guess) const;
   // E_i(y) and −dE_i/dy of a contribution, with T_g and −dT_g/dy of its groups into `it`.
   template <bool kAllUniform>
   Response respond(int contribution, const Trial& t, double y, Iterate& it) const;
