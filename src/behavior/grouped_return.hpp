@@ -1,18 +1,23 @@
 // A reduced closest-point projection for coupled plasticity whose potential is a sum of groups
 // (ConnectorPotential::group_structure: NORM and Macaulay terms on disjoint components, every
-// α_i = β) and whose elasticity is diagonal with k·C² the same over each NORM group. Then the
-// flow rule K⁻¹(F − F^tr) + Δλ n = 0 shrinks every group radially: a NORM group's resultant to
-// T_g = ⟨r_g^tr − κ_g y_i⟩ (κ_g = k C², y_i = Δλ n_i), a Macaulay term likewise, clipped at zero
-// where the exact return stops on the kink (behaviors.md §6.4 with the potential of
-// derived-components-and-potentials.md §2.4). The spot weld of §3 is such a potential.
+// α_i = β) and whose elasticity is diagonal. Then the flow rule K⁻¹(F − F^tr) + Δλ n = 0 acts on
+// each group alone: with κ_c = k_c C_c² and y_i = Δλ n_i, F_c = t_c T_g/(T_g + κ_c y_i), where
+// the group's resultant T_g solves Σ_c C_c² t_c²/(T_g + κ_c y_i)² = 1, clipped at zero where the
+// exact return stops on the kink (behaviors.md §6.4 with the potential of
+// derived-components-and-potentials.md §2.4). Where κ_c is the same over the group (always for
+// a Macaulay or one-component term) this is a radial shrink, T_g = ⟨r_g^tr − κ_g y_i⟩. The spot
+// weld of §3 is such a potential.
 //
 // At the solution P = F_y, so the slope of contribution i is n_i = z_i^(β−1)/R_i with the share
-// z_i = E_i/(R_i F_y) (§2.4), and Σ z_i^β = 1. For a given Δλ each share solves its own scalar
-// equation R_i F_y z + Δλ K_i z^(β−1)/R_i = Σ_g r_g (K_i, Σ over the groups of i that stay
-// positive): a quadratic in √z for β = 1.5, linear for β = 1 and 2. What is left is one scalar
-// equation Σ z_i(Δλ)^β = 1, solved by a safeguarded Newton, and the consistent tangent follows
-// in closed form from the same relations: no root of the potential, no 6×6 factorisation. Same
-// answer as closest_point_return, an order of magnitude cheaper.
+// z_i = E_i/(R_i F_y) (§2.4), and Σ z_i^β = 1. For β = 1.5 Δλ and w_i = √z_i are found together
+// by a semismooth Newton on R_i F_y w_i² = E_i(Δλ w_i/R_i) and Σ w_i³ = 1 (solve_jointly), with
+// a non-uniform group's T_g from its own scalar Newton inside. Otherwise, and where that does not
+// settle, every group being uniform, each share solves its own scalar equation for a given Δλ
+// (a quadratic in √z for β = 1.5, linear for β = 1 and 2) and one scalar equation Σ z_i(Δλ)^β = 1
+// is left (solve_multiplier). The consistent tangent follows in closed form from the same
+// relations: no root of the potential, no 6×6 factorisation. Same answer as
+// closest_point_return, an order of magnitude cheaper. A non-uniform group with β ≠ 1.5 is left
+// to closest_point_return.
 #pragma once
 
 #include <array>
