@@ -157,8 +157,10 @@ std::optional<GroupedReturn> GroupedReturn::create(const ConnectorPotential& pot
                   : out.beta_ == 1.5 ? Exponent::ThreeHalves
                   : out.beta_ == 2.0 ? Exponent::Two
                                      : Exponent::General;
-  // A non-uniform group has no closed-form share: only the joint Newton (β = 1.5) takes it.
-  if (out.nonuniform_ && out.exponent_ != Exponent::ThreeHalves) return std::nullopt;
+  // A non-uniform group has no closed-form share: only the joint Newton (β = 1.5, 2) takes it.
+  if (out.nonuniform_ && out.exponent_ != Exponent::ThreeHalves && out.exponent_ != Exponent::Two) {
+    return std::nullopt;
+  }
   return out;
 }
 
@@ -524,7 +526,7 @@ CoupledReturn GroupedReturn::solve(const IsotropicHardeningLaw& yield, const Vec
   Iterate it;
   double dl = 0;
   const bool joint =
-      exponent_ == Exponent::ThreeHalves &&
+      (exponent_ == Exponent::ThreeHalves || (exponent_ == Exponent::Two && nonuniform_)) &&
       (nonuniform_ ? solve_jointly<false>(t, yield, equivalent_old, share_sum, it, dl)
                    : solve_jointly<true>(t, yield, equivalent_old, share_sum, it, dl));
   bool ok = joint;
@@ -580,10 +582,11 @@ CoupledReturn GroupedReturn::solve(const IsotropicHardeningLaw& yield, const Vec
   return out;
 }
 
-// β = 1.5: Newton on Δλ and the roots of the shares w_i = √z_i together, on
-//   Φ_i = R_i F_y w_i² + Δλ (K_i/R_i) w_i − Σ_g r_g = 0,  Σ_i w_i³ = 1,
-// with the groups that stay positive taken at the iterate (E_i is piecewise linear in y_i, so
-// this is a semismooth Newton). The equations are polynomials: a step takes one division per
+// β = 1.5 and 2: Newton on Δλ and v_i = z_i^(β−1) together (√z_i, z_i), on
+//   Φ_i = R_i F_y z_i − E_i(Δλ v_i/R_i) = 0,  Σ_i z_i^β = 1  (Σ v_i³, Σ v_i²),
+// with the groups that stay positive taken at the iterate (E_i is piecewise smooth in y_i, so
+// this is a semismooth Newton); a uniform group has E_i linear in y_i. With those, the equations
+// are polynomials: a step takes one division per
 // contribution and one for Δλ, where solve_multiplier takes a root and two divisions per
 // contribution for each Δλ. It starts from the radial guess of Δλ with every share solved there
 // (which saves one to two steps over the radial shares ζ_i) and stops when every Φ_i is within
@@ -597,13 +600,14 @@ bool GroupedReturn::solve_jointly(const Trial& t, const IsotropicHardeningLaw& y
                                   double equivalent_old, double share_sum, Iterate& it,
                                   double& multiplier) const {
   constexpr int kJointIterations = 12;  // it takes 3–7 steps where it converges at all
+  const bool root = exponent_ == Exponent::ThreeHalves;  // v = √z; otherwise β = 2 and v = z
   YieldSample y = yield.at(equivalent_old);
   double dl = radial_guess(t, share_sum, y, root_of_share_sum(share_sum));
-  std::array<double, kMaxGroups> w{};
+  std::array<double, kMaxGroups> v{};
   if (dl > 0) {
     const YieldSample y0 = yield.at(equivalent_old + dl);
     for (int i = 0; i < contribution_count_; ++i) {
-      w[static_cast<std::size_t>(i)] = solve_share(i, t, dl, y0).zb1;
+      v[static_cast<std::size_t>(i)] = solve_share(i, t, dl, y0).zb1;
     }
   }
   Iterate next;
@@ -623,23 +627,23 @@ bool GroupedReturn::solve_jointly(const Trial& t, const IsotropicHardeningLaw& y
         continue;
       }
       const Contribution& c = contributions_[ii];
-      const double wi = w[ii];
-      if (!(wi > 0)) return false;
-      s.y = dl * wi * c.inverse_scale;
+      const double vi = v[ii];
+      if (!(vi > 0)) return false;
+      s.y = dl * vi * c.inverse_scale;
       const Response e = respond<kAllUniform>(i, t, s.y, next);
       const double rf = c.scale * y.value;
       const double kr = e.rate * c.inverse_scale;  // K_i/R_i
-      phi[ii] = rf * wi * wi - e.force;
-      const double inv_a = 1 / (2 * rf * wi + dl * kr);  // 1/(∂Φ_i/∂w)
-      s.z = wi * wi;
-      s.zb1 = wi;
-      s.inv_a = 2 * wi * inv_a;  // 1/(∂Φ_i/∂z), ∂w/∂z = 1/(2w)
+      s.z = root ? vi * vi : vi;
+      phi[ii] = rf * s.z - e.force;
+      const double inv_a = 1 / ((root ? 2 * rf * vi : rf) + dl * kr);  // 1/(∂Φ_i/∂v)
+      s.zb1 = vi;
+      s.inv_a = root ? 2 * vi * inv_a : inv_a;  // 1/(∂Φ_i/∂z) = (dz/dv)/(∂Φ_i/∂v)
       s.dzb1_inv_a = inv_a;
-      s.b = (c.scale * y.slope * wi + kr) * wi;  // ∂Φ_i/∂Δλ
+      s.b = c.scale * y.slope * s.z + kr * vi;  // ∂Φ_i/∂Δλ
       s.curvature = std::numeric_limits<double>::quiet_NaN();
       s.active = e.mask;
-      const double q = 3 * s.z * inv_a;  // ∂(w_i³)/∂w_i / (∂Φ_i/∂w)
-      psi += s.z * wi;
+      const double q = (root ? 3 * s.z : 2 * vi) * inv_a;  // ∂(z_i^β)/∂v_i / (∂Φ_i/∂v)
+      psi += s.z * vi;                                     // z^β = z·v
       weighted_residual += q * phi[ii];
       slope += q * s.b;
       // An extended piece is not a solution: that group's T_g would be negative.
@@ -654,19 +658,19 @@ bool GroupedReturn::solve_jointly(const Trial& t, const IsotropicHardeningLaw& y
       it.group_force = next.group_force;
       it.group_rate = next.group_rate;
       it.sum = psi + 1;
-      it.slope = slope;  // Σ β z^(β−1) b/(∂Φ/∂z) = Σ 3 w² b/(∂Φ/∂w)
+      it.slope = slope;  // Σ β z^(β−1) b/(∂Φ/∂z) = Σ (∂z^β/∂v) b/(∂Φ/∂v)
       multiplier = dl;
       return true;
     }
-    // Σ 3 w_i² dw_i = −(S − 1) with dw_i = −(Φ_i + b_i dΔλ)/(∂Φ_i/∂w).
+    // Σ (∂z_i^β/∂v_i) dv_i = −(S − 1) with dv_i = −(Φ_i + b_i dΔλ)/(∂Φ_i/∂v).
     const double step = (psi - weighted_residual) / slope;
-    std::array<double, kMaxGroups> dw;
+    std::array<double, kMaxGroups> dv;
     for (int i = 0; i < contribution_count_; ++i) {
       const auto ii = static_cast<std::size_t>(i);
-      dw[ii] = -(phi[ii] + next.share[ii].b * step) * next.share[ii].dzb1_inv_a;
+      dv[ii] = -(phi[ii] + next.share[ii].b * step) * next.share[ii].dzb1_inv_a;
     }
     // Without the nested solve to fall back on (a non-uniform group), a step that would take
-    // Δλ or a w_i below a tenth of its value (the solution has both positive) is shortened to
+    // Δλ or a v_i below a tenth of its value (the solution has both positive) is shortened to
     // that; the direction stays Newton's. (It costs the uniform case a tenth of its time, and
     // there a non-positive iterate hands over to the nested solve instead.)
     double length = 1;
@@ -674,14 +678,14 @@ bool GroupedReturn::solve_jointly(const Trial& t, const IsotropicHardeningLaw& y
       if (step < -0.9 * dl) length = -0.9 * dl / step;
       for (int i = 0; i < contribution_count_; ++i) {
         const auto ii = static_cast<std::size_t>(i);
-        if (t.positive[ii].mask && length * dw[ii] < -0.9 * w[ii]) {
-          length = -0.9 * w[ii] / dw[ii];
+        if (t.positive[ii].mask && length * dv[ii] < -0.9 * v[ii]) {
+          length = -0.9 * v[ii] / dv[ii];
         }
       }
     }
     dl += length * step;
     for (int i = 0; i < contribution_count_; ++i) {
-      w[static_cast<std::size_t>(i)] += length * dw[static_cast<std::size_t>(i)];
+      v[static_cast<std::size_t>(i)] += length * dv[static_cast<std::size_t>(i)];
     }
   }
   return false;

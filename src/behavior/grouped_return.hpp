@@ -9,15 +9,15 @@
 // weld of §3 is such a potential.
 //
 // At the solution P = F_y, so the slope of contribution i is n_i = z_i^(β−1)/R_i with the share
-// z_i = E_i/(R_i F_y) (§2.4), and Σ z_i^β = 1. For β = 1.5 Δλ and w_i = √z_i are found together
-// by a semismooth Newton on R_i F_y w_i² = E_i(Δλ w_i/R_i) and Σ w_i³ = 1 (solve_jointly), with
-// a non-uniform group's T_g from its own scalar Newton inside. Otherwise, and where that does not
-// settle, every group being uniform, each share solves its own scalar equation for a given Δλ
-// (a quadratic in √z for β = 1.5, linear for β = 1 and 2) and one scalar equation Σ z_i(Δλ)^β = 1
-// is left (solve_multiplier). The consistent tangent follows in closed form from the same
-// relations: no root of the potential, no 6×6 factorisation. Same answer as
-// closest_point_return, an order of magnitude cheaper. A non-uniform group with β ≠ 1.5 is left
-// to closest_point_return.
+// z_i = E_i/(R_i F_y) (§2.4), and Σ z_i^β = 1. For β = 1.5 (and β = 2 with a non-uniform group)
+// Δλ and v_i = z_i^(β−1) are found together by a semismooth Newton on R_i F_y z_i =
+// E_i(Δλ v_i/R_i) and Σ z_i^β = 1 (solve_jointly), with a non-uniform group's T_g from its own
+// scalar Newton inside. Otherwise, and where that does not settle, every group being uniform,
+// each share solves its own scalar equation for a given Δλ (a quadratic in √z for β = 1.5,
+// linear for β = 1 and 2) and one scalar equation Σ z_i(Δλ)^β = 1 is left (solve_multiplier).
+// The consistent tangent follows in closed form from the same relations: no root of the
+// potential, no 6×6 factorisation. Same answer as closest_point_return, an order of magnitude
+// cheaper. A non-uniform group with another β is left to closest_point_return.
 #pragma once
 
 #include <array>
@@ -95,7 +95,7 @@ class GroupedReturn {
   Distance distance(const Iterate& it) const;
   // From S = Σ z_i^β at Δλ = 0 and root = S^γ.
   double radial_guess(const Trial& t, double share_sum, const YieldSample& y, double root) const;
-  // β = 1.5: Δλ and the shares at it in `it` (left as it is on failure), from S at Δλ = 0.
+  // β = 1.5 or 2: Δλ and the shares at it in `it` (left as it is on failure), from S at Δλ = 0.
   template <bool kAllUniform>
   bool solve_jointly(const Trial& t, const IsotropicHardeningLaw& yield, double equivalent_old,
                      double share_sum, Iterate& it, double& multiplier) const;
