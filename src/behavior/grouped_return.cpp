@@ -585,10 +585,9 @@ CoupledReturn GroupedReturn::solve(const IsotropicHardeningLaw& yield, const Vec
 // β = 1.5 and 2: Newton on Δλ and v_i = z_i^(β−1) together (√z_i, z_i), on
 //   Φ_i = R_i F_y z_i − E_i(Δλ v_i/R_i) = 0,  Σ_i z_i^β = 1  (Σ v_i³, Σ v_i²),
 // with the groups that stay positive taken at the iterate (E_i is piecewise smooth in y_i, so
-// this is a semismooth Newton); a uniform group has E_i linear in y_i. With those, the equations
-// are polynomials: a step takes one division per
-// contribution and one for Δλ, where solve_multiplier takes a root and two divisions per
-// contribution for each Δλ. It starts from the radial guess of Δλ with every share solved there
+// this is a semismooth Newton). With uniform groups E_i is linear in y_i and the equations are
+// polynomials: a step takes one division per contribution and one for Δλ, where
+// solve_multiplier takes a root and two divisions per contribution for each Δλ. It starts from the radial guess of Δλ with every share solved there
 // (which saves one to two steps over the radial shares ζ_i) and stops when every Φ_i is within
 // kTolerance of its Σ_g r_g and |S − 1| within β·kTolerance, the test of solve_multiplier. An
 // iterate past the last clip of a contribution (the solution keeps E_i > 0 for β > 1) extends
