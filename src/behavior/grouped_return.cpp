@@ -525,11 +525,9 @@ CoupledReturn GroupedReturn::solve(const IsotropicHardeningLaw& yield, const Vec
   out.plastic = true;
   Iterate it;
   double dl = 0;
-  const bool joint =
-      (exponent_ == Exponent::ThreeHalves || (exponent_ == Exponent::Two && nonuniform_)) &&
-      (nonuniform_ ? solve_jointly<false>(t, yield, equivalent_old, share_sum, it, dl)
-                   : solve_jointly<true>(t, yield, equivalent_old, share_sum, it, dl));
-  bool ok = joint;
+  bool ok = (exponent_ == Exponent::ThreeHalves || (exponent_ == Exponent::Two && nonuniform_)) &&
+            (nonuniform_ ? solve_jointly<false>(t, yield, equivalent_old, share_sum, it, dl)
+                         : solve_jointly<true>(t, yield, equivalent_old, share_sum, it, dl));
   if (!ok && nonuniform_) {  // no closed-form shares: the general return takes over
     out.converged = false;
     return out;
@@ -587,13 +585,14 @@ CoupledReturn GroupedReturn::solve(const IsotropicHardeningLaw& yield, const Vec
 // with the groups that stay positive taken at the iterate (E_i is piecewise smooth in y_i, so
 // this is a semismooth Newton). With uniform groups E_i is linear in y_i and the equations are
 // polynomials: a step takes one division per contribution and one for Δλ, where
-// solve_multiplier takes a root and two divisions per contribution for each Δλ. It starts from the radial guess of Δλ with every share solved there
-// (which saves one to two steps over the radial shares ζ_i) and stops when every Φ_i is within
-// kTolerance of its Σ_g r_g and |S − 1| within β·kTolerance, the test of solve_multiplier. An
-// iterate past the last clip of a contribution (the solution keeps E_i > 0 for β > 1) extends
-// that group's linear piece. It gives up (false, `it` unchanged) where the plain Newton is not
-// safe: a non-positive iterate, a vanished yield size, or no convergence in kJointIterations
-// (an active set that cycles on a kink); solve_multiplier then takes over.
+// solve_multiplier takes a root and two divisions per contribution for each Δλ. It starts from the
+// radial guess of Δλ with every share solved there (which saves one to two steps over the radial
+// shares ζ_i) and stops when every Φ_i is within kTolerance of its Σ_g r_g and |S − 1| within
+// β·kTolerance, the test of solve_multiplier. An iterate past the last clip of a contribution (the
+// solution keeps E_i > 0 for β > 1) extends that group's linear piece. It gives up (false, `it`
+// unchanged) where the plain Newton is not safe: a non-positive iterate, a vanished yield size, or
+// no convergence in kJointIterations (an active set that cycles on a kink); solve_multiplier then
+// takes over.
 template <bool kAllUniform>
 bool GroupedReturn::solve_jointly(const Trial& t, const IsotropicHardeningLaw& yield,
                                   double equivalent_old, double share_sum, Iterate& it,
