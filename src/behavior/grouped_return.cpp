@@ -141,6 +141,20 @@ std::optional<GroupedReturn> GroupedReturn::create(const ConnectorPotential& pot
     }
     out.groups_[static_cast<std::size_t>(out.group_count_++)] = r;
   }
+  for (int c = 0; c < 6; ++c) {
+    const int g = out.group_of_[static_cast<std::size_t>(c)];
+    if (g >= 0) out.contribution_of_[c] = out.groups_[static_cast<std::size_t>(g)].contribution;
+  }
+  for (int c = 0; c < 6; ++c) {
+    for (int e = 0; e < 6; ++e) {
+      if (out.group_of_[static_cast<std::size_t>(c)] < 0 ||
+          out.group_of_[static_cast<std::size_t>(e)] < 0)
+        continue;
+      out.same_group_(c, e) =
+          out.group_of_[static_cast<std::size_t>(c)] == out.group_of_[static_cast<std::size_t>(e)];
+      out.same_contribution_(c, e) = out.contribution_of_[c] == out.contribution_of_[e];
+    }
+  }
   int next = 0;
   for (int i = 0; i < out.contribution_count_; ++i) {
     Contribution& c = out.contributions_[static_cast<std::size_t>(i)];
@@ -329,7 +343,9 @@ template <bool kAllUniform>
   const auto ii = static_cast<std::size_t>(contribution);
   Response out;
   if constexpr (kAllUniform) {  // linear pieces: T_g = r_g − κ_g y (filled in after the solve)
-    GroupSet set = reaching_beyond(t.positive[ii].mask, t, y);
+    const GroupSet& trial = t.positive[ii];
+    if (y < trial.first_clip) return {trial.sum - trial.kappa * y, trial.kappa, trial.mask, false};
+    GroupSet set = reaching_beyond(trial.mask, t, y);
     out.extended = !set.mask && t.positive[ii].mask;
     if (out.extended) set = last_to_clip(t.positive[ii].mask, t);
     out.force = set.sum - set.kappa * y;
@@ -819,22 +835,20 @@ void GroupedReturn::tangent(const Vector6& trial, const Trial& t, const Iterate&
       diagonal[c] = force * inv_s * stiffness_[c];
     });
   }
-  auto entry = [&](int c, int e) {  // (∂F/∂u)_ce before symmetrising
-    const int g = group_of_[static_cast<std::size_t>(c)];
-    const int h = group_of_[static_cast<std::size_t>(e)];
-    if (g < 0 || h < 0) return 0.0;
-    const int i = groups_[static_cast<std::size_t>(g)].contribution;
-    double v = yy[static_cast<std::size_t>(i)] * w[e];
-    if (groups_[static_cast<std::size_t>(h)].contribution == i) {
-      v += x[static_cast<std::size_t>(i)] * n[e];
-    }
-    return row[c] * v + (h == g ? own[c] * n[e] : 0.0);
-  };
-  // Symmetric in exact arithmetic (associated flow); symmetrising removes the round-off.
+  // Row c: Y_i row_c W + X_i row_c N over the components of contribution i + own_c N over those
+  // of group g, three outer products masked by the component pairs they couple.
+  Vector6 row_y, row_x;
   for (int c = 0; c < 6; ++c) {
-    out(c, c) = entry(c, c) + diagonal[c];
-    for (int e = c + 1; e < 6; ++e) out(c, e) = out(e, c) = 0.5 * (entry(c, e) + entry(e, c));
+    const auto i = static_cast<std::size_t>(contribution_of_[c]);
+    row_y[c] = row[c] * yy[i];
+    row_x[c] = row[c] * x[i];
   }
+  Matrix6 d = row_y * w.transpose();
+  d += same_contribution_.cwiseProduct(row_x * n.transpose());
+  d += same_group_.cwiseProduct(own * n.transpose());
+  d.diagonal() += diagonal;
+  // Symmetric in exact arithmetic (associated flow); symmetrising removes the round-off.
+  out = 0.5 * (d + d.transpose());
 }
 
 }  // namespace clinch

@@ -111,6 +111,11 @@ class GroupedReturn {
   int contribution_count_ = 0;
   Vector6 stiffness_ = Vector6::Ones();                          // the diagonal of K
   std::array<std::int8_t, 6> group_of_{-1, -1, -1, -1, -1, -1};  // per component
+  // The contribution of each component's group (0 for a component outside the potential, whose
+  // rows of the tangent vanish), and 1 where components c and e are in the same group
+  // (contribution), else 0: the masks of the tangent's outer products.
+  std::array<int, 6> contribution_of_{};
+  Matrix6 same_group_ = Matrix6::Zero(), same_contribution_ = Matrix6::Zero();
   double beta_ = 2.0;
   double gamma_ = 0.5;  // 1 − 1/β
   Exponent exponent_ = Exponent::Two;

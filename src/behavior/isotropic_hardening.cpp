@@ -30,20 +30,10 @@ IsotropicHardeningLaw IsotropicHardeningLaw::constant(double f0) {
   return law;
 }
 
-YieldSample IsotropicHardeningLaw::at(double ubar) const {
-  switch (kind_) {
-    case Kind::Constant:
-      return {f0_, 0.0};
-    case Kind::Exponential: {
-      // §6.1: F_y = F_0 + Q_inf (1 − e^(−b ū)), h = Q_inf b e^(−b ū).
-      const double e = std::exp(-b_ * ubar);
-      return {f0_ + q_inf_ * (1.0 - e), q_inf_ * b_ * e};
-    }
-    case Kind::Tabular:
-      break;
-  }
-  const TableSample s = table_->evaluate(ubar);
-  return {s.value, s.slope};
+YieldSample IsotropicHardeningLaw::exponential(double ubar) const {
+  // §6.1: F_y = F_0 + Q_inf (1 − e^(−b ū)), h = Q_inf b e^(−b ū).
+  const double e = std::exp(-b_ * ubar);
+  return {f0_ + q_inf_ * (1.0 - e), q_inf_ * b_ * e};
 }
 
 }  // namespace clinch

@@ -23,10 +23,18 @@ class IsotropicHardeningLaw {
   static IsotropicHardeningLaw from_plasticity(const ConnectorPlasticity& plasticity);
   static IsotropicHardeningLaw constant(double f0);
 
-  YieldSample at(double equivalent_plastic) const;
+  // Inline: the return mappings call it at every local iteration.
+  YieldSample at(double equivalent_plastic) const {
+    if (kind_ == Kind::Tabular) {
+      const TableSample s = table_->evaluate(equivalent_plastic);
+      return {s.value, s.slope};
+    }
+    return kind_ == Kind::Constant ? YieldSample{f0_, 0.0} : exponential(equivalent_plastic);
+  }
   double initial() const { return at(0.0).value; }
 
  private:
+  YieldSample exponential(double equivalent_plastic) const;
   enum class Kind { Constant, Tabular, Exponential };
   Kind kind_ = Kind::Constant;
   double f0_ = 0, q_inf_ = 0, b_ = 0;

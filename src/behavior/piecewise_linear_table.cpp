@@ -39,7 +39,7 @@ PiecewiseLinearTable PiecewiseLinearTable::from_points(std::span<const TablePoin
   return PiecewiseLinearTable(std::move(x), std::move(y), extrapolation);
 }
 
-TableSample PiecewiseLinearTable::evaluate(double x) const {
+TableSample PiecewiseLinearTable::evaluate_outside(double x) const {
   // A NaN motion must reach the caller's convergence checks rather than become an end value.
   if (std::isnan(x)) return {x, x, true};
   const std::size_t n = x_.size();
@@ -50,17 +50,15 @@ TableSample PiecewiseLinearTable::evaluate(double x) const {
     return linear ? TableSample{y_[0] + slope_[0] * (x - x_[0]), slope_[0], true}
                   : TableSample{y_[0], 0.0, true};
   }
-  if (x >= x_[n - 1]) {
-    // At the last abscissa the segment on the right is the extrapolated one (§4.2 rule), so
-    // its slope applies there too; the point itself is still inside the table.
-    const double end_slope = linear ? slope_[n - 2] : 0.0;
-    return {y_[n - 1] + end_slope * (x - x_[n - 1]), end_slope, x > x_[n - 1]};
-  }
-  // First abscissa greater than x: x lies in [x_{k}, x_{k+1}) with k + 1 = that index, which
-  // gives the right-hand segment at a breakpoint.
+  // At the last abscissa the segment on the right is the extrapolated one (§4.2 rule), so its
+  // slope applies there too; the point itself is still inside the table.
+  const double end_slope = linear ? slope_[n - 2] : 0.0;
+  return {y_[n - 1] + end_slope * (x - x_[n - 1]), end_slope, x > x_[n - 1]};
+}
+
+std::size_t PiecewiseLinearTable::interior_segment(double x) const {
   const auto above = std::upper_bound(x_.begin(), x_.end(), x);
-  const auto k = static_cast<std::size_t>(above - x_.begin()) - 1;
-  return {y_[k] + slope_[k] * (x - x_[k]), slope_[k], false};
+  return static_cast<std::size_t>(above - x_.begin()) - 1;
 }
 
 }  // namespace clinch
