@@ -66,6 +66,7 @@ class ElasticPlasticBehavior final : public Behavior {
       // works in the whole linear space, where u^pl of the potential's components moves the
       // forces of the others (§6.4).
       coupled_space_ = diagonal_ ? coupled_->components : linear_;
+      for (int i = 0; i < 6; ++i) coupled_slots_[i] = has_component(coupled_space_, i + 1);
       if (diagonal_ && !coupled_->potential.is_max()) {
         coupled_->grouped = GroupedReturn::create(coupled_->potential, space_);
       }
@@ -85,50 +86,118 @@ class ElasticPlasticBehavior final : public Behavior {
   bool tangent_is_symmetric() const override { return true; }
 
   IntegrationStatus integrate(const BehaviorInput& in, BehaviorOutput& out) const override {
-    const bool tangent = in.tangent != TangentRequest::None;
-    const bool consistent = in.tangent == TangentRequest::Consistent;
+    Vector6 plastic;
+    const Vector6 trial = predict(in, out, plastic);
+    const CoupledReturn r = coupled_ ? coupled_return(trial, out.history_new[kCoupledEquivalent],
+                                                      in.tangent == TangentRequest::Consistent)
+                                     : CoupledReturn{};
+    return correct(in, out, trial, r, plastic);
+  }
+
+  // Where the coupled plasticity has the side-by-side grouped return, its returns run kLanes at
+  // a time (GroupedReturn::solve_lanes); the rest of each update is integrate's.
+  void integrate_batch(std::span<const BehaviorInput> in, std::span<BehaviorOutput> out,
+                       std::span<IntegrationStatus> status) const override {
+    if (!coupled_ || !coupled_->grouped || !coupled_->grouped->has_lanes()) {
+      Behavior::integrate_batch(in, out, status);
+      return;
+    }
+    constexpr int kLanes = GroupedReturn::kLanes;
+    std::array<Vector6, kLanes> trial, plastic;
+    std::array<double, kLanes> ubar;
+    std::array<CoupledReturn, kLanes> r;
+    for (std::size_t first = 0; first < in.size(); first += kLanes) {
+      const int count = static_cast<int>(std::min<std::size_t>(kLanes, in.size() - first));
+      bool consistent = false;
+      for (int l = 0; l < count; ++l) {
+        const std::size_t k = first + static_cast<std::size_t>(l);
+        trial[l] = predict(in[k], out[k], plastic[l]);
+        ubar[l] = out[k].history_new[kCoupledEquivalent];
+        consistent = consistent || in[k].tangent == TangentRequest::Consistent;
+      }
+      coupled_->grouped->solve_lanes(coupled_->yield, trial.data(), ubar.data(), count, consistent,
+                                     r.data());
+      for (int l = 0; l < count; ++l) {
+        const std::size_t k = first + static_cast<std::size_t>(l);
+        if (!r[l].converged) {
+          r[l] = closest_point_return(space_, coupled_->potential, coupled_->yield, trial[l],
+                                      ubar[l], consistent);
+        }
+        status[k] = correct(in[k], out[k], trial[l], r[l], plastic[l]);
+      }
+    }
+  }
+
+  void describe_state(std::span<const double> history, BehaviorState& state) const override {
+    const double* h = history.data();
+    state.plastic_motion = Eigen::Map<const Vector6>(h + kPlasticMotion);
+    for (const UncoupledPlasticity& p : uncoupled_) {
+      state.equivalent_plastic[p.slot] = h[kUncoupledEquivalent + p.slot];
+    }
+    state.uncoupled_plastic = uncoupled_mask_;
+    if (coupled_) {
+      state.has_coupled_plasticity = true;
+      state.coupled_equivalent_plastic = h[kCoupledEquivalent];
+    }
+    state.back_force = Eigen::Map<const Vector6>(h + kBackForce);
+  }
+
+ private:
+  // The start of an update: history_old into history_new, u^pl_n into `plastic`, the elastic
+  // predictor F^tr = K (u − u^pl_n) into out.force (§6.3 and §6.4 step 1; correct() writes
+  // the tangent). Returns F^tr on the coupled plasticity's components (0 elsewhere).
+  Vector6 predict(const BehaviorInput& in, BehaviorOutput& out, Vector6& plastic) const {
     std::copy(in.history_old.begin(), in.history_old.begin() + kHistorySize,
               out.history_new.begin());
-    double* h = out.history_new.data();
+    const double* h = out.history_new.data();
     const Vector6 u = in.motion_old + in.increment;
-    Vector6 plastic = Eigen::Map<const Vector6>(h + kPlasticMotion);
-
-    // Elastic predictor F^tr = K (u − u^pl_n) on the linear components (§6.3 and §6.4 step 1).
+    plastic = Eigen::Map<const Vector6>(h + kPlasticMotion);
     if (diagonal_) {
       out.force = k_.diagonal().cwiseProduct(u - plastic);
     } else {
       out.force.noalias() = k_ * (u - plastic);
     }
-    if (tangent) out.tangent = k_;
+    return out.force.cwiseProduct(coupled_slots_);
+  }
 
-    if (coupled_) {
-      Vector6 trial = out.force;
-      for (int i = 0; i < 6; ++i) {
-        if (!has_component(coupled_space_, i + 1)) trial[i] = 0.0;
-      }
-      const double ubar = h[kCoupledEquivalent];
-      const CoupledReturn r = coupled_return(trial, ubar, consistent);
-      if (!r.converged) {
-        out.message = "connector return mapping did not converge (coupled plasticity)";
-        return IntegrationStatus::Failure;
-      }
-      if (r.plastic) {
-        // §6.4 step 4: u^pl = u^pl_n + K⁻¹(F^tr − F), ū = ū_n + Δλ.
-        if (diagonal_) {
-          plastic += (trial - r.force).cwiseQuotient(space_.stiffness.diagonal());
-        } else {
-          plastic.noalias() += space_.compliance * (trial - r.force);
-        }
-        h[kCoupledEquivalent] = ubar + r.multiplier;
-        for (int i = 0; i < 6; ++i) {
-          if (!has_component(coupled_space_, i + 1)) continue;
-          out.force[i] = r.force[i];
-          if (!consistent) continue;
-          for (int j = 0; j < 6; ++j) {
-            if (has_component(coupled_space_, j + 1)) out.tangent(i, j) = r.tangent(i, j);
+  // The rest of an update from the coupled return `r` of `trial` (a default CoupledReturn
+  // without coupled plasticity): its flow, then the uncoupled plasticities and the nonlinear
+  // elastic components.
+  IntegrationStatus correct(const BehaviorInput& in, BehaviorOutput& out, const Vector6& trial,
+                            const CoupledReturn& r, Vector6& plastic) const {
+    const bool tangent = in.tangent != TangentRequest::None;
+    const bool consistent = in.tangent == TangentRequest::Consistent;
+    double* h = out.history_new.data();
+    if (coupled_ && !r.converged) {
+      out.message = "connector return mapping did not converge (coupled plasticity)";
+      return IntegrationStatus::Failure;
+    }
+    const bool coupled_flow = coupled_ && r.plastic;
+    // The tangent is K, with the coupled return's on its components where it flowed (written
+    // once: where the return covers every linear component, it is the return's).
+    if (tangent) {
+      if (coupled_flow && consistent && coupled_space_ == linear_) {
+        out.tangent = r.tangent;
+      } else {
+        out.tangent = k_;
+        if (coupled_flow && consistent) {
+          for (int i = 0; i < 6; ++i) {
+            for (int j = 0; j < 6; ++j) {
+              if (coupled_slots_[i] * coupled_slots_[j] != 0) out.tangent(i, j) = r.tangent(i, j);
+            }
           }
         }
       }
+    }
+    if (coupled_flow) {
+      // §6.4 step 4: u^pl = u^pl_n + K⁻¹(F^tr − F), ū = ū_n + Δλ.
+      if (diagonal_) {
+        plastic += (trial - r.force).cwiseProduct(space_.compliance.diagonal());
+      } else {
+        plastic.noalias() += space_.compliance * (trial - r.force);
+      }
+      h[kCoupledEquivalent] += r.multiplier;
+      out.force = (coupled_slots_.array() != 0).select(r.force, out.force);
     }
 
     for (const UncoupledPlasticity& p : uncoupled_) {
@@ -140,28 +209,28 @@ class ElasticPlasticBehavior final : public Behavior {
       ri.back_old = h[kBackForce + i];
       ri.yield = &p.yield;
       ri.kinematic = p.kinematic ? &*p.kinematic : nullptr;
-      const UncoupledReturn r = uncoupled_return(ri);
-      if (!r.converged) {
+      const UncoupledReturn u = uncoupled_return(ri);
+      if (!u.converged) {
         out.message =
             "connector return mapping did not converge (uncoupled plasticity, component " +
             std::to_string(i + 1) + ")";
         return IntegrationStatus::Failure;
       }
-      if (!r.plastic) continue;
+      if (!u.plastic) continue;
       // §6.3 step 3; with a coupled K the flow s e_i changes every force by −sΔλ K e_i.
-      const double dl = r.sign * r.multiplier;
+      const double dl = u.sign * u.multiplier;
       plastic[i] += dl;
-      h[kUncoupledEquivalent + i] += r.multiplier;
-      h[kBackForce + i] = r.back;
+      h[kUncoupledEquivalent + i] += u.multiplier;
+      h[kBackForce + i] = u.back;
       if (diagonal_) {
         out.force[i] -= k_(i, i) * dl;
         if (consistent) {
-          out.tangent(i, i) = k_(i, i) - k_(i, i) * k_(i, i) / r.tangent_denominator;
+          out.tangent(i, i) = k_(i, i) - k_(i, i) * k_(i, i) / u.tangent_denominator;
         }
       } else {
         out.force.noalias() -= dl * k_.col(i);
         if (consistent)
-          out.tangent.noalias() -= k_.col(i) * (k_.col(i).transpose() / r.tangent_denominator);
+          out.tangent.noalias() -= k_.col(i) * (k_.col(i).transpose() / u.tangent_denominator);
       }
     }
     Eigen::Map<Vector6>(h + kPlasticMotion) = plastic;
@@ -180,21 +249,6 @@ class ElasticPlasticBehavior final : public Behavior {
     return IntegrationStatus::Success;
   }
 
-  void describe_state(std::span<const double> history, BehaviorState& state) const override {
-    const double* h = history.data();
-    state.plastic_motion = Eigen::Map<const Vector6>(h + kPlasticMotion);
-    for (const UncoupledPlasticity& p : uncoupled_) {
-      state.equivalent_plastic[p.slot] = h[kUncoupledEquivalent + p.slot];
-    }
-    state.uncoupled_plastic = uncoupled_mask_;
-    if (coupled_) {
-      state.has_coupled_plasticity = true;
-      state.coupled_equivalent_plastic = h[kCoupledEquivalent];
-    }
-    state.back_force = Eigen::Map<const Vector6>(h + kBackForce);
-  }
-
- private:
   // §6.4/§6.6: the multi-surface return for a MAX potential; the grouped return where it
   // applies, with the general closest-point return as its fallback.
   CoupledReturn coupled_return(const Vector6& trial, double ubar, bool consistent) const {
@@ -214,6 +268,7 @@ class ElasticPlasticBehavior final : public Behavior {
   bool diagonal_;
   ElasticSpace space_;
   ComponentMask coupled_space_ = 0;
+  Vector6 coupled_slots_ = Vector6::Zero();  // 1 on the components of coupled_space_, else 0
   std::vector<UncoupledPlasticity> uncoupled_;
   ComponentMask uncoupled_mask_ = 0;
   std::optional<CoupledPlasticity> coupled_;

@@ -45,6 +45,17 @@ class GroupedReturn {
 
   static constexpr int kMaxGroups = 6;  // the groups are disjoint sets of the six components
 
+  // solve_lanes takes up to kLanes trial forces side by side where every group is uniform and
+  // β = 1.5 (has_lanes); otherwise it is solve() on each.
+  static constexpr int kLanes = 16;
+  bool has_lanes() const { return exponent_ == Exponent::ThreeHalves && !nonuniform_; }
+  // solve() on trial[l], equivalent_old[l] into out[l] for l < count ≤ kLanes, to round-off
+  // (grouped_return_lanes.cpp). A lane that the side-by-side Newton does not settle goes
+  // through solve() alone; `converged` false hands it to the general return, as solve() does.
+  void solve_lanes(const IsotropicHardeningLaw& yield, const Vector6* trial,
+                   const double* equivalent_old, int count, bool want_tangent,
+                   CoupledReturn* out) const;
+
  private:
   struct Group {
     ComponentMask components = 0;

@@ -32,6 +32,8 @@ class IsotropicHardeningLaw {
     return kind_ == Kind::Constant ? YieldSample{f0_, 0.0} : exponential(equivalent_plastic);
   }
   double initial() const { return at(0.0).value; }
+  // The table of a tabular law (nullptr otherwise), for callers that evaluate it their way.
+  const PiecewiseLinearTable* table() const { return table_ ? &*table_ : nullptr; }
 
  private:
   YieldSample exponential(double equivalent_plastic) const;

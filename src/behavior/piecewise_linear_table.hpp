@@ -42,6 +42,13 @@ class PiecewiseLinearTable {
     return {y_[k] + slope_[k] * (x - x_[k]), slope_[k], false};
   }
 
+  // evaluate() at x[l] into value[l] and slope[l] for l < kLanes, without branches on x, so
+  // that the loops over lanes vectorise (inline: compiled for the vector width of its caller).
+  template <int kLanes>
+  [[gnu::always_inline]] inline void evaluate_lanes(const double* __restrict x,
+                                                    double* __restrict value,
+                                                    double* __restrict slope) const;
+
   std::size_t size() const { return x_.size(); }
   Extrapolation extrapolation() const { return extrapolation_; }
 
@@ -53,5 +60,37 @@ class PiecewiseLinearTable {
   std::vector<double> slope_;  // slope_[k]: segment [x_k, x_{k+1}]
   Extrapolation extrapolation_;
 };
+
+template <int kLanes>
+inline void PiecewiseLinearTable::evaluate_lanes(const double* __restrict x,
+                                                 double* __restrict value,
+                                                 double* __restrict slope) const {
+  const std::size_t n = x_.size();
+  const bool linear = extrapolation_ == Extrapolation::Linear;
+  // Before x_0: the first segment continued (LINEAR) or y_0; from x_k on, segment k; from the
+  // last abscissa on, the end segment (§1.2, §4.2 rule), as evaluate() has them.
+  const double before = linear && n > 1 ? slope_[0] : 0.0;
+  const double after = linear && n > 1 ? slope_[n - 2] : 0.0;
+  double base[kLanes];
+  for (int l = 0; l < kLanes; ++l) {
+    base[l] = x_[0];
+    value[l] = y_[0];
+    slope[l] = before;
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    const double xk = x_[k], yk = y_[k], sk = k + 1 < n ? slope_[k] : after;
+    for (int l = 0; l < kLanes; ++l) {
+      const bool beyond = x[l] >= xk;
+      base[l] = beyond ? xk : base[l];
+      value[l] = beyond ? yk : value[l];
+      slope[l] = beyond ? sk : slope[l];
+    }
+  }
+  for (int l = 0; l < kLanes; ++l) {
+    const bool nan = x[l] != x[l];  // a NaN motion reaches the caller's checks, as in evaluate()
+    value[l] = nan ? x[l] : value[l] + slope[l] * (x[l] - base[l]);
+    slope[l] = nan ? x[l] : slope[l];
+  }
+}
 
 }  // namespace clinch

@@ -112,6 +112,42 @@ void run(benchmark::State& state, double lo, double hi, const Vector6& stiffness
   state.counters["failures"] = static_cast<double>(failures);
 }
 
+// The same through Behavior::integrate_batch, `batch` updates a call, as the assembly calls it
+// (ConnectorSystem::evaluate); items are updates.
+void run_batched(benchmark::State& state, double lo, double hi, std::size_t batch) {
+  SpotWeld weld(kStiffness);
+  if (!weld.behavior) {
+    state.SkipWithError("no behaviour");
+    return;
+  }
+  const std::vector<Vector6> motions =
+      trial_motions(weld.model.behaviors.behaviors.at(0), kStiffness, lo, hi);
+  const auto size = static_cast<std::size_t>(weld.behavior->history_size());
+  const std::vector<double> history(size, 0.0);
+  std::vector<double> trial(size * batch);
+  const Vector6 zero = Vector6::Zero();
+  std::vector<BehaviorOutput> out(batch);
+  std::vector<IntegrationStatus> status(batch);
+  for (std::size_t k = 0; k < batch; ++k) {
+    out[k].history_new = std::span<double>(trial.data() + k * size, size);
+  }
+  std::size_t n = 0;
+  std::size_t failures = 0;
+  std::vector<BehaviorInput> in;
+  in.reserve(batch);
+  for (auto _ : state) {
+    in.clear();
+    for (std::size_t k = 0; k < batch; ++k) {
+      in.push_back({zero, motions[n++ & 1023], 0, 0, history, TangentRequest::Consistent});
+    }
+    weld.behavior->integrate_batch(in, out, status);
+    for (const IntegrationStatus s : status) failures += s != IntegrationStatus::Success;
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * batch));
+  state.counters["failures"] = static_cast<double>(failures);
+}
+
 // Motions of 2 to 20 times the first-yield motion along random rays: every update is plastic.
 void BM_SpotWeldPlasticUpdate(benchmark::State& state) { run(state, 2.0, 20.0); }
 void BM_SpotWeldNearYield(benchmark::State& state) { run(state, 1.05, 1.5); }
@@ -120,6 +156,14 @@ BENCHMARK(BM_SpotWeldNearYield);
 void BM_SpotWeldElasticUpdate(benchmark::State& state) { run(state, 1e-3, 1e-2); }
 BENCHMARK(BM_SpotWeldPlasticUpdate);
 BENCHMARK(BM_SpotWeldElasticUpdate);
+void BM_SpotWeldPlasticUpdateBatched(benchmark::State& state) {
+  run_batched(state, 2.0, 20.0, static_cast<std::size_t>(state.range(0)));
+}
+BENCHMARK(BM_SpotWeldPlasticUpdateBatched)->Arg(8)->Arg(16)->Arg(64);
+void BM_SpotWeldNearYieldBatched(benchmark::State& state) {
+  run_batched(state, 1.05, 1.5, static_cast<std::size_t>(state.range(0)));
+}
+BENCHMARK(BM_SpotWeldNearYieldBatched)->Arg(16)->Arg(64);
 // Plastic updates of the variant with unequal stiffnesses in its NORM groups.
 void BM_SpotWeldUnequalStiffnessPlasticUpdate(benchmark::State& state) {
   run(state, 2.0, 20.0, kUnequalStiffness);

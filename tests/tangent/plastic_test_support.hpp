@@ -17,8 +17,7 @@
 
 namespace clinch {
 
-inline Vector6 vec(double a, double b = 0, double c = 0, double d = 0, double e = 0,
-                   double f = 0) {
+inline Vector6 vec(double a, double b = 0, double c = 0, double d = 0, double e = 0, double f = 0) {
   Vector6 v;
   v << a, b, c, d, e, f;
   return v;
@@ -66,6 +65,33 @@ class Driver {
     e.status = law_.integrate(in, e.out);
     return e;
   }
+  // evaluate() at each of `us`, through one Behavior::integrate_batch call where `batched`.
+  std::vector<Evaluation> evaluate_all(const std::vector<Vector6>& us, bool batched) const {
+    std::vector<Evaluation> all(us.size());
+    if (!batched) {
+      for (std::size_t k = 0; k < us.size(); ++k) all[k] = evaluate(us[k]);
+      return all;
+    }
+    std::vector<Vector6> increments;
+    increments.reserve(us.size());
+    std::vector<BehaviorInput> in;
+    std::vector<BehaviorOutput> out(us.size());
+    std::vector<IntegrationStatus> status(us.size());
+    for (std::size_t k = 0; k < us.size(); ++k) {
+      increments.push_back(us[k] - motion_);
+      in.push_back({motion_, increments.back(), 0.0, 0.0, committed_, TangentRequest::Consistent});
+      all[k].history.assign(committed_.size(), std::nan(""));
+      out[k].history_new = all[k].history;
+    }
+    law_.integrate_batch(in, out, status);
+    for (std::size_t k = 0; k < us.size(); ++k) {
+      all[k].status = status[k];
+      all[k].out = out[k];
+      all[k].out.history_new = all[k].history;
+    }
+    return all;
+  }
+
   // Integrates to `u` and commits; returns the converged evaluation.
   Evaluation step(const Vector6& u) {
     Evaluation e = evaluate(u);
@@ -84,17 +110,26 @@ class Driver {
 
   // §1.4: D_fd[:, j] = (f(u + h e_j) − f(u − h e_j))/(2h), h = 1e-6·max(|u|_∞, u_s), every
   // evaluation from the committed history; pass when max|D − D_fd| ≤ 1e-5·max|D| + 1e-8·k_s.
-  void expect_fd_tangent(const Vector6& u, double u_s, double k_s, ComponentMask mask) const {
-    const Evaluation at = evaluate(u);
-    ASSERT_EQ(at.status, IntegrationStatus::Success) << at.out.message;
+  // With `batched`, u and its perturbations go through one integrate_batch call.
+  void expect_fd_tangent(const Vector6& u, double u_s, double k_s, ComponentMask mask,
+                         bool batched = false) const {
     const double h = 1e-6 * std::max(u.cwiseAbs().maxCoeff(), u_s);
-    Matrix6 fd = Matrix6::Zero();
+    std::vector<Vector6> points{u};
     for (int j = 0; j < 6; ++j) {
-      if (!has_component(mask, j + 1)) continue;
       Vector6 plus = u, minus = u;
       plus[j] += h;
       minus[j] -= h;
-      const Evaluation ep = evaluate(plus), em = evaluate(minus);
+      points.push_back(plus);
+      points.push_back(minus);
+    }
+    const std::vector<Evaluation> e = evaluate_all(points, batched);
+    const Evaluation& at = e[0];
+    ASSERT_EQ(at.status, IntegrationStatus::Success) << at.out.message;
+    Matrix6 fd = Matrix6::Zero();
+    for (int j = 0; j < 6; ++j) {
+      if (!has_component(mask, j + 1)) continue;
+      const Evaluation& ep = e[static_cast<std::size_t>(1 + 2 * j)];
+      const Evaluation& em = e[static_cast<std::size_t>(2 + 2 * j)];
       ASSERT_EQ(ep.status, IntegrationStatus::Success);
       ASSERT_EQ(em.status, IntegrationStatus::Success);
       fd.col(j) = (ep.out.force - em.out.force) / (2 * h);
