@@ -12,6 +12,9 @@ namespace clinch {
 
 struct ConnectorSystem::LocalSystem {
   KinematicsResult kinematics;
+  // The behaviour's input (behaviors.md §1.1: u = p − ref): the last converged motion and the
+  // increment from it.
+  Vector6 motion_old, increment;
   Eigen::Matrix<double, kMaxLocalEquations, 1> r;
   Eigen::Matrix<double, kMaxLocalEquations, kMaxLocalEquations> k;
   std::array<std::uint8_t, 6> active{};  // multiplier rows in use
@@ -44,6 +47,8 @@ ConnectorSystem::ConnectorSystem(const Model& model, const AnalysisPlan& plan)
     if (needs_dynamic(plan_.connectors[c])) ensure_dynamic(c);
   }
 }
+
+ConnectorSystem::~ConnectorSystem() = default;
 
 bool ConnectorSystem::needs_dynamic(const ConnectorRecord& r) const {
   constexpr ComponentMask kRotational = 0b111000;
@@ -191,41 +196,69 @@ NodePose ConnectorSystem::pose(std::int32_t node) const {
   return p;
 }
 
-EvalStatus ConnectorSystem::evaluate_connector(std::size_t c, LocalSystem& local,
-                                               bool want_tangent, ConnectorOutput* output) {
+EvalStatus ConnectorSystem::evaluate_connector(std::size_t c, LocalSystem& local, bool want_tangent,
+                                               ConnectorOutput* output) {
+  BehaviorOutput behavior;
+  EvalStatus status = prepare_connector(c, local, want_tangent, behavior);
+  const ConnectorRecord& r = plan_.connectors[c];
+  if (status.ok && r.behavior) {
+    const BehaviorInput in = behavior_input(c, local);
+    status = behavior_status(c, behavior, r.behavior->integrate(in, behavior));
+  }
+  return status.ok ? finish_connector(c, local, behavior, want_tangent, output) : status;
+}
+
+EvalStatus ConnectorSystem::prepare_connector(std::size_t c, LocalSystem& local, bool want_tangent,
+                                              BehaviorOutput& behavior) {
   const ConnectorRecord& r = plan_.connectors[c];
   const ConnectorKinematics& kinematics = plan_.kinematics[r.kinematics];
-  Dynamic* d = dynamic(c);
+  const Dynamic* d = dynamic(c);
   KinematicsResult& k = local.kinematics;
   kinematics.evaluate(pose(r.nodes[0]), pose(r.nodes[1]), nlgeom_,
                       d ? d->position_n : kinematics.initial_position(), want_tangent && nlgeom_,
                       k);
-  const Element& element = model_.elements[static_cast<std::size_t>(r.element)];
-  if (!k.ok) {
-    return {false, fmt::format("connector element {}: {}",
-                               qualified_label(model_, element.instance, element.label),
-                               k.message)};
-  }
+  if (!k.ok) return {false, fmt::format("connector element {}: {}", label(c), k.message)};
+  behavior.force.setZero();
+  behavior.tangent.setZero();
+  if (!r.behavior) return {};
+  local.motion_old = d ? d->motion_n : Vector6(kinematics.initial_position() - r.reference);
+  local.increment = k.position - r.reference - local.motion_old;
+  behavior.history_new = std::span<double>(history_.data() + r.history,
+                                           static_cast<std::size_t>(r.behavior->history_size()));
+  return {};
+}
+
+BehaviorInput ConnectorSystem::behavior_input(std::size_t c, const LocalSystem& local) const {
+  const ConnectorRecord& r = plan_.connectors[c];
+  const std::size_t h = static_cast<std::size_t>(r.behavior->history_size());
+  return {local.motion_old,
+          local.increment,
+          time_,
+          dt_,
+          std::span<const double>(history_n_.data() + r.history, h),
+          TangentRequest::Consistent};
+}
+
+EvalStatus ConnectorSystem::behavior_status(std::size_t c, const BehaviorOutput& behavior,
+                                            IntegrationStatus status) const {
+  if (status != IntegrationStatus::Failure) return {};
+  return {false, fmt::format("connector element {}: {}", label(c), behavior.message)};
+}
+
+std::string ConnectorSystem::label(std::size_t c) const {
+  const Element& element = model_.elements[static_cast<std::size_t>(plan_.connectors[c].element)];
+  return qualified_label(model_, element.instance, element.label);
+}
+
+EvalStatus ConnectorSystem::finish_connector(std::size_t c, LocalSystem& local,
+                                             const BehaviorOutput& behavior, bool want_tangent,
+                                             ConnectorOutput* output) {
+  const ConnectorRecord& r = plan_.connectors[c];
+  Dynamic* d = dynamic(c);
+  const KinematicsResult& k = local.kinematics;
   const Vector6 u = k.position - r.reference;  // behaviors.md §1.1
-  Vector6 elastic = Vector6::Zero();
-  Matrix6 stiffness = Matrix6::Zero();
-  if (r.behavior) {
-    const Vector6 motion_old = d ? d->motion_n : Vector6(kinematics.initial_position() - r.reference);
-    const Vector6 increment = u - motion_old;
-    const std::size_t h = static_cast<std::size_t>(r.behavior->history_size());
-    BehaviorInput in{motion_old, increment, time_, dt_,
-                     std::span<const double>(history_n_.data() + r.history, h),
-                     TangentRequest::Consistent};
-    BehaviorOutput out;
-    out.history_new = std::span<double>(history_.data() + r.history, h);
-    if (r.behavior->integrate(in, out) == IntegrationStatus::Failure) {
-      return {false, fmt::format("connector element {}: {}",
-                                 qualified_label(model_, element.instance, element.label),
-                                 out.message)};
-    }
-    elastic = out.force;
-    stiffness = out.tangent;
-  }
+  Vector6 elastic = behavior.force;
+  const Matrix6& stiffness = behavior.tangent;
   // Multiplier rows (connection-types.md §3.8, behaviors.md §4.4, §5): one per component that
   // can be constrained; inactive rows hold λ = 0.
   Vector6 constraint_force = Vector6::Zero();
@@ -237,8 +270,8 @@ EvalStatus ConnectorSystem::evaluate_connector(std::size_t c, LocalSystem& local
     const double lambda = x_[eq];
     bool active = true;
     double g = 0;
-    const auto status = d ? static_cast<StopStatus>(d->status[static_cast<std::size_t>(i - 1)])
-                          : StopStatus::Free;
+    const auto status =
+        d ? static_cast<StopStatus>(d->status[static_cast<std::size_t>(i - 1)]) : StopStatus::Free;
     if (has_component(r.constrained | r.rigid, i)) {
       g = k.change[i - 1];
     } else if (d && has_component(d->motion, i)) {
@@ -279,9 +312,9 @@ EvalStatus ConnectorSystem::evaluate_connector(std::size_t c, LocalSystem& local
         if (total[i] == 0 || !has_component(k.existing, i + 1)) continue;
         for (int b = 0; b < n; ++b) {
           for (int a = 0; a < n; ++a) {
-            local.k(a, b) += total[i] * k.h[static_cast<std::size_t>(i)](
-                                            r.columns[static_cast<std::size_t>(a)],
-                                            r.columns[static_cast<std::size_t>(b)]);
+            local.k(a, b) +=
+                total[i] * k.h[static_cast<std::size_t>(i)](r.columns[static_cast<std::size_t>(a)],
+                                                            r.columns[static_cast<std::size_t>(b)]);
           }
         }
       }
@@ -376,7 +409,8 @@ void ConnectorSystem::evaluate_spring(const SpringRecord& s, LocalSystem& local,
 
 void ConnectorSystem::scatter(const LocalEquations& l, const LocalSystem& local,
                               SparseMatrix* tangent) {
-  for (int a = 0; a < l.count; ++a) internal_[l.equation[static_cast<std::size_t>(a)]] += local.r[a];
+  for (int a = 0; a < l.count; ++a)
+    internal_[l.equation[static_cast<std::size_t>(a)]] += local.r[a];
   if (!tangent) return;
   const int* position = plan_.positions.data() + l.positions;
   double* values = tangent->values.data();
@@ -397,32 +431,72 @@ void ConnectorSystem::scatter(const LocalEquations& l, const LocalSystem& local,
   }
 }
 
+void ConnectorSystem::finish_scatter(std::size_t c, const LocalSystem& local,
+                                     SparseMatrix* tangent) {
+  const ConnectorRecord& r = plan_.connectors[c];
+  for (int j = 0; j < r.multiplier_count; ++j) {
+    multiplier_active_[static_cast<std::size_t>(
+        r.local.equation[static_cast<std::size_t>(r.column_count + j)])] =
+        local.active[static_cast<std::size_t>(j)];
+  }
+  scatter(r.local, local, tangent);
+}
+
 EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* tangent) {
   internal_.setZero();
   if (predicting_) predictor_.setZero();
   if (tangent) std::fill(tangent->values.begin(), tangent->values.end(), 0.0);
-  LocalSystem local;
-  for (std::size_t c = 0; c < plan_.connectors.size(); ++c) {
-    const EvalStatus status = evaluate_connector(c, local, tangent != nullptr, nullptr);
-    if (!status.ok) return status;
-    const ConnectorRecord& r = plan_.connectors[c];
-    for (int j = 0; j < r.multiplier_count; ++j) {
-      multiplier_active_[static_cast<std::size_t>(
-          r.local.equation[static_cast<std::size_t>(r.column_count + j)])] =
-          local.active[static_cast<std::size_t>(j)];
+  // Consecutive connectors that share a behaviour are integrated kBehaviorBatch at a time
+  // (Behavior::integrate_batch), each finished and scattered in order after its batch.
+  const bool want_tangent = tangent != nullptr;
+  batch_.resize(kBehaviorBatch);
+  batch_outputs_.resize(kBehaviorBatch);
+  batch_status_.resize(kBehaviorBatch);
+  std::size_t c = 0;
+  while (c < plan_.connectors.size()) {
+    const Behavior* behavior = plan_.connectors[c].behavior;
+    std::size_t count = 1;
+    while (behavior && count < kBehaviorBatch && c + count < plan_.connectors.size() &&
+           plan_.connectors[c + count].behavior == behavior) {
+      ++count;
     }
-    scatter(r.local, local, tangent);
+    if (count == 1) {
+      const EvalStatus status = evaluate_connector(c, batch_[0], want_tangent, nullptr);
+      if (!status.ok) return status;
+      finish_scatter(c, batch_[0], tangent);
+      ++c;
+      continue;
+    }
+    batch_inputs_.clear();
+    for (std::size_t j = 0; j < count; ++j) {
+      const EvalStatus status =
+          prepare_connector(c + j, batch_[j], want_tangent, batch_outputs_[j]);
+      if (!status.ok) return status;
+      batch_inputs_.push_back(behavior_input(c + j, batch_[j]));
+    }
+    behavior->integrate_batch(batch_inputs_, std::span(batch_outputs_).first(count),
+                              std::span(batch_status_).first(count));
+    for (std::size_t j = 0; j < count; ++j) {
+      EvalStatus status = behavior_status(c + j, batch_outputs_[j], batch_status_[j]);
+      if (status.ok) {
+        status = finish_connector(c + j, batch_[j], batch_outputs_[j], want_tangent, nullptr);
+      }
+      if (!status.ok) return status;
+      finish_scatter(c + j, batch_[j], tangent);
+    }
+    c += count;
   }
   for (const SpringRecord& s : plan_.springs) {
-    evaluate_spring(s, local, tangent != nullptr, nullptr, nullptr);
-    scatter(s.local, local, tangent);
+    evaluate_spring(s, batch_[0], want_tangent, nullptr, nullptr);
+    scatter(s.local, batch_[0], tangent);
   }
   residual = internal_ - external_;
   if (predicting_ && tangent) residual += predictor_;
   for (int eq : prescribed_list_) {
     // Newton's row of a prescribed DOF is Δu = target − u.
     residual[eq] = x_[eq] - target_[eq];
-    if (tangent) tangent->values[static_cast<std::size_t>(plan_.diagonal[static_cast<std::size_t>(eq)])] = 1.0;
+    if (tangent)
+      tangent->values[static_cast<std::size_t>(plan_.diagonal[static_cast<std::size_t>(eq)])] = 1.0;
   }
   return {};
 }
@@ -567,8 +641,10 @@ bool ConnectorSystem::update_stops() {
       std::uint8_t next = status;
       if (status == static_cast<std::uint8_t>(StopStatus::Upper) && lambda < -tol_f) next = 0;
       if (status == static_cast<std::uint8_t>(StopStatus::Lower) && lambda > tol_f) next = 0;
-      if (next == 0 && violated(stop.upper, 1.0)) next = static_cast<std::uint8_t>(StopStatus::Upper);
-      if (next == 0 && violated(stop.lower, -1.0)) next = static_cast<std::uint8_t>(StopStatus::Lower);
+      if (next == 0 && violated(stop.upper, 1.0))
+        next = static_cast<std::uint8_t>(StopStatus::Upper);
+      if (next == 0 && violated(stop.lower, -1.0))
+        next = static_cast<std::uint8_t>(StopStatus::Lower);
       if (next != status) {
         status = next;
         changed = true;

@@ -18,24 +18,28 @@ enum class StopStatus : std::uint8_t { Free = 0, Lower = 1, Upper = 2, Locked = 
 
 // Output quantities of one connector at the current state (output-variables.md §2).
 struct ConnectorOutput {
-  Vector6 position = Vector6::Zero();        // CP
-  Vector6 change = Vector6::Zero();          // CU (constraint residual for constrained ones)
-  Vector6 constitutive = Vector6::Zero();    // CCU
-  Vector6 elastic = Vector6::Zero();         // CEF (includes RIGID multipliers)
-  Vector6 multiplier = Vector6::Zero();      // CRF
-  Vector6 applied = Vector6::Zero();         // CCF
-  Vector6 total = Vector6::Zero();           // CTF = CEF + CRF − CCF
-  std::array<std::uint8_t, 6> status{};      // CSLST
-  BehaviorState behavior;                    // CUP, CUPEQ, CALPHAF (plastic behaviours)
+  Vector6 position = Vector6::Zero();      // CP
+  Vector6 change = Vector6::Zero();        // CU (constraint residual for constrained ones)
+  Vector6 constitutive = Vector6::Zero();  // CCU
+  Vector6 elastic = Vector6::Zero();       // CEF (includes RIGID multipliers)
+  Vector6 multiplier = Vector6::Zero();    // CRF
+  Vector6 applied = Vector6::Zero();       // CCF
+  Vector6 total = Vector6::Zero();         // CTF = CEF + CRF − CCF
+  std::array<std::uint8_t, 6> status{};    // CSLST
+  BehaviorState behavior;                  // CUP, CUPEQ, CALPHAF (plastic behaviours)
 };
 
 class ConnectorSystem final : public NonlinearProblem {
  public:
   ConnectorSystem(const Model& model, const AnalysisPlan& plan);
+  ~ConnectorSystem() override;  // in the .cpp, where LocalSystem is complete
 
   // ---- the current increment's conditions ----
   void set_nlgeom(bool nlgeom);
-  void set_time(double time, double dt) { time_ = time; dt_ = dt; }
+  void set_time(double time, double dt) {
+    time_ = time;
+    dt_ = dt;
+  }
   bool nlgeom() const { return nlgeom_; }
   void clear_conditions();
   void prescribe(int equation, double value);  // *BOUNDARY target of this increment
@@ -71,7 +75,8 @@ class ConnectorSystem final : public NonlinearProblem {
   double value(int equation) const { return x_[equation]; }
   // Nodal value of DOF `dof` of `node` (0 when inactive): U, UR (rotation vector under NLGEOM).
   double nodal_value(std::int32_t node, int dof) const;
-  double reaction(std::int32_t node, int dof) const;  // RF/RM: internal − applied at prescribed DOFs
+  double reaction(std::int32_t node,
+                  int dof) const;  // RF/RM: internal − applied at prescribed DOFs
   double applied_load(std::int32_t node, int dof) const;  // CF/CM
   double converged_value(int equation) const { return x_n_[equation]; }
   ConnectorOutput connector_output(std::size_t connector);
@@ -80,7 +85,7 @@ class ConnectorSystem final : public NonlinearProblem {
   const AnalysisPlan& plan() const { return plan_; }
 
  private:
-  struct Dynamic {  // per-connector state that only some connectors need
+  struct Dynamic {                         // per-connector state that only some connectors need
     Vector6 position_n = Vector6::Zero();  // last converged positions (angle branches, §3.6)
     Vector6 motion_n = Vector6::Zero();    // last converged constitutive motion
     std::array<std::uint8_t, 6> status{}, status_n{};
@@ -95,10 +100,23 @@ class ConnectorSystem final : public NonlinearProblem {
   const Dynamic* dynamic(std::size_t connector) const;
   Dynamic& ensure_dynamic(std::size_t connector);
   NodePose pose(std::int32_t node) const;
+  // One connector: prepare (kinematics, the behaviour's input), integrate its behaviour,
+  // finish (constraints, the local residual and tangent, `output`). evaluate() runs the three
+  // stages itself to integrate connectors that share a behaviour in batches.
   EvalStatus evaluate_connector(std::size_t c, LocalSystem& local, bool want_tangent,
                                 ConnectorOutput* output);
-  void evaluate_spring(const SpringRecord& s, LocalSystem& local, bool want_tangent,
-                       double* force, double* delta) const;
+  EvalStatus prepare_connector(std::size_t c, LocalSystem& local, bool want_tangent,
+                               BehaviorOutput& behavior);
+  BehaviorInput behavior_input(std::size_t c, const LocalSystem& local) const;
+  EvalStatus behavior_status(std::size_t c, const BehaviorOutput& behavior,
+                             IntegrationStatus status) const;
+  EvalStatus finish_connector(std::size_t c, LocalSystem& local, const BehaviorOutput& behavior,
+                              bool want_tangent, ConnectorOutput* output);
+  // The connector's multiplier states, then its local system into the residual and tangent.
+  void finish_scatter(std::size_t c, const LocalSystem& local, SparseMatrix* tangent);
+  std::string label(std::size_t c) const;  // the element's label, for messages
+  void evaluate_spring(const SpringRecord& s, LocalSystem& local, bool want_tangent, double* force,
+                       double* delta) const;
   void scatter(const LocalEquations& l, const LocalSystem& local, SparseMatrix* tangent);
   void apply_prescribed_rotations();
   void snap_prescribed_rotations();
@@ -112,7 +130,7 @@ class ConnectorSystem final : public NonlinearProblem {
   bool nlgeom_ = false;
   double time_ = 0, dt_ = 0;
   std::vector<std::uint8_t> multiplier_active_;
-  Eigen::VectorXd x_, x_n_, dx_n_;  // state, last converged, last converged increment
+  Eigen::VectorXd x_, x_n_, dx_n_;              // state, last converged, last converged increment
   std::vector<Matrix3> rotation_, rotation_n_;  // NLGEOM node rotations (identity otherwise)
   std::vector<double> history_, history_n_;
   std::vector<std::uint8_t> prescribed_;
@@ -123,6 +141,12 @@ class ConnectorSystem final : public NonlinearProblem {
   bool predicting_ = false;
   std::vector<std::int32_t> dynamic_of_connector_;
   std::vector<Dynamic> dynamics_;
+  // The connectors of one behaviour batch in evaluate() (kept to reuse their storage).
+  static constexpr std::size_t kBehaviorBatch = 16;
+  std::vector<LocalSystem> batch_;
+  std::vector<BehaviorInput> batch_inputs_;
+  std::vector<BehaviorOutput> batch_outputs_;
+  std::vector<IntegrationStatus> batch_status_;
 };
 
 }  // namespace clinch

@@ -51,12 +51,14 @@ double entry(const SparseMatrix& k, int row, int column) {
 std::string connector_deck(const std::string& type, bool nlgeom) {
   return "*NODE\n1, 0., 0., 0.\n2, 0.8, 0.3, -0.2\n*ELEMENT, TYPE=CONN3D2, ELSET=C\n1, 1, 2\n"
          "*ORIENTATION, NAME=O\n0.9, 0.3, 0.1, -0.2, 0.8, 0.4\n"
-         "*CONNECTOR SECTION, ELSET=C, BEHAVIOR=B\n" + type + ",\nO\n"
+         "*CONNECTOR SECTION, ELSET=C, BEHAVIOR=B\n" +
+         type +
+         ",\nO\n"
          "*CONNECTOR BEHAVIOR, NAME=B\n*CONNECTOR ELASTICITY\n"
          "1000., 100., 800., 50., 40., 900., 0., 0.\n0., 30., 0., 0., 0., 0., 20., 0.\n"
          "0., 0., 0., 5., 25.\n"
-         "*BOUNDARY\n1, 1, 6\n*STEP" + std::string(nlgeom ? ", NLGEOM" : "") +
-         "\n*STATIC\n*END STEP\n";
+         "*BOUNDARY\n1, 1, 6\n*STEP" +
+         std::string(nlgeom ? ", NLGEOM" : "") + "\n*STATIC\n*END STEP\n";
 }
 
 // At a random state (displacements, finite rotations, multipliers), the assembled tangent equals
@@ -122,8 +124,8 @@ void check_tangent_at_random_state(const std::string& type, bool nlgeom, unsigne
 }
 
 TEST(AssembledTangent, MatchesFiniteDifferencesForEveryFamily) {
-  for (const char* type : {"AXIAL", "CARTESIAN", "SLOT", "CARDAN", "ROTATION", "HINGE", "BUSHING",
-                           "WELD", "UJOINT"}) {
+  for (const char* type :
+       {"AXIAL", "CARTESIAN", "SLOT", "CARDAN", "ROTATION", "HINGE", "BUSHING", "WELD", "UJOINT"}) {
     for (bool nlgeom : {false, true}) {
       for (unsigned seed : {1u, 2u}) check_tangent_at_random_state(type, nlgeom, seed);
     }
@@ -143,7 +145,8 @@ TEST(AssembledTangent, MatchesFiniteDifferencesAtActiveStops) {
         "*CONNECTOR ELASTICITY, COMPONENT=3\n800.\n*CONNECTOR STOP, COMPONENT=1\n0.99, 1.01\n"
         "*CONNECTOR STOP, COMPONENT=2\n-0.01, 0.01\n*BOUNDARY\n1, 1, 6\n*STEP" +
         std::string(nlgeom ? ", NLGEOM" : "") + "\n*STATIC\n*END STEP\n";
-    for (unsigned seed : {3u, 4u}) check_tangent_at_random_state("CARTESIAN", nlgeom, seed, deck, true);
+    for (unsigned seed : {3u, 4u})
+      check_tangent_at_random_state("CARTESIAN", nlgeom, seed, deck, true);
   }
 }
 
@@ -314,26 +317,39 @@ TEST(AssembledTangent, NewtonConvergesQuadraticallyOnLoadControlledCoupledPlasti
   EXPECT_NEAR(out.behavior.coupled_equivalent_plastic, (p - 100.0) / 200.0, 1e-12);
 }
 
-// The spot weld (derived-components-and-potentials.md §3, β = 1.5) on BUSHING under a load with
-// all six components non-zero, so that no contribution or derived-component term is near a kink:
-// a smooth problem, and Newton converges quadratically in forces and in moments.
+// `welds` spot welds (derived-components-and-potentials.md §3, β = 1.5) on BUSHING, weld k
+// between nodes 2k + 1 and 2k + 2 (coincident), all with the one behaviour `weld`.
+std::string spot_weld_deck(int welds) {
+  std::string nodes = "*NODE\n", elements = "*ELEMENT, TYPE=CONN3D2, ELSET=C\n";
+  for (int k = 0; k < welds; ++k) {
+    const std::string x = std::to_string(k) + ".";
+    nodes += std::to_string(2 * k + 1) + ", " + x + ", 0., 0.\n" + std::to_string(2 * k + 2) +
+             ", " + x + ", 0., 0.\n";
+    elements += std::to_string(k + 1) + ", " + std::to_string(2 * k + 1) + ", " +
+                std::to_string(2 * k + 2) + "\n";
+  }
+  return "*PARAMETER\nr_n = sqrt(30.68/19.63)\nor_n = 1.0/r_n\nor_s = 0.5/r_n\n" + nodes +
+         elements +
+         "*ORIENTATION, NAME=G\n1., 0., 0., 0., 1., 0.\n"
+         "*CONNECTOR SECTION, ELSET=C, BEHAVIOR=weld\nBUSHING,\nG\n"
+         "*CONNECTOR BEHAVIOR, NAME=weld\n"
+         "*CONNECTOR ELASTICITY, COMPONENT=1\n1.0e5\n*CONNECTOR ELASTICITY, COMPONENT=2\n1.0e5\n"
+         "*CONNECTOR ELASTICITY, COMPONENT=3\n2.0e5\n*CONNECTOR ELASTICITY, COMPONENT=4\n1.0e6\n"
+         "*CONNECTOR ELASTICITY, COMPONENT=5\n1.0e6\n*CONNECTOR ELASTICITY, COMPONENT=6\n5.0e5\n"
+         "*CONNECTOR PLASTICITY\n*CONNECTOR HARDENING\n40000., 0.\n50000., 0.001\n"
+         "*CONNECTOR POTENTIAL, EXPONENT=1.5\nnormal, 0.02, , MACAULEY, ,\nshear, 0.05, , ABS, ,\n"
+         "*CONNECTOR DERIVED COMPONENT, NAME=normal, OPERATOR=MACAULEY SUM\n3\n1.0\n"
+         "*CONNECTOR DERIVED COMPONENT, NAME=normal\n4, 5\n<or_n>, <or_n>\n"
+         "*CONNECTOR DERIVED COMPONENT, NAME=shear\n6\n<or_s>\n"
+         "*CONNECTOR DERIVED COMPONENT, NAME=shear\n1, 2\n1.0, 1.0\n"
+         "*STEP\n*STATIC\n*END STEP\n";
+}
+
+// The spot weld on BUSHING under a load with all six components non-zero, so that no
+// contribution or derived-component term is near a kink: a smooth problem, and Newton converges
+// quadratically in forces and in moments.
 TEST(AssembledTangent, NewtonConvergesQuadraticallyOnLoadControlledSpotWeld) {
-  auto a = analyse(
-      "*PARAMETER\nr_n = sqrt(30.68/19.63)\nor_n = 1.0/r_n\nor_s = 0.5/r_n\n"
-      "*NODE\n1, 0., 0., 0.\n2, 0., 0., 0.\n*ELEMENT, TYPE=CONN3D2, ELSET=C\n1, 1, 2\n"
-      "*ORIENTATION, NAME=G\n1., 0., 0., 0., 1., 0.\n"
-      "*CONNECTOR SECTION, ELSET=C, BEHAVIOR=weld\nBUSHING,\nG\n"
-      "*CONNECTOR BEHAVIOR, NAME=weld\n"
-      "*CONNECTOR ELASTICITY, COMPONENT=1\n1.0e5\n*CONNECTOR ELASTICITY, COMPONENT=2\n1.0e5\n"
-      "*CONNECTOR ELASTICITY, COMPONENT=3\n2.0e5\n*CONNECTOR ELASTICITY, COMPONENT=4\n1.0e6\n"
-      "*CONNECTOR ELASTICITY, COMPONENT=5\n1.0e6\n*CONNECTOR ELASTICITY, COMPONENT=6\n5.0e5\n"
-      "*CONNECTOR PLASTICITY\n*CONNECTOR HARDENING\n40000., 0.\n50000., 0.001\n"
-      "*CONNECTOR POTENTIAL, EXPONENT=1.5\nnormal, 0.02, , MACAULEY, ,\nshear, 0.05, , ABS, ,\n"
-      "*CONNECTOR DERIVED COMPONENT, NAME=normal, OPERATOR=MACAULEY SUM\n3\n1.0\n"
-      "*CONNECTOR DERIVED COMPONENT, NAME=normal\n4, 5\n<or_n>, <or_n>\n"
-      "*CONNECTOR DERIVED COMPONENT, NAME=shear\n6\n<or_s>\n"
-      "*CONNECTOR DERIVED COMPONENT, NAME=shear\n1, 2\n1.0, 1.0\n"
-      "*BOUNDARY\n1, 1, 6\n*STEP\n*STATIC\n*END STEP\n");
+  auto a = analyse(spot_weld_deck(1));
   ASSERT_TRUE(a->system);
   const std::vector<double> load = {300.0, -400.0, 500.0, 200.0, 150.0, 800.0};  // P ≈ 4.2e4
   const NewtonReport report = solve_loaded(*a, load);
@@ -345,6 +361,60 @@ TEST(AssembledTangent, NewtonConvergesQuadraticallyOnLoadControlledSpotWeld) {
     EXPECT_NEAR(out.total[i], load[static_cast<std::size_t>(i)], 1e-8 * 800.0) << i;
   }
   EXPECT_GT(out.behavior.coupled_equivalent_plastic, 0.0);
+}
+
+// 37 welds sharing one behaviour: evaluate() integrates them 16 at a time (two full batches and
+// a partial one, Behavior::integrate_batch). Each weld carries its own load (the one above scaled
+// by 0.85 to 1.15, below the plateau of the hardening; some elastic, most plastic, signs varied
+// so that f3 is compressive on some);
+// every weld ends in equilibrium with its load, and its state equals that of the same weld
+// solved alone (one connector: no batch): ū to 1e-9, motions to 1e-7 (below). The
+// assembled tangent of the batched evaluation matches finite differences at a random state.
+TEST(AssembledTangent, WeldsSharingABehaviourAreIntegratedInBatches) {
+  constexpr int kWelds = 37;
+  auto a = analyse(spot_weld_deck(kWelds));
+  ASSERT_TRUE(a->system);
+  ConnectorSystem& s = *a->system;
+  const DofMap& dofs = a->plan->dofs;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const std::vector<double> base = {300.0, -400.0, 500.0, 200.0, 150.0, 800.0};
+  std::vector<std::vector<double>> loads;
+  s.clear_conditions();
+  for (int k = 0; k < kWelds; ++k) {
+    std::vector<double> load = base;
+    const double scale = 0.85 + 0.3 * unit(rng);  // P in 3.6e4–4.9e4: yield at 4e4, plateau 5e4
+    for (double& f : load) f *= scale * (unit(rng) < 0.2 ? -1.0 : 1.0);
+    for (int dof = 1; dof <= 6; ++dof) {
+      s.prescribe(dofs.equation(2 * k, dof), 0.0);
+      s.add_load(dofs.equation(2 * k + 1, dof), load[static_cast<std::size_t>(dof - 1)]);
+    }
+    loads.push_back(load);
+  }
+  s.start_increment(0.0);
+  const NewtonReport report = solve_tightly(s);
+  ASSERT_TRUE(report.converged()) << report.message;
+  int plastic = 0;
+  for (int k = 0; k < kWelds; ++k) {
+    const ConnectorOutput out = s.connector_output(static_cast<std::size_t>(k));
+    for (int i = 0; i < 6; ++i) {
+      EXPECT_NEAR(out.total[i], loads[k][static_cast<std::size_t>(i)], 1e-8 * 1200.0) << k;
+    }
+    auto alone = analyse(spot_weld_deck(1));
+    ASSERT_TRUE(solve_loaded(*alone, loads[k]).converged());
+    const ConnectorOutput single = alone->system->connector_output(0);
+    EXPECT_NEAR(out.behavior.coupled_equivalent_plastic, single.behavior.coupled_equivalent_plastic,
+                1e-9)
+        << k;
+    // Motions to 1e-7: the tight solve stops on the residual (1e-13 of the forces), and along
+    // the flow the weld's tangent is down to ~1e-4 of its elastic stiffness.
+    EXPECT_LE((out.constitutive - single.constitutive).norm(), 1e-7 * single.constitutive.norm())
+        << k;
+    plastic += out.behavior.coupled_equivalent_plastic > 0;
+  }
+  EXPECT_GE(plastic, 15);
+  EXPECT_LE(plastic, kWelds - 3);
+  check_tangent_at_random_state("", false, 3, spot_weld_deck(kWelds));
 }
 
 }  // namespace
