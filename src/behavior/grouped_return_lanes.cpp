@@ -218,7 +218,11 @@ CLINCH_LANE_CLONES void GroupedReturn::solve_lanes(const IsotropicHardeningLaw& 
 
   // The joint Newton of solve_jointly<true>, lane by lane in lock step. Per contribution at the
   // last iterate: y_i, 1/(∂Φ_i/∂v), ∂Φ_i/∂Δλ, and which groups stay positive is reach_g > y_i.
-  Lanes y[kMaxGroups] = {}, inverse_a[kMaxGroups] = {}, rate_b[kMaxGroups] = {}, slope = {};
+  Lanes y[kMaxGroups], inverse_a[kMaxGroups], rate_b[kMaxGroups], slope;
+  for (int i = 0; i < contributions; ++i) {
+    for_lanes([&](int l) { y[i][l] = inverse_a[i][l] = rate_b[i][l] = 0; });
+  }
+  for_lanes([&](int l) { slope[l] = 1; });
   for (int iteration = 0; iteration < kJointIterations && iterating > 0; ++iteration) {
     for_lanes([&](int l) { shifted[l] = ubar[l] + multiplier[l]; });
     yield_at_lanes(yield, shifted, yield_size, hardening);
@@ -317,7 +321,9 @@ CLINCH_LANE_CLONES void GroupedReturn::solve_lanes(const IsotropicHardeningLaw& 
     o.multiplier = o.plastic ? multiplier[l] : 0.0;
     for (int c = 0; c < 6; ++c) o.force[c] = force[c][l];
   }
-  if (!want_tangent) return;
+  bool converged = false;
+  for (int l = 0; l < count; ++l) converged = converged || outcome[l] == kConverged;
+  if (!want_tangent || !converged) return;
 
   // The consistent tangent of the uniform case of GroupedReturn::tangent (derivation there):
   // row c = (T_g/r_g) k_c e_c + row_c (Y_i W + X_i N over contribution i) + own_c N over group g.
@@ -331,7 +337,8 @@ CLINCH_LANE_CLONES void GroupedReturn::solve_lanes(const IsotropicHardeningLaw& 
     });
   }
   Lanes n[6], w[6], row_y[6], row_x[6], own[6], diagonal[6];
-  for (int c = 0; c < 6; ++c) {
+  for (int c = 0; c < 6; ++c) {  // a component outside the potential: zero rows and columns
+    if (group_of_[static_cast<std::size_t>(c)] >= 0) continue;
     for_lanes([&](int l) { n[c][l] = w[c][l] = row_y[c][l] = row_x[c][l] = 0; });
     for_lanes([&](int l) { own[c][l] = diagonal[c][l] = 0; });
   }
