@@ -163,7 +163,8 @@ CLINCH_LANE_CLONES void GroupedReturn::solve_lanes(const IsotropicHardeningLaw& 
   });
   auto count_iterating = [&] {
     int n = 0;
-    for (int l = 0; l < kLanes; ++l) n += outcome[l] == kIterating;
+#pragma omp simd reduction(+ : n)
+    for (int l = 0; l < kLanes; ++l) n += outcome[l] == kIterating ? 1 : 0;
     return n;
   };
   int iterating = count_iterating();

@@ -58,6 +58,10 @@ class PiecewiseLinearTable {
   std::size_t interior_segment(double x) const;  // bisection, x_0 ≤ x < x_last
   std::vector<double> x_, y_;
   std::vector<double> slope_;  // slope_[k]: segment [x_k, x_{k+1}]
+  // For evaluate_lanes: the slope from x_k on (slope_[k], then the end segment's, §1.2 and the
+  // §4.2 rule) and before x_0 (the first segment's under LINEAR, else 0).
+  std::vector<double> segment_slope_;
+  double before_slope_ = 0;
   Extrapolation extrapolation_;
 };
 
@@ -65,31 +69,31 @@ template <int kLanes>
 inline void PiecewiseLinearTable::evaluate_lanes(const double* __restrict x,
                                                  double* __restrict value,
                                                  double* __restrict slope) const {
-  const std::size_t n = x_.size();
-  const bool linear = extrapolation_ == Extrapolation::Linear;
-  // Before x_0: the first segment continued (LINEAR) or y_0; from x_k on, segment k; from the
-  // last abscissa on, the end segment (§1.2, §4.2 rule), as evaluate() has them.
-  const double before = linear && n > 1 ? slope_[0] : 0.0;
-  const double after = linear && n > 1 ? slope_[n - 2] : 0.0;
-  double base[kLanes];
+  // Each lane starts on the segment before x_0 and moves to segment k wherever x ≥ x_k; the
+  // running segment stays in registers.
+  double base[kLanes], start[kLanes], rate[kLanes];
   for (int l = 0; l < kLanes; ++l) {
     base[l] = x_[0];
-    value[l] = y_[0];
-    slope[l] = before;
+    start[l] = y_[0];
+    rate[l] = before_slope_;
   }
+  const std::size_t n = x_.size();
+  const double* xs = x_.data();
+  const double* ys = y_.data();
+  const double* ss = segment_slope_.data();
   for (std::size_t k = 0; k < n; ++k) {
-    const double xk = x_[k], yk = y_[k], sk = k + 1 < n ? slope_[k] : after;
+    const double xk = xs[k], yk = ys[k], sk = ss[k];
     for (int l = 0; l < kLanes; ++l) {
       const bool beyond = x[l] >= xk;
       base[l] = beyond ? xk : base[l];
-      value[l] = beyond ? yk : value[l];
-      slope[l] = beyond ? sk : slope[l];
+      start[l] = beyond ? yk : start[l];
+      rate[l] = beyond ? sk : rate[l];
     }
   }
   for (int l = 0; l < kLanes; ++l) {
     const bool nan = x[l] != x[l];  // a NaN motion reaches the caller's checks, as in evaluate()
-    value[l] = nan ? x[l] : value[l] + slope[l] * (x[l] - base[l]);
-    slope[l] = nan ? x[l] : slope[l];
+    value[l] = nan ? x[l] : start[l] + rate[l] * (x[l] - base[l]);
+    slope[l] = nan ? x[l] : rate[l];
   }
 }
 
