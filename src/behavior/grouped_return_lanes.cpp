@@ -281,10 +281,15 @@ CLINCH_LANE_CLONES void GroupedReturn::solve_lanes(const IsotropicHardeningLaw& 
     });
     iterating = count_iterating();
     // Σ (∂z_i^β/∂v_i) dv_i = −(S − 1), dv_i = −(Φ_i + b_i dΔλ)/(∂Φ_i/∂v), on the lanes still
-    // iterating; the others keep the iterate they stopped on.
+    // iterating; the others keep the iterate they stopped on. Near first yield Newton can
+    // overshoot Δλ below zero: a step that would take it below a tenth of its value is
+    // shortened to that, and the v_i follow their linearised response to the shorter step. A
+    // share that turns non-positive (rare, far beyond yield) sends its lane alone.
     Lanes step;
     for_lanes([&](int l) {
-      step[l] = outcome[l] == kIterating ? (psi[l] - weighted[l]) / next_slope[l] : 0.0;
+      const double newton = outcome[l] == kIterating ? (psi[l] - weighted[l]) / next_slope[l] : 0.0;
+      const double floor = -0.9 * multiplier[l];
+      step[l] = newton < floor ? floor : newton;
       multiplier[l] += step[l];
     });
     for (int i = 0; i < contributions; ++i) {
