@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstring>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -152,7 +153,7 @@ class ElasticPlasticBehavior final : public Behavior {
   Vector6 predict(const BehaviorInput& in, BehaviorOutput& out, Vector6& plastic) const {
     // Read from history_old, not from the copy just written (that would wait on the copy).
     const double* old = in.history_old.data();
-    std::copy(old, old + kHistorySize, out.history_new.begin());
+    std::memcpy(out.history_new.data(), old, kHistorySize * sizeof(double));
     plastic = Eigen::Map<const Vector6>(old + kPlasticMotion);
     const Vector6 u = in.motion_old + in.increment;
     const Vector6 force = diagonal_ ? Vector6(stiffness_diagonal_.cwiseProduct(u - plastic))
@@ -160,7 +161,6 @@ class ElasticPlasticBehavior final : public Behavior {
     out.force = force;
     return force.cwiseProduct(coupled_slots_);
   }
-
 
   // The rest of an update from the coupled return `r` of `trial` (a default CoupledReturn
   // without coupled plasticity): its flow, then the uncoupled plasticities and the nonlinear
@@ -265,8 +265,8 @@ class ElasticPlasticBehavior final : public Behavior {
     return closest_point_return(space_, c.potential, c.yield, trial, ubar, consistent);
   }
 
-  Matrix6 k_;                   // K on the linear components, zero elsewhere
-  Vector6 stiffness_diagonal_;  // its diagonal, contiguous
+  Matrix6 k_;                    // K on the linear components, zero elsewhere
+  Vector6 stiffness_diagonal_;   // its diagonal, contiguous
   Vector6 compliance_diagonal_;  // that of space_.compliance (diagonal K: 1/k)
   ComponentMask linear_;
   bool diagonal_;

@@ -128,11 +128,18 @@ CLINCH_LANE_CLONES void GroupedReturn::solve_lanes(const IsotropicHardeningLaw& 
     }
     for_lanes([&](int l) { reach[g][l] = r[l] * gr.inverse_kappa; });
   }
+  // 1/r_g (0 without flow), for the forces and the tangent.
+  Lanes inverse_resultant[kMaxGroups];
+  for (int g = 0; g < groups; ++g) {
+    for_lanes(
+        [&](int l) { inverse_resultant[g][l] = resultant[g][l] > 0 ? 1 / resultant[g][l] : 0.0; });
+  }
 
   // Per contribution: E_i^tr, K_i (κ of its positive groups) and the group that clips last,
   // whose piece an iterate past every clip continues (respond()); the yield check S > 1.
-  Lanes yield_size, hardening, share_sum;
+  Lanes yield_size, hardening, share_sum, inverse_yield;
   yield_at_lanes(yield, ubar, yield_size, hardening);
+  for_lanes([&](int l) { inverse_yield[l] = 1 / yield_size[l]; });
   Lanes trial_sum[kMaxGroups], trial_kappa[kMaxGroups], last_reach[kMaxGroups],
       last_kappa[kMaxGroups];
   for_lanes([&](int l) { share_sum[l] = 0; });
@@ -152,7 +159,7 @@ CLINCH_LANE_CLONES void GroupedReturn::solve_lanes(const IsotropicHardeningLaw& 
       });
     });
     for_lanes([&](int l) {
-      const double z = trial_sum[i][l] * ci.inverse_scale / yield_size[l];
+      const double z = trial_sum[i][l] * ci.inverse_scale * inverse_yield[l];
       share_sum[l] += z * std::sqrt(z);
     });
   }
@@ -178,43 +185,29 @@ CLINCH_LANE_CLONES void GroupedReturn::solve_lanes(const IsotropicHardeningLaw& 
       a[l] += k > 0 ? e * e / k : 0.0;
     });
   }
-  for (int l = 0; l < kLanes; ++l) {  // the bit trick of cube_root_guess does not vectorise
+  for_lanes([&](int l) {
     const double s = outcome[l] == kIterating ? share_sum[l] : 2.0;  // any S > 1 for the others
     multiplier[l] = yield_size[l] * s / cube_root_guess(s);          // P^tr
-  }
+  });
   for_lanes([&](int l) {
     const double p = multiplier[l];
     multiplier[l] = a[l] * (p - yield_size[l]) / (p * p + a[l] * hardening[l]);
     outcome[l] = !(multiplier[l] > 0) & (outcome[l] == kIterating) ? kAlone : outcome[l];
   });
   iterating = count_iterating();
-  // Each v_i = √z_i solved at that Δλ, R_i F_y v² + (Δλ K_i/R_i) v − E_i = 0, first with every
-  // positive group and then with those that stay positive at that y_i (solve_share, one pass).
+  // Each v_i = √z_i solved at that Δλ with every positive group taken (a start only):
+  // R_i F_y v² + (Δλ K_i/R_i) v − E_i = 0, in the form without cancellation.
   Lanes v[kMaxGroups], shifted;
   for_lanes([&](int l) { shifted[l] = ubar[l] + multiplier[l]; });
   yield_at_lanes(yield, shifted, yield_size, hardening);
   for (int i = 0; i < contributions; ++i) {
     const Contribution& ci = contributions_[static_cast<std::size_t>(i)];
-    const auto share_root = [&](int l, double e, double k) {
-      const double rf = ci.scale * yield_size[l];
-      const double bk = multiplier[l] * k * ci.inverse_scale;
-      return e > 0 ? 2 * e / (bk + std::sqrt(bk * bk + 4 * rf * e)) : 0.0;
-    };
-    Lanes e, k;
     for_lanes([&](int l) {
-      v[i][l] = share_root(l, trial_sum[i][l], trial_kappa[i][l]);
-      e[l] = k[l] = 0;
+      const double e = trial_sum[i][l];
+      const double rf = ci.scale * yield_size[l];
+      const double bk = multiplier[l] * trial_kappa[i][l] * ci.inverse_scale;
+      v[i][l] = e > 0 ? 2 * e / (bk + std::sqrt(bk * bk + 4 * rf * e)) : 0.0;
     });
-    for_each_bit(ci.groups, [&](int g) {
-      const double kappa = groups_[static_cast<std::size_t>(g)].kappa;
-      for_lanes([&](int l) {
-        const bool positive = reach[g][l] > multiplier[l] * v[i][l] * ci.inverse_scale;
-        e[l] += positive ? resultant[g][l] : 0.0;
-        k[l] += positive ? kappa : 0.0;
-      });
-    });
-    // Where every group would clip, the first root stays (the Newton extends the last piece).
-    for_lanes([&](int l) { v[i][l] = k[l] > 0 ? share_root(l, e[l], k[l]) : v[i][l]; });
   }
 
   // The joint Newton of solve_jointly<true>, lane by lane in lock step. Per contribution at the
@@ -311,7 +304,8 @@ CLINCH_LANE_CLONES void GroupedReturn::solve_lanes(const IsotropicHardeningLaw& 
     Lanes ratio;
     for_lanes([&](int l) {
       const double r = resultant[g][l];
-      const double shrunk = reach[g][l] > yi[l] ? (r - kappa * yi[l]) / r : 0.0;
+      const double shrunk =
+          reach[g][l] > yi[l] ? (r - kappa * yi[l]) * inverse_resultant[g][l] : 0.0;
       ratio[l] = (r > 0) & (outcome[l] == kConverged) ? shrunk : 1.0;
     });
     for_each_bit(gr.components, [&](int c) { for_lanes([&](int l) { force[c][l] *= ratio[l]; }); });
@@ -333,13 +327,14 @@ CLINCH_LANE_CLONES void GroupedReturn::solve_lanes(const IsotropicHardeningLaw& 
 
   // The consistent tangent of the uniform case of GroupedReturn::tangent (derivation there):
   // row c = (T_g/r_g) k_c e_c + row_c (Y_i W + X_i N over contribution i) + own_c N over group g.
-  Lanes x[kMaxGroups], yy[kMaxGroups], weight[kMaxGroups];
+  Lanes x[kMaxGroups], yy[kMaxGroups], weight[kMaxGroups], inverse_slope;
+  for_lanes([&](int l) { inverse_slope[l] = 1 / slope[l]; });
   for (int i = 0; i < contributions; ++i) {
     const double inverse_scale = contributions_[static_cast<std::size_t>(i)].inverse_scale;
     for_lanes([&](int l) {
       x[i][l] = multiplier[l] * inverse_a[i][l] * inverse_scale;
       yy[i][l] = v[i][l] * inverse_scale - x[i][l] * rate_b[i][l];
-      weight[i][l] = kBeta * v[i][l] * 2 * v[i][l] * inverse_a[i][l] / slope[l];
+      weight[i][l] = kBeta * v[i][l] * 2 * v[i][l] * inverse_a[i][l] * inverse_slope[l];
     });
   }
   Lanes n[6], w[6], row_y[6], row_x[6], own[6], diagonal[6];
@@ -356,7 +351,7 @@ CLINCH_LANE_CLONES void GroupedReturn::solve_lanes(const IsotropicHardeningLaw& 
       for_lanes([&](int l) {
         const double r = resultant[g][l];
         const bool positive = (r > 0) & (reach[g][l] > y[i][l]);
-        const double inv_r = positive ? 1 / r : 0.0;
+        const double inv_r = positive ? inverse_resultant[g][l] : 0.0;
         const double t = trial_force[c][l];
         const double kr = gr.kappa * inv_r;
         const double row = -t * kr;
