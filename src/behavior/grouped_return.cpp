@@ -7,6 +7,8 @@
 #include <limits>
 #include <vector>
 
+#include "src/behavior/bit_loop.hpp"
+
 namespace clinch {
 namespace {
 
@@ -28,14 +30,6 @@ double approximate_cube_root(double x) {
       std::bit_cast<double>(std::bit_cast<std::uint64_t>(x) / 3 + 0x2A9F7893782DA1CEull);
   const double y3 = y * y * y;
   return y * (y3 + 2 * x) / (2 * y3 + x);
-}
-
-template <typename F>
-void for_each_bit(unsigned mask, F&& f) {
-  while (mask) {
-    f(std::countr_zero(mask));
-    mask &= mask - 1;
-  }
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <cstring>
 
+#include "src/behavior/bit_loop.hpp"
 #include "src/behavior/grouped_return.hpp"
 
 namespace clinch {
@@ -33,14 +34,6 @@ template <typename F>
 [[gnu::always_inline]] inline void for_lanes(F&& f) {
 #pragma omp simd
   for (int l = 0; l < kLanes; ++l) f(l);
-}
-
-template <typename F>
-void for_each_bit(unsigned mask, F&& f) {
-  while (mask) {
-    f(std::countr_zero(mask));
-    mask &= mask - 1;
-  }
 }
 
 // x^(1/3) for x ≥ 1 to a relative 3e-5, as approximate_cube_root of grouped_return.cpp but from
