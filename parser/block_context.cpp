@@ -9,7 +9,7 @@
 
 #include "parser/expression.hpp"
 #include "parser/source_manager.hpp"
-#include "parser/suggest.hpp"
+#include "base/suggest.hpp"
 
 namespace clinch {
 namespace {

@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-#include "parser/diagnostic.hpp"
+#include "base/diagnostic.hpp"
 #include "parser/keyword_spec.hpp"
 #include "parser/lexer.hpp"
 #include "parser/source_manager.hpp"

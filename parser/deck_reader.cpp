@@ -14,8 +14,8 @@
 #include "parser/keyword_registry.hpp"
 #include "parser/lexer.hpp"
 #include "parser/parameters.hpp"
-#include "parser/suggest.hpp"
-#include "src/model/validate.hpp"
+#include "base/suggest.hpp"
+#include "src/check/validate.hpp"
 
 namespace clinch {
 namespace {

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "parser/diagnostic.hpp"
+#include "base/diagnostic.hpp"
 #include "parser/source_manager.hpp"
 #include "src/model/model.hpp"
 

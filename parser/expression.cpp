@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-#include "parser/suggest.hpp"
+#include "base/suggest.hpp"
 
 namespace clinch {
 

@@ -11,8 +11,8 @@
 #include <string>
 #include <string_view>
 
-#include "parser/diagnostic.hpp"
-#include "parser/source_location.hpp"
+#include "base/diagnostic.hpp"
+#include "base/source_location.hpp"
 
 namespace clinch {
 

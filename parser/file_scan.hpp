@@ -5,7 +5,7 @@
 
 #include <cstdint>
 
-#include "parser/diagnostic.hpp"
+#include "base/diagnostic.hpp"
 #include "parser/lexer.hpp"
 #include "parser/source_manager.hpp"
 

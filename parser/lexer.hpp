@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "parser/diagnostic.hpp"
+#include "base/diagnostic.hpp"
 #include "parser/file_window.hpp"
 
 namespace clinch {

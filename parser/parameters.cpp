@@ -7,7 +7,7 @@
 #include <span>
 #include <utility>
 
-#include "parser/suggest.hpp"
+#include "base/suggest.hpp"
 
 namespace clinch {
 namespace {

@@ -11,9 +11,9 @@
 #include <string_view>
 #include <vector>
 
-#include "parser/diagnostic.hpp"
+#include "base/diagnostic.hpp"
 #include "parser/expression.hpp"
-#include "parser/source_location.hpp"
+#include "base/source_location.hpp"
 
 namespace clinch {
 

@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "parser/source_location.hpp"
+#include "base/source_location.hpp"
 
 namespace clinch {
 

@@ -7,7 +7,7 @@
 #include "parser/block_context.hpp"
 #include "parser/keyword_handler.hpp"
 #include "parser/keywords/geometry_common.hpp"
-#include "parser/suggest.hpp"
+#include "base/suggest.hpp"
 
 namespace clinch {
 namespace {

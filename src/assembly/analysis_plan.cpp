@@ -4,10 +4,10 @@
 
 #include <algorithm>
 
-#include "parser/diagnostic.hpp"
+#include "base/diagnostic.hpp"
 #include "src/assembly/sparsity_pattern.hpp"
-#include "src/behavior/elastic_behavior.hpp"
-#include "src/behavior/elastic_plastic_behavior.hpp"
+#include "src/behavior/elastic/elastic_behavior.hpp"
+#include "src/behavior/plastic/elastic_plastic_behavior.hpp"
 #include "src/model/orientation_triad.hpp"
 
 namespace clinch {

@@ -13,7 +13,7 @@
 
 #include "src/assembly/dof_map.hpp"
 #include "src/behavior/behavior.hpp"
-#include "src/behavior/spring_law.hpp"
+#include "src/behavior/elastic/spring_law.hpp"
 #include "src/kinematics/connector_kinematics.hpp"
 #include "src/linalg/linear_solver.hpp"
 #include "src/model/model.hpp"

@@ -27,7 +27,11 @@ constexpr DofMask kRotationDofs = 0b111000;
 }  // namespace
 
 ConnectorSystem::ConnectorSystem(const Model& model, const AnalysisPlan& plan)
-    : model_(model), plan_(plan), nlgeom_(!plan.small_displacement) {
+    : model_(model),
+      plan_(plan),
+      nlgeom_(!plan.small_displacement),
+      local_storage_(std::make_unique<LocalSystem>()),
+      local_(*local_storage_) {
   const int n = plan_.dofs.equations();
   x_ = Eigen::VectorXd::Zero(n);
   x_n_ = x_;
@@ -446,49 +450,16 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
   internal_.setZero();
   if (predicting_) predictor_.setZero();
   if (tangent) std::fill(tangent->values.begin(), tangent->values.end(), 0.0);
-  // Consecutive connectors that share a behaviour are integrated kBehaviorBatch at a time
-  // (Behavior::integrate_batch), each finished and scattered in order after its batch.
   const bool want_tangent = tangent != nullptr;
-  batch_.resize(kBehaviorBatch);
-  batch_outputs_.resize(kBehaviorBatch);
-  batch_status_.resize(kBehaviorBatch);
-  std::size_t c = 0;
-  while (c < plan_.connectors.size()) {
-    const Behavior* behavior = plan_.connectors[c].behavior;
-    std::size_t count = 1;
-    while (behavior && count < kBehaviorBatch && c + count < plan_.connectors.size() &&
-           plan_.connectors[c + count].behavior == behavior) {
-      ++count;
-    }
-    if (count == 1) {
-      const EvalStatus status = evaluate_connector(c, batch_[0], want_tangent, nullptr);
-      if (!status.ok) return status;
-      finish_scatter(c, batch_[0], tangent);
-      ++c;
-      continue;
-    }
-    batch_inputs_.clear();
-    for (std::size_t j = 0; j < count; ++j) {
-      const EvalStatus status =
-          prepare_connector(c + j, batch_[j], want_tangent, batch_outputs_[j]);
-      if (!status.ok) return status;
-      batch_inputs_.push_back(behavior_input(c + j, batch_[j]));
-    }
-    behavior->integrate_batch(batch_inputs_, std::span(batch_outputs_).first(count),
-                              std::span(batch_status_).first(count));
-    for (std::size_t j = 0; j < count; ++j) {
-      EvalStatus status = behavior_status(c + j, batch_outputs_[j], batch_status_[j]);
-      if (status.ok) {
-        status = finish_connector(c + j, batch_[j], batch_outputs_[j], want_tangent, nullptr);
-      }
-      if (!status.ok) return status;
-      finish_scatter(c + j, batch_[j], tangent);
-    }
-    c += count;
+  LocalSystem& local = local_;
+  for (std::size_t c = 0; c < plan_.connectors.size(); ++c) {
+    const EvalStatus status = evaluate_connector(c, local, want_tangent, nullptr);
+    if (!status.ok) return status;
+    finish_scatter(c, local, tangent);
   }
   for (const SpringRecord& s : plan_.springs) {
-    evaluate_spring(s, batch_[0], want_tangent, nullptr, nullptr);
-    scatter(s.local, batch_[0], tangent);
+    evaluate_spring(s, local, want_tangent, nullptr, nullptr);
+    scatter(s.local, local, tangent);
   }
   residual = internal_ - external_;
   if (predicting_ && tangent) residual += predictor_;

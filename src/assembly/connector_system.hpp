@@ -5,6 +5,7 @@
 // trial state; the active set of stops and the locks change only between Newton solves.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -141,12 +142,8 @@ class ConnectorSystem final : public NonlinearProblem {
   bool predicting_ = false;
   std::vector<std::int32_t> dynamic_of_connector_;
   std::vector<Dynamic> dynamics_;
-  // The connectors of one behaviour batch in evaluate() (kept to reuse their storage).
-  static constexpr std::size_t kBehaviorBatch = 16;
-  std::vector<LocalSystem> batch_;
-  std::vector<BehaviorInput> batch_inputs_;
-  std::vector<BehaviorOutput> batch_outputs_;
-  std::vector<IntegrationStatus> batch_status_;
+  std::unique_ptr<LocalSystem> local_storage_;
+  LocalSystem& local_;
 };
 
 }  // namespace clinch

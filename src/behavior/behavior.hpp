@@ -7,7 +7,7 @@
 #include <span>
 #include <string>
 
-#include "src/linalg/small_types.hpp"
+#include "base/small_types.hpp"
 #include "src/model/section_model.hpp"
 
 namespace clinch {
@@ -56,13 +56,6 @@ class Behavior {
   virtual int history_size() const = 0;          // doubles per element
   virtual bool tangent_is_symmetric() const = 0;
   virtual IntegrationStatus integrate(const BehaviorInput& in, BehaviorOutput& out) const = 0;
-  // The same for several elements at once (status[k] of in[k] into out[k]), which a law may run
-  // side by side to hide the latency of its local iterations. Every result is what integrate
-  // would give to round-off; the default is that loop.
-  virtual void integrate_batch(std::span<const BehaviorInput> in, std::span<BehaviorOutput> out,
-                               std::span<IntegrationStatus> status) const {
-    for (std::size_t k = 0; k < in.size(); ++k) status[k] = integrate(in[k], out[k]);
-  }
   // Reads a (committed or trial) history of this behaviour; a path-independent law leaves
   // `state` as it is.
   virtual void describe_state(std::span<const double> history, BehaviorState& state) const {

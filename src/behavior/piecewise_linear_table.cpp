@@ -25,10 +25,6 @@ PiecewiseLinearTable::PiecewiseLinearTable(std::vector<double> x, std::vector<do
     }
     slope_.push_back((y_[k + 1] - y_[k]) / (x_[k + 1] - x_[k]));
   }
-  const bool linear = extrapolation_ == Extrapolation::Linear && x_.size() > 1;
-  segment_slope_ = slope_;
-  segment_slope_.push_back(linear ? slope_.back() : 0.0);
-  before_slope_ = linear ? slope_.front() : 0.0;
 }
 
 PiecewiseLinearTable PiecewiseLinearTable::from_points(std::span<const TablePoint> points,

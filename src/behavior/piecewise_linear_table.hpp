@@ -42,13 +42,6 @@ class PiecewiseLinearTable {
     return {y_[k] + slope_[k] * (x - x_[k]), slope_[k], false};
   }
 
-  // evaluate() at x[l] into value[l] and slope[l] for l < kLanes, without branches on x, so
-  // that the loops over lanes vectorise (inline: compiled for the vector width of its caller).
-  template <int kLanes>
-  [[gnu::always_inline]] inline void evaluate_lanes(const double* __restrict x,
-                                                    double* __restrict value,
-                                                    double* __restrict slope) const;
-
   std::size_t size() const { return x_.size(); }
   Extrapolation extrapolation() const { return extrapolation_; }
 
@@ -58,43 +51,7 @@ class PiecewiseLinearTable {
   std::size_t interior_segment(double x) const;  // bisection, x_0 ≤ x < x_last
   std::vector<double> x_, y_;
   std::vector<double> slope_;  // slope_[k]: segment [x_k, x_{k+1}]
-  // For evaluate_lanes: the slope from x_k on (slope_[k], then the end segment's, §1.2 and the
-  // §4.2 rule) and before x_0 (the first segment's under LINEAR, else 0).
-  std::vector<double> segment_slope_;
-  double before_slope_ = 0;
   Extrapolation extrapolation_;
 };
-
-template <int kLanes>
-inline void PiecewiseLinearTable::evaluate_lanes(const double* __restrict x,
-                                                 double* __restrict value,
-                                                 double* __restrict slope) const {
-  // Each lane starts on the segment before x_0 and moves to segment k wherever x ≥ x_k; the
-  // running segment stays in registers.
-  double base[kLanes], start[kLanes], rate[kLanes];
-  for (int l = 0; l < kLanes; ++l) {
-    base[l] = x_[0];
-    start[l] = y_[0];
-    rate[l] = before_slope_;
-  }
-  const std::size_t n = x_.size();
-  const double* xs = x_.data();
-  const double* ys = y_.data();
-  const double* ss = segment_slope_.data();
-  for (std::size_t k = 0; k < n; ++k) {
-    const double xk = xs[k], yk = ys[k], sk = ss[k];
-    for (int l = 0; l < kLanes; ++l) {
-      const bool beyond = x[l] >= xk;
-      base[l] = beyond ? xk : base[l];
-      start[l] = beyond ? yk : start[l];
-      rate[l] = beyond ? sk : rate[l];
-    }
-  }
-  for (int l = 0; l < kLanes; ++l) {
-    const bool nan = x[l] != x[l];  // a NaN motion reaches the caller's checks, as in evaluate()
-    value[l] = nan ? x[l] : start[l] + rate[l] * (x[l] - base[l]);
-    slope[l] = nan ? x[l] : rate[l];
-  }
-}
 
 }  // namespace clinch

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "parser/deck_reader.hpp"
+#include "parser/diagnostic_render.hpp"
 #include "src/cli/blas_threads.hpp"
 
 namespace clinch {

@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "parser/deck_reader.hpp"
+#include "parser/diagnostic_render.hpp"
 #include "src/assembly/analysis_plan.hpp"
 #include "src/assembly/connector_system.hpp"
 #include "src/cli/blas_threads.hpp"

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "src/linalg/small_types.hpp"
+#include "base/small_types.hpp"
 #include "src/model/section_model.hpp"
 
 namespace clinch {

@@ -8,7 +8,7 @@
 #include <numbers>
 
 #include "src/kinematics/second_order_jet.hpp"
-#include "src/linalg/small_types.hpp"
+#include "base/small_types.hpp"
 
 namespace clinch {
 

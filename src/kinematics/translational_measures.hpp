@@ -4,7 +4,7 @@
 #pragma once
 
 #include "src/kinematics/second_order_jet.hpp"
-#include "src/linalg/small_types.hpp"
+#include "base/small_types.hpp"
 
 namespace clinch {
 

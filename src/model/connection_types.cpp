@@ -4,7 +4,7 @@
 #include <cctype>
 #include <vector>
 
-#include "parser/suggest.hpp"
+#include "base/suggest.hpp"
 
 namespace clinch {
 namespace {

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "parser/source_location.hpp"
+#include "base/source_location.hpp"
 #include "src/model/name.hpp"
 
 namespace clinch {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "parser/source_location.hpp"
+#include "base/source_location.hpp"
 #include "src/model/name.hpp"
 
 namespace clinch {

@@ -4,10 +4,10 @@
 
 #include <fmt/format.h>
 
-#include "parser/diagnostic.hpp"
-#include "parser/suggest.hpp"
+#include "base/diagnostic.hpp"
+#include "base/suggest.hpp"
 #include "src/model/model.hpp"
-#include "src/model/validate.hpp"
+#include "src/check/validate.hpp"
 
 namespace clinch {
 

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "parser/source_location.hpp"
+#include "base/source_location.hpp"
 
 namespace clinch {
 

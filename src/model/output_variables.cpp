@@ -3,7 +3,7 @@
 #include <array>
 #include <cctype>
 
-#include "parser/suggest.hpp"
+#include "base/suggest.hpp"
 
 namespace clinch {
 namespace {

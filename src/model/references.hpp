@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "parser/source_location.hpp"
+#include "base/source_location.hpp"
 
 namespace clinch {
 

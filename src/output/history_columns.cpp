@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "parser/diagnostic.hpp"
+#include "base/diagnostic.hpp"
 #include "src/model/output_variables.hpp"
 #include "src/model/potential_queries.hpp"
 

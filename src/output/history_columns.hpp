@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "src/assembly/connector_system.hpp"
-#include "src/behavior/derived_component.hpp"
+#include "src/behavior/potential/derived_component.hpp"
 #include "src/model/model.hpp"
 
 namespace clinch {

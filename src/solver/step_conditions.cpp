@@ -1,6 +1,6 @@
 #include "src/solver/step_conditions.hpp"
 
-#include "parser/diagnostic.hpp"
+#include "base/diagnostic.hpp"
 
 namespace clinch {
 namespace {

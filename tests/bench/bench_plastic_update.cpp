@@ -1,11 +1,9 @@
-// Behaviour-update throughput of coupled plasticity (issue target: spot-weld plastic updates per
-// second on one core). The spot weld of derived-components-and-potentials.md §3 (BUSHING, six
+// Behaviour-update cost of coupled plasticity. The spot weld of derived-components-and-potentials.md §3 (BUSHING, six
 // components, the elliptical potential with β = 1.5 through the `normal` and `shear` derived
 // components) is integrated from the virgin state for a fixed set of trial motions that all yield,
 // with the consistent tangent, as the assembly asks for it. An elastic variant (trial motions
-// below yield) shows the cost of the yield check alone. The Batched cases integrate the same
-// motions through Behavior::integrate_batch, n updates a call; the assembly hands a behaviour
-// up to 16 connectors a call (ConnectorSystem::evaluate), so Batched/16 is its throughput.
+// below yield) shows the cost of the yield check alone. Whole runs are the measure of speed
+// (decks/bench/README.md); these figures locate the update's share of them.
 // scripts/bench_plastic.sh prints the medians of 5 repetitions and the ratios.
 #include <benchmark/benchmark.h>
 
@@ -17,10 +15,10 @@
 #include <vector>
 
 #include "parser/deck_reader.hpp"
-#include "parser/diagnostic.hpp"
+#include "base/diagnostic.hpp"
 #include "parser/source_manager.hpp"
-#include "src/behavior/connector_potential.hpp"
-#include "src/behavior/elastic_plastic_behavior.hpp"
+#include "src/behavior/potential/connector_potential.hpp"
+#include "src/behavior/plastic/elastic_plastic_behavior.hpp"
 #include "src/model/model.hpp"
 
 namespace clinch {
@@ -114,42 +112,6 @@ void run(benchmark::State& state, double lo, double hi, const Vector6& stiffness
   state.counters["failures"] = static_cast<double>(failures);
 }
 
-// The same through Behavior::integrate_batch, `batch` updates a call, as the assembly calls it
-// (ConnectorSystem::evaluate); items are updates.
-void run_batched(benchmark::State& state, double lo, double hi, std::size_t batch) {
-  SpotWeld weld(kStiffness);
-  if (!weld.behavior) {
-    state.SkipWithError("no behaviour");
-    return;
-  }
-  const std::vector<Vector6> motions =
-      trial_motions(weld.model.behaviors.behaviors.at(0), kStiffness, lo, hi);
-  const auto size = static_cast<std::size_t>(weld.behavior->history_size());
-  const std::vector<double> history(size, 0.0);
-  std::vector<double> trial(size * batch);
-  const Vector6 zero = Vector6::Zero();
-  std::vector<BehaviorOutput> out(batch);
-  std::vector<IntegrationStatus> status(batch);
-  for (std::size_t k = 0; k < batch; ++k) {
-    out[k].history_new = std::span<double>(trial.data() + k * size, size);
-  }
-  std::size_t n = 0;
-  std::size_t failures = 0;
-  std::vector<BehaviorInput> in;
-  in.reserve(batch);
-  for (auto _ : state) {
-    in.clear();
-    for (std::size_t k = 0; k < batch; ++k) {
-      in.push_back({zero, motions[n++ & 1023], 0, 0, history, TangentRequest::Consistent});
-    }
-    weld.behavior->integrate_batch(in, out, status);
-    for (const IntegrationStatus s : status) failures += s != IntegrationStatus::Success;
-    benchmark::DoNotOptimize(out.data());
-  }
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * batch));
-  state.counters["failures"] = static_cast<double>(failures);
-}
-
 // Motions of 2 to 20 times the first-yield motion along random rays: every update is plastic.
 void BM_SpotWeldPlasticUpdate(benchmark::State& state) { run(state, 2.0, 20.0); }
 void BM_SpotWeldNearYield(benchmark::State& state) { run(state, 1.05, 1.5); }
@@ -158,14 +120,6 @@ BENCHMARK(BM_SpotWeldNearYield);
 void BM_SpotWeldElasticUpdate(benchmark::State& state) { run(state, 1e-3, 1e-2); }
 BENCHMARK(BM_SpotWeldPlasticUpdate);
 BENCHMARK(BM_SpotWeldElasticUpdate);
-void BM_SpotWeldPlasticUpdateBatched(benchmark::State& state) {
-  run_batched(state, 2.0, 20.0, static_cast<std::size_t>(state.range(0)));
-}
-BENCHMARK(BM_SpotWeldPlasticUpdateBatched)->Arg(8)->Arg(16)->Arg(64);
-void BM_SpotWeldNearYieldBatched(benchmark::State& state) {
-  run_batched(state, 1.05, 1.5, static_cast<std::size_t>(state.range(0)));
-}
-BENCHMARK(BM_SpotWeldNearYieldBatched)->Arg(16)->Arg(64);
 // Plastic updates of the variant with unequal stiffnesses in its NORM groups.
 void BM_SpotWeldUnequalStiffnessPlasticUpdate(benchmark::State& state) {
   run(state, 2.0, 20.0, kUnequalStiffness);

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "parser/deck_reader.hpp"
+#include "parser/diagnostic_render.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   clinch::SourceManager sources;

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "parser/deck_reader.hpp"
-#include "src/behavior/elastic_plastic_behavior.hpp"
+#include "src/behavior/plastic/elastic_plastic_behavior.hpp"
 #include "tests/unit/checked_deck.hpp"
 
 namespace clinch {
@@ -65,33 +65,6 @@ class Driver {
     e.status = law_.integrate(in, e.out);
     return e;
   }
-  // evaluate() at each of `us`, through one Behavior::integrate_batch call where `batched`.
-  std::vector<Evaluation> evaluate_all(const std::vector<Vector6>& us, bool batched) const {
-    std::vector<Evaluation> all(us.size());
-    if (!batched) {
-      for (std::size_t k = 0; k < us.size(); ++k) all[k] = evaluate(us[k]);
-      return all;
-    }
-    std::vector<Vector6> increments;
-    increments.reserve(us.size());
-    std::vector<BehaviorInput> in;
-    std::vector<BehaviorOutput> out(us.size());
-    std::vector<IntegrationStatus> status(us.size());
-    for (std::size_t k = 0; k < us.size(); ++k) {
-      increments.push_back(us[k] - motion_);
-      in.push_back({motion_, increments.back(), 0.0, 0.0, committed_, TangentRequest::Consistent});
-      all[k].history.assign(committed_.size(), std::nan(""));
-      out[k].history_new = all[k].history;
-    }
-    law_.integrate_batch(in, out, status);
-    for (std::size_t k = 0; k < us.size(); ++k) {
-      all[k].status = status[k];
-      all[k].out = out[k];
-      all[k].out.history_new = all[k].history;
-    }
-    return all;
-  }
-
   // Integrates to `u` and commits; returns the converged evaluation.
   Evaluation step(const Vector6& u) {
     Evaluation e = evaluate(u);
@@ -110,9 +83,7 @@ class Driver {
 
   // §1.4: D_fd[:, j] = (f(u + h e_j) − f(u − h e_j))/(2h), h = 1e-6·max(|u|_∞, u_s), every
   // evaluation from the committed history; pass when max|D − D_fd| ≤ 1e-5·max|D| + 1e-8·k_s.
-  // With `batched`, u and its perturbations go through one integrate_batch call.
-  void expect_fd_tangent(const Vector6& u, double u_s, double k_s, ComponentMask mask,
-                         bool batched = false) const {
+  void expect_fd_tangent(const Vector6& u, double u_s, double k_s, ComponentMask mask) const {
     const double h = 1e-6 * std::max(u.cwiseAbs().maxCoeff(), u_s);
     std::vector<Vector6> points{u};
     for (int j = 0; j < 6; ++j) {
@@ -122,7 +93,8 @@ class Driver {
       points.push_back(plus);
       points.push_back(minus);
     }
-    const std::vector<Evaluation> e = evaluate_all(points, batched);
+    std::vector<Evaluation> e;
+    for (const Vector6& point : points) e.push_back(evaluate(point));
     const Evaluation& at = e[0];
     ASSERT_EQ(at.status, IntegrationStatus::Success) << at.out.message;
     Matrix6 fd = Matrix6::Zero();

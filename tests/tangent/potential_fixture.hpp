@@ -13,9 +13,9 @@
 #include <gtest/gtest.h>
 
 #include "parser/deck_reader.hpp"
-#include "src/behavior/connector_potential.hpp"
-#include "src/behavior/derived_component.hpp"
-#include "src/linalg/small_types.hpp"
+#include "src/behavior/potential/connector_potential.hpp"
+#include "src/behavior/potential/derived_component.hpp"
+#include "base/small_types.hpp"
 #include "tests/unit/checked_deck.hpp"
 
 namespace clinch::potential_test {

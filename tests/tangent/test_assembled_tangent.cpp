@@ -363,14 +363,13 @@ TEST(AssembledTangent, NewtonConvergesQuadraticallyOnLoadControlledSpotWeld) {
   EXPECT_GT(out.behavior.coupled_equivalent_plastic, 0.0);
 }
 
-// 37 welds sharing one behaviour: evaluate() integrates them 16 at a time (two full batches and
-// a partial one, Behavior::integrate_batch). Each weld carries its own load (the one above scaled
+// 37 welds sharing one behaviour instance. Each weld carries its own load (the one above scaled
 // by 0.85 to 1.15, below the plateau of the hardening; some elastic, most plastic, signs varied
 // so that f3 is compressive on some);
 // every weld ends in equilibrium with its load, and its state equals that of the same weld
-// solved alone (one connector: no batch): ū to 1e-9, motions to 1e-7 (below). The
-// assembled tangent of the batched evaluation matches finite differences at a random state.
-TEST(AssembledTangent, WeldsSharingABehaviourAreIntegratedInBatches) {
+// solved alone: ū to 1e-9, motions to 1e-7 (below). The assembled tangent of the 37 welds
+// matches finite differences at a random state.
+TEST(AssembledTangent, WeldsSharingABehaviourEachMatchTheWeldAlone) {
   constexpr int kWelds = 37;
   auto a = analyse(spot_weld_deck(kWelds));
   ASSERT_TRUE(a->system);

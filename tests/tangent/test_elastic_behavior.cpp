@@ -11,7 +11,8 @@
 #include <vector>
 
 #include "parser/deck_reader.hpp"
-#include "src/behavior/elastic_behavior.hpp"
+#include "parser/diagnostic_render.hpp"
+#include "src/behavior/elastic/elastic_behavior.hpp"
 
 namespace clinch {
 namespace {

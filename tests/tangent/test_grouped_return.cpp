@@ -8,9 +8,9 @@
 
 #include <random>
 
-#include "src/behavior/coupled_return_mapping.hpp"
-#include "src/behavior/elastic_behavior.hpp"
-#include "src/behavior/grouped_return.hpp"
+#include "src/behavior/plastic/coupled_return_mapping.hpp"
+#include "src/behavior/elastic/elastic_behavior.hpp"
+#include "src/behavior/plastic/grouped_return.hpp"
 #include "tests/tangent/plastic_test_support.hpp"
 
 namespace clinch {
@@ -126,20 +126,17 @@ void expect_same_return(const CoupledReturn& a, const CoupledReturn& b, const Ve
 // against finite differences (behaviors.md §1.4): first yield from the virgin state, a second
 // plastic step on the hardened surface, and a step in which f3 turns compressive so that the
 // Macaulay group stops on its kink.
-// With `batched`, each point and its perturbations go through one integrate_batch call (the
-// side-by-side lanes of grouped_return_lanes.cpp where they apply).
-void expect_fd_tangents_along_a_spot_weld_path(const std::string& body, bool batched = false) {
+void expect_fd_tangents_along_a_spot_weld_path(const std::string& body) {
   std::unique_ptr<PlasticLaw> law = make_law(body, 0b111111);
   Driver driver(*law->law);
   const Vector6 first = vec(0.02, -0.01, 0.05, 0.002, 0.001, -0.003);
-  driver.expect_fd_tangent(first, 1e-2, 1e5, 0b111111, batched);
+  driver.expect_fd_tangent(first, 1e-2, 1e5, 0b111111);
   driver.step(first);
   const Vector6 second = vec(0.05, -0.02, 0.08, 0.004, 0.003, -0.005);
-  driver.expect_fd_tangent(second, 1e-2, 1e5, 0b111111, batched);
+  driver.expect_fd_tangent(second, 1e-2, 1e5, 0b111111);
   driver.step(second);
   EXPECT_GT(driver.state().coupled_equivalent_plastic, 0.0);
-  driver.expect_fd_tangent(vec(0.09, -0.04, -0.02, 0.006, 0.004, -0.008), 1e-2, 1e5, 0b111111,
-                           batched);
+  driver.expect_fd_tangent(vec(0.09, -0.04, -0.02, 0.006, 0.004, -0.008), 1e-2, 1e5, 0b111111);
 }
 
 TEST(GroupedReturn, SatisfiesTheOptimalityConditionsAndAgreesWithTheGeneralReturn) {
@@ -347,63 +344,6 @@ TEST(GroupedReturn, AppliesOnlyToRadialGroups) {
                        "*CONNECTOR PLASTICITY\n*CONNECTOR HARDENING\n100., 0.\n"
                        "*CONNECTOR POTENTIAL\n1, 1.\n2, 1.\n");
   EXPECT_TRUE(GroupedReturn::create(*circle.potential, circle.space));
-}
-
-// The side-by-side return (GroupedReturn::solve_lanes: the joint Newton for kLanes trial forces
-// in lock step) against solve() on each: the same equations and tolerances, so the same closest
-// point: forces, Δλ and tangents as expect_same_return. Random trials at 1.05–20 × first yield
-// (a quarter scaled by 0.05, mostly elastic), half of them cut so that they end on a kink, with
-// random ū_n; hardening and
-// softening; full batches and a partial one. Lanes the lock step does not settle go through
-// solve() and match trivially; how many do is bounded (they cost a scalar return each).
-TEST(GroupedReturn, SideBySideLanesMatchTheSingleReturn) {
-  for (const char* hardening : {"60000., 0.5", "20000., 0.5"}) {
-    std::string body = spot_weld_body(uncoupled_elasticity({1e5, 1e5, 2e5, 1e6, 1e6, 5e5}));
-    body.replace(body.find("60000., 0.5"), 11, hardening);
-    Parts p = parts(body);
-    const std::optional<GroupedReturn> grouped = GroupedReturn::create(*p.potential, p.space);
-    ASSERT_TRUE(grouped);
-    ASSERT_TRUE(grouped->has_lanes());
-    std::mt19937 rng(11);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    constexpr int kLanes = GroupedReturn::kLanes;
-    int plastic = 0, elastic = 0;
-    for (int batch = 0; batch < 150; ++batch) {
-      const int count = batch % 10 == 9 ? 5 : kLanes;
-      std::array<Vector6, kLanes> trial;
-      std::array<double, kLanes> ubar;
-      for (int l = 0; l < count; ++l) {
-        trial[l] = random_trial(p, rng, l % 2 == 1) * (l % 4 == 3 ? 0.05 : 1.0);
-        ubar[l] = 0.4 * unit(rng);
-      }
-      std::array<CoupledReturn, kLanes> lanes;
-      grouped->solve_lanes(*p.yield, trial.data(), ubar.data(), count, true, lanes.data());
-      for (int l = 0; l < count; ++l) {
-        const CoupledReturn single = grouped->solve(*p.yield, trial[l], ubar[l], true);
-        ASSERT_EQ(lanes[l].plastic, single.plastic) << trial[l].transpose();
-        ASSERT_EQ(lanes[l].converged, single.converged) << trial[l].transpose();
-        if (!single.plastic) {
-          ++elastic;
-          EXPECT_EQ(lanes[l].force, trial[l]);
-          continue;
-        }
-        if (!single.converged) continue;
-        ++plastic;
-        EXPECT_LE(optimality_violation(p, trial[l], lanes[l], ubar[l]), 1e-9)
-            << trial[l].transpose();
-        expect_same_return(lanes[l], single, trial[l]);
-      }
-    }
-    EXPECT_GT(plastic, 1400);
-    EXPECT_GT(elastic, 400);
-  }
-}
-
-// The consistent tangent of the side-by-side return against finite differences, every point
-// and its perturbations in one batch: first yield, the hardened surface, the Macaulay kink.
-TEST(GroupedReturn, SideBySideLanesTangentMatchesFiniteDifferences) {
-  expect_fd_tangents_along_a_spot_weld_path(
-      spot_weld_body(uncoupled_elasticity({1e5, 1e5, 2e5, 1e6, 1e6, 5e5})), true);
 }
 
 }  // namespace

@@ -12,7 +12,7 @@
 #include <random>
 #include <string>
 
-#include "src/behavior/connector_potential.hpp"
+#include "src/behavior/potential/connector_potential.hpp"
 #include "tests/tangent/plastic_test_support.hpp"
 
 namespace clinch {

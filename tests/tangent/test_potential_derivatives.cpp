@@ -10,8 +10,8 @@
 #include <random>
 #include <string>
 
-#include "src/behavior/connector_potential.hpp"
-#include "src/behavior/derived_component.hpp"
+#include "src/behavior/potential/connector_potential.hpp"
+#include "src/behavior/potential/derived_component.hpp"
 #include "tests/tangent/potential_fixture.hpp"
 
 namespace clinch {

@@ -12,7 +12,7 @@
 #include <string>
 
 #include "parser/deck_reader.hpp"
-#include "src/behavior/spring_law.hpp"
+#include "src/behavior/elastic/spring_law.hpp"
 
 namespace clinch {
 namespace {

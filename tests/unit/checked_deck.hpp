@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "parser/diagnostic.hpp"
+#include "base/diagnostic.hpp"
 #include "parser/source_manager.hpp"
 #include "src/model/model.hpp"
 

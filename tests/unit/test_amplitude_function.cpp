@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "parser/deck_reader.hpp"
+#include "parser/diagnostic_render.hpp"
 #include "src/solver/amplitude_function.hpp"
 
 namespace clinch {

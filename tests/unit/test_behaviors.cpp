@@ -11,11 +11,11 @@
 
 #include "parser/deck_reader.hpp"
 #include "tests/unit/checked_deck.hpp"
-#include "parser/diagnostic.hpp"
+#include "base/diagnostic.hpp"
 #include "parser/source_manager.hpp"
 #include "src/model/model.hpp"
-#include "src/model/validate.hpp"
-#include "src/model/validate_behavior_sections.hpp"
+#include "src/check/validate.hpp"
+#include "src/check/validate_behavior_sections.hpp"
 
 namespace clinch {
 namespace {

@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "src/behavior/derived_component.hpp"
+#include "src/behavior/potential/derived_component.hpp"
 #include "tests/tangent/potential_fixture.hpp"
 
 namespace clinch {

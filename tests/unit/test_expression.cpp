@@ -11,7 +11,7 @@
 #include <string>
 #include <string_view>
 
-#include "parser/diagnostic.hpp"
+#include "base/diagnostic.hpp"
 #include "parser/expression.hpp"
 
 namespace clinch {

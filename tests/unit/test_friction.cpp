@@ -9,11 +9,11 @@
 
 #include "parser/deck_reader.hpp"
 #include "tests/unit/checked_deck.hpp"
-#include "parser/diagnostic.hpp"
+#include "base/diagnostic.hpp"
 #include "parser/source_manager.hpp"
 #include "src/model/model.hpp"
 #include "src/model/potential_queries.hpp"
-#include "src/model/validate.hpp"
+#include "src/check/validate.hpp"
 
 namespace clinch {
 namespace {

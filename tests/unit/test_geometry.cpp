@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "parser/deck_reader.hpp"
+#include "parser/diagnostic_render.hpp"
 
 namespace clinch {
 namespace {

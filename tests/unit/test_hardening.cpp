@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "src/behavior/isotropic_hardening.hpp"
-#include "src/behavior/kinematic_hardening.hpp"
+#include "src/behavior/plastic/isotropic_hardening.hpp"
+#include "src/behavior/plastic/kinematic_hardening.hpp"
 
 namespace clinch {
 namespace {

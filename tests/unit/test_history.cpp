@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "parser/deck_reader.hpp"
+#include "parser/diagnostic_render.hpp"
 #include "src/model/output_variables.hpp"
 
 namespace clinch {

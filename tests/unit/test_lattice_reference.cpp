@@ -11,7 +11,7 @@
 #include <functional>
 #include <vector>
 
-#include "src/linalg/small_types.hpp"
+#include "base/small_types.hpp"
 
 namespace clinch {
 namespace {

@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include "parser/diagnostic.hpp"
+#include "base/diagnostic.hpp"
 #include "parser/parameters.hpp"
 
 namespace clinch {

@@ -114,31 +114,6 @@ TEST(PiecewiseLinearTable, NanPropagates) {
   EXPECT_TRUE(std::isnan(s.slope));
 }
 
-// evaluate_lanes (the branch-free form the side-by-side plastic return uses) gives evaluate()'s
-// value and slope at every kind of point: before, inside, on each breakpoint (right-hand slope),
-// at and after the last point, both extrapolations, a one-row table, NaN. Both are one
-// multiplication and an addition on the same segment, so they agree to within kTol.
-TEST(PiecewiseLinearTable, LanesAgreeWithEvaluate) {
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  const double x[8] = {-0.3, -0.1, -0.05, 0.0, 0.1, 0.15, 0.2, 0.7};
-  for (const Extrapolation e : {Extrapolation::Constant, Extrapolation::Linear}) {
-    for (const PiecewiseLinearTable& table :
-         {e2_table(e), PiecewiseLinearTable({0.05}, {7.0}, e)}) {
-      double value[8], slope[8];
-      table.evaluate_lanes<8>(x, value, slope);
-      for (int l = 0; l < 8; ++l) {
-        const TableSample s = table.evaluate(x[l]);
-        EXPECT_NEAR(value[l], s.value, kTol) << x[l];
-        EXPECT_EQ(slope[l], s.slope) << x[l];
-      }
-      const double at_nan[8] = {nan, 0.0, nan, 0.0, 0.0, 0.0, 0.0, 0.0};
-      table.evaluate_lanes<8>(at_nan, value, slope);
-      EXPECT_TRUE(std::isnan(value[0]) && std::isnan(slope[0]) && std::isnan(value[2]));
-      EXPECT_NEAR(value[1], table.evaluate(0.0).value, kTol);
-    }
-  }
-}
-
 TEST(PiecewiseLinearTable, RejectsTablesValidationWouldHaveRejected) {
   EXPECT_THROW(PiecewiseLinearTable({}, {}, Extrapolation::Constant), std::invalid_argument);
   EXPECT_THROW(PiecewiseLinearTable({0.0, 1.0}, {0.0}, Extrapolation::Constant),

@@ -12,7 +12,7 @@
 
 #include "parser/deck_reader.hpp"
 #include "tests/unit/checked_deck.hpp"
-#include "parser/diagnostic.hpp"
+#include "base/diagnostic.hpp"
 #include "parser/source_manager.hpp"
 #include "src/model/connection_types.hpp"
 #include "src/model/model.hpp"

@@ -8,7 +8,7 @@
 #include <Eigen/Cholesky>
 
 #include "src/linalg/small_cholesky.hpp"
-#include "src/linalg/small_types.hpp"
+#include "base/small_types.hpp"
 
 namespace clinch {
 namespace {

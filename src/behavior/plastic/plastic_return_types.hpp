@@ -1,0 +1,26 @@
+// What the coupled return mappings of connector plasticity share (behaviors.md §6.4, §6.6): the
+// linear elastic space they work in and the result they hand back to the elastic-plastic
+// behaviour.
+#pragma once
+
+#include "base/small_types.hpp"
+
+namespace clinch {
+
+// The linear elastic law F = K (u − u^pl) (§6.2) on the components with linear elasticity. The
+// other slots are padded with the identity, with a zero trial force and a zero normal there, so
+// that fixed-size 6×6 algebra leaves them at zero and never sees a singular matrix.
+struct ElasticSpace {
+  Matrix6 stiffness = Matrix6::Identity();   // K (padded)
+  Matrix6 compliance = Matrix6::Identity();  // K⁻¹ (padded)
+};
+
+struct CoupledReturn {
+  bool plastic = false;    // φ^tr > 0
+  bool converged = true;
+  Vector6 force = Vector6::Zero();  // F at the end of the increment
+  double multiplier = 0;            // Δλ (MAX: Σ_j Δλ_j), the increment of ū (§6.2)
+  Matrix6 tangent = Matrix6::Zero();  // ∂F/∂u, filled when plastic and asked for
+};
+
+}  // namespace clinch
