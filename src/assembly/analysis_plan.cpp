@@ -3,9 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "base/diagnostic.hpp"
-#include "src/assembly/sparsity_pattern.hpp"
 #include "src/behavior/elastic/elastic_behavior.hpp"
 #include "src/behavior/plastic/elastic_plastic_behavior.hpp"
 #include "src/model/orientation_triad.hpp"
@@ -94,7 +94,6 @@ class PlanBuilder {
                                                  : add_spring(static_cast<std::int32_t>(e), error);
       if (!ok) return false;
     }
-    build_pattern();
     return true;
   }
 
@@ -169,7 +168,6 @@ class PlanBuilder {
     r.kinematics = plan_.kinematics.size();
     r.reference = kinematics->initial_position();
     plan_.kinematics.push_back(std::move(*kinematics));
-    r.behavior = behavior_of_section(s);
 
     ComponentMask multiplied = r.constrained | motions_[static_cast<std::size_t>(e)];
     if (behavior) {
@@ -207,11 +205,10 @@ class PlanBuilder {
       r.local.equation[static_cast<std::size_t>(r.local.count++)] = plan_.dofs.add_multiplier(i >= 4);
       plan_.has_multipliers = true;
     }
-    r.history = plan_.history_size;
-    if (r.behavior) plan_.history_size += static_cast<std::size_t>(r.behavior->history_size());
     plan_.connector_of_element[static_cast<std::size_t>(e)] =
         static_cast<std::int32_t>(plan_.connectors.size());
     plan_.connectors.push_back(std::move(r));
+    if (const Behavior* law = behavior_of_section(s)) plan_.add_law(plan_.connectors.size() - 1, *law);
     return true;
   }
 
@@ -257,31 +254,6 @@ class PlanBuilder {
     return true;
   }
 
-  void build_pattern() {
-    SparsityBuilder builder(plan_.dofs.equations());
-    auto couple = [&](const LocalEquations& l) {
-      builder.couple(std::span<const int>(l.equation.data(), static_cast<std::size_t>(l.count)));
-    };
-    for (const ConnectorRecord& r : plan_.connectors) couple(r.local);
-    for (const SpringRecord& r : plan_.springs) couple(r.local);
-    plan_.pattern = builder.build();
-    auto place = [&](LocalEquations& l) {
-      l.positions = plan_.positions.size();
-      for (int j = 0; j < l.count; ++j) {
-        for (int i = 0; i <= j; ++i) {
-          plan_.positions.push_back(entry_position(plan_.pattern, l.equation[static_cast<std::size_t>(i)],
-                                                   l.equation[static_cast<std::size_t>(j)]));
-        }
-      }
-    };
-    for (ConnectorRecord& r : plan_.connectors) place(r.local);
-    for (SpringRecord& r : plan_.springs) place(r.local);
-    plan_.diagonal.resize(static_cast<std::size_t>(plan_.pattern.n));
-    for (int i = 0; i < plan_.pattern.n; ++i) {
-      plan_.diagonal[static_cast<std::size_t>(i)] = entry_position(plan_.pattern, i, i);
-    }
-  }
-
   const Model& model_;
   AnalysisPlan& plan_;
   std::vector<ComponentMask> motions_;
@@ -291,6 +263,20 @@ class PlanBuilder {
 };
 
 }  // namespace
+
+void AnalysisPlan::add_law(std::size_t c, const Behavior& law) {
+  LawStack& stack = connectors[c].laws;
+  if (stack.count == LawStack::kMaxLaws) throw std::logic_error("too many laws on one connector");
+  stack.slots[static_cast<std::size_t>(stack.count++)] = {&law, history_size};
+  stack.needs_connector_forces = stack.needs_connector_forces || law.needs_connector_forces();
+  stack.symmetric = stack.symmetric && law.tangent_is_symmetric() && !law.needs_connector_forces();
+  history_size += law.history_size();
+}
+
+bool AnalysisPlan::laws_symmetric() const {
+  return std::all_of(connectors.begin(), connectors.end(),
+                     [](const ConnectorRecord& r) { return r.laws.symmetric; });
+}
 
 std::optional<AnalysisPlan> build_analysis_plan(const Model& model, std::string* error) {
   AnalysisPlan plan;

@@ -22,11 +22,27 @@ namespace clinch {
 
 constexpr int kMaxLocalEquations = 18;  // 12 nodal columns + 6 multipliers
 
-// The equations of one element, in local order, and where its entries go in the matrix.
+// The equations of one element, in local order (AssemblyPattern says where its entries go).
 struct LocalEquations {
   std::array<int, kMaxLocalEquations> equation{};
   int count = 0;
-  std::size_t positions = 0;  // offset of count·(count+1)/2 upper-triangle positions in the plan
+};
+
+// A connector's laws in the order of behaviors.md §1.3, each with the offset of its history in
+// the analysis state's history array.
+struct LawSlot {
+  const Behavior* law = nullptr;
+  std::size_t history = 0;
+};
+struct LawStack {
+  static constexpr int kMaxLaws = 4;
+  std::array<LawSlot, kMaxLaws> slots{};
+  int count = 0;
+  bool needs_connector_forces = false;  // some law reads the constraint forces
+  bool symmetric = true;                // every law's tangent is symmetric
+  const LawSlot* begin() const { return slots.data(); }
+  const LawSlot* end() const { return slots.data() + count; }
+  bool empty() const { return count == 0; }
 };
 
 struct ConnectorStopLimits {
@@ -44,7 +60,7 @@ struct ConnectorRecord {
   std::int32_t section = 0;
   std::array<std::int32_t, 2> nodes{kGround, kGround};
   std::size_t kinematics = 0;  // into AnalysisPlan::kinematics
-  const Behavior* behavior = nullptr;
+  LawStack laws;
   ComponentMask available = 0, constrained = 0, rigid = 0;
   Vector6 reference = Vector6::Zero();  // ref_i: u = p − ref (behaviors.md §3)
   std::array<ConnectorStopLimits, 6> stops;
@@ -56,7 +72,6 @@ struct ConnectorRecord {
   std::array<std::int8_t, 6> multiplier_components{};
   int multiplier_count = 0;
   LocalEquations local;
-  std::size_t history = 0;  // offset of the behaviour's history
 };
 
 struct SpringRecord {
@@ -86,14 +101,15 @@ struct AnalysisPlan {
   std::vector<std::optional<SpringLaw>> spring_laws;  // per *SPRING (empty when invalid)
   std::vector<SpringRecord> springs;
   std::vector<std::int32_t> spring_of_element;
-  std::vector<int> positions;  // scatter positions of every element, see LocalEquations
-  std::vector<int> diagonal;   // position of each equation's diagonal entry
-  SparseMatrix pattern;
   std::size_t history_size = 0;
   double length_scale = 1.0;  // L̄: largest initial connector length (keywords.md §16)
   bool two_d = false;
-  bool symmetric = true;
   bool has_multipliers = false;
+
+  // Appends `law` to the stack of connector `c`, with history of its own.
+  void add_law(std::size_t c, const Behavior& law);
+  // True when every law of every connector returns a symmetric tangent.
+  bool laws_symmetric() const;
 };
 
 // Builds the plan of a validated model (no errors). Returns nullopt with `error` when the model

@@ -5,8 +5,9 @@
 
 namespace clinch {
 
-SparsityBuilder::SparsityBuilder(int equations)
-    : rows_of_column_(static_cast<std::size_t>(equations)) {
+SparsityBuilder::SparsityBuilder(int equations, bool symmetric)
+    : symmetric_(symmetric),
+      rows_of_column_(static_cast<std::size_t>(equations)) {
   for (int i = 0; i < equations; ++i) rows_of_column_[static_cast<std::size_t>(i)].push_back(i);
 }
 
@@ -14,7 +15,7 @@ void SparsityBuilder::couple(std::span<const int> equations) {
   for (int a : equations) {
     if (a < 0) continue;
     for (int b : equations) {
-      if (b < 0 || b >= a) continue;
+      if (b < 0 || b == a || (symmetric_ && b > a)) continue;
       rows_of_column_[static_cast<std::size_t>(a)].push_back(b);
     }
   }
@@ -23,7 +24,7 @@ void SparsityBuilder::couple(std::span<const int> equations) {
 SparseMatrix SparsityBuilder::build() {
   SparseMatrix m;
   m.n = static_cast<int>(rows_of_column_.size());
-  m.symmetric_upper = true;
+  m.symmetric_upper = symmetric_;
   m.col_ptr.assign(static_cast<std::size_t>(m.n) + 1, 0);
   for (std::size_t c = 0; c < rows_of_column_.size(); ++c) {
     std::vector<int>& rows = rows_of_column_[c];
@@ -41,7 +42,7 @@ SparseMatrix SparsityBuilder::build() {
 }
 
 int entry_position(const SparseMatrix& pattern, int row, int column) {
-  if (row > column) std::swap(row, column);
+  if (pattern.symmetric_upper && row > column) std::swap(row, column);
   const auto first = pattern.row_idx.begin() + pattern.col_ptr[static_cast<std::size_t>(column)];
   const auto last = pattern.row_idx.begin() + pattern.col_ptr[static_cast<std::size_t>(column) + 1];
   const auto it = std::lower_bound(first, last, row);

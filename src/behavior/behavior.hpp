@@ -1,24 +1,37 @@
 // The constitutive interface of a connector element: a pure map from the committed state and a
-// trial increment of the constitutive motion to the effective force and its tangent, all in
-// component space (behaviors.md §1.3). Kinematics map nodal DOFs to components before this is
-// called; the plan owns the history arrays and commits a trial history once an increment converges.
+// trial increment of the constitutive motion to a force and its tangent, all in component space
+// (behaviors.md §1.3). Kinematics map nodal DOFs to components before this is called; the
+// analysis state owns the history arrays and commits a trial history once an increment converges.
+// A connector's laws form a stack in the order of §1.3 (elastic-plastic, damage, friction; damping
+// in parallel): each law returns its own contribution, and may read what the laws before it
+// produced (damage degrades it) and the connector's constraint forces (friction's contact force).
 #pragma once
 
+#include <limits>
 #include <span>
 #include <string>
+#include <string_view>
 
 #include "base/small_types.hpp"
 #include "src/model/section_model.hpp"
 
 namespace clinch {
 
-// Which tangent the caller needs: none (residual only), the elastic one (for a robust first
-// iteration) or the consistent one (quadratic convergence).
-enum class TangentRequest { None, Elastic, Consistent };
+// Which tangent the caller needs: none (a residual only: output, line search, finite
+// differences) or the consistent one (quadratic convergence).
+enum class TangentRequest { None, Consistent };
 
-// Success; Unreliable (a result the caller may accept but should cut back on if the increment
-// struggles); Failure (no result: the global solver cuts back, behaviors.md §1.3).
+// Success; Unreliable (a result the caller may use, but the law doubts it: the step driver does
+// not let the next increment grow); Failure (no result: the step driver cuts back, §1.3).
 enum class IntegrationStatus { Success, Unreliable, Failure };
+
+// One slot of a law's history: the output variable it holds (output-variables.md §2, e.g. "CUP")
+// and its component (1–6, 0 for a scalar). A slot that holds nothing for this instance of the law
+// has an empty name.
+struct HistoryVariable {
+  std::string_view output;
+  int component = 0;
+};
 
 struct BehaviorInput {
   const Vector6& motion_old;  // constitutive motion u = p − ref at the last converged increment
@@ -26,25 +39,27 @@ struct BehaviorInput {
   double time = 0, dt = 0;
   std::span<const double> history_old;
   TangentRequest tangent = TangentRequest::Consistent;
+  // The force and tangent of the laws before this one in the stack (nullptr for the first).
+  const Vector6* force_below = nullptr;
+  const Matrix6* tangent_below = nullptr;
+  // The connector's constraint forces at the current iterate, per component: the multipliers of
+  // its active constraints (constrained and RIGID components, stops, locks, connector motions),
+  // 0 elsewhere. Set only for a law that needs_connector_forces().
+  const Vector6* connector_forces = nullptr;
 };
 
 struct BehaviorOutput {
-  Vector6 force = Vector6::Zero();  // f^eff (slots of components the behaviour does not act on: 0)
-  Matrix6 tangent = Matrix6::Zero();  // ∂f/∂u
+  Vector6 force = Vector6::Zero();    // this law's force (0 on components it does not act on)
+  Matrix6 tangent = Matrix6::Zero();  // ∂force/∂u
+  // ∂force/∂(connector forces): column i against the constraint force of component i + 1. Read
+  // only for a law that needs_connector_forces().
+  Matrix6 force_tangent = Matrix6::Zero();
   std::span<double> history_new;
-  double suggested_dt_ratio = 1.0;
-  std::string message;  // filled only on failure
-};
-
-// What a behaviour's history means, for output (output-variables.md §2: CUP, CUE, CUPEQ,
-// CALPHAF). Components without plasticity read 0.
-struct BehaviorState {
-  Vector6 plastic_motion = Vector6::Zero();        // u^pl (CUP); CUE = CCU − CUP
-  Vector6 equivalent_plastic = Vector6::Zero();    // ū^pl of each uncoupled plasticity (CUPEQn)
-  ComponentMask uncoupled_plastic = 0;             // components with an uncoupled plasticity
-  double coupled_equivalent_plastic = 0;           // ū^pl of the coupled plasticity (CUPEQC)
-  bool has_coupled_plasticity = false;
-  Vector6 back_force = Vector6::Zero();            // α (CALPHAF)
+  // The step the law would like, as a ratio of the current time increment: below 1 the increment
+  // is abandoned and retried that much smaller; otherwise the next increment grows at most so
+  // much. Infinity (the default): no request.
+  double suggested_dt_ratio = std::numeric_limits<double>::infinity();
+  std::string message;  // why it failed, is unreliable, or asks for a smaller step
 };
 
 // A force–motion law in component space. `integrate` is const and never touches history_old, so
@@ -53,15 +68,18 @@ class Behavior {
  public:
   virtual ~Behavior() = default;
   virtual ComponentMask components() const = 0;  // components it acts on
-  virtual int history_size() const = 0;          // doubles per element
+  // Its history, slot by slot (the size of the history is the size of the layout).
+  virtual std::span<const HistoryVariable> history_layout() const = 0;
   virtual bool tangent_is_symmetric() const = 0;
+  // True when its force depends on the connector's constraint forces; it then fills
+  // force_tangent, and the element's tangent is unsymmetric.
+  virtual bool needs_connector_forces() const { return false; }
   virtual IntegrationStatus integrate(const BehaviorInput& in, BehaviorOutput& out) const = 0;
-  // Reads a (committed or trial) history of this behaviour; a path-independent law leaves
-  // `state` as it is.
-  virtual void describe_state(std::span<const double> history, BehaviorState& state) const {
-    (void)history;
-    (void)state;
-  }
+
+  std::size_t history_size() const { return history_layout().size(); }
 };
+
+// Index of the slot that holds `output` of `component` in `layout`, −1 if none does.
+int history_slot(std::span<const HistoryVariable> layout, std::string_view output, int component);
 
 }  // namespace clinch

@@ -15,24 +15,11 @@ std::string set_label(const TargetRef& set, bool element) {
                                       : set.instance_display + "." + set.set_display;
 }
 
-// The scalar CUPEQ (output-variables.md §2): the coupled plasticity's value if the element has
-// one; otherwise the single uncoupled component's value; otherwise the largest over components.
-double scalar_equivalent_plastic(const BehaviorState& state) {
-  if (state.has_coupled_plasticity) return state.coupled_equivalent_plastic;
-  double largest = 0;
-  for (int i = 0; i < 6; ++i) {
-    if (has_component(state.uncoupled_plastic, i + 1)) {
-      largest = std::max(largest, state.equivalent_plastic[i]);
-    }
-  }
-  return largest;
-}
-
 // Connector quantities of output-variables.md §2 that clinch run produces; every other connector
 // identifier (damage, friction, damping, velocities) is 0 for the behaviours a run accepts.
 double connector_value(const ConnectorOutput& out, const std::string& variable, int component) {
-  if (variable == "CUPEQ" && component == 0) return scalar_equivalent_plastic(out.behavior);
-  if (variable == "CUPEQC") return out.behavior.coupled_equivalent_plastic;
+  if (variable == "CUPEQ" && component == 0) return out.scalar_equivalent_plastic();
+  if (variable == "CUPEQC") return out.history_value("CUPEQC", 0);
   if (component < 1) return 0.0;
   const int i = component - 1;
   if (variable == "CTF") return out.total[i];
@@ -41,10 +28,10 @@ double connector_value(const ConnectorOutput& out, const std::string& variable, 
   if (variable == "CCF") return out.applied[i];
   if (variable == "CU") return out.change[i];
   if (variable == "CCU") return out.constitutive[i];
-  if (variable == "CUE") return out.constitutive[i] - out.behavior.plastic_motion[i];
-  if (variable == "CUP") return out.behavior.plastic_motion[i];
-  if (variable == "CUPEQ") return out.behavior.equivalent_plastic[i];
-  if (variable == "CALPHAF") return out.behavior.back_force[i];
+  if (variable == "CUE") return out.constitutive[i] - out.history_value("CUP", component);
+  if (variable == "CUP" || variable == "CUPEQ" || variable == "CALPHAF") {
+    return out.history_value(variable, component);
+  }
   if (variable == "CP") return out.position[i];
   if (variable == "CSLST") return out.status[static_cast<std::size_t>(i)];
   return 0.0;
@@ -324,8 +311,7 @@ double HistoryColumns::value(const Column& c, ConnectorSystem& system) {
   for (const Term& t : c.terms) {
     switch (t.source) {
       case Source::Connector: {
-        // One evaluation per connector and row: a plastic connector's outputs come from a
-        // return mapping, and an element has many columns.
+        // The connector's results once per row: an element has many columns.
         auto [it, inserted] = row_outputs_.try_emplace(t.index);
         if (inserted) it->second = system.connector_output(static_cast<std::size_t>(t.index));
         const ConnectorOutput& out = it->second;
@@ -340,9 +326,8 @@ double HistoryColumns::value(const Column& c, ConnectorSystem& system) {
         break;
       }
       case Source::Spring: {
-        double force = 0, delta = 0;
-        system.spring_output(static_cast<std::size_t>(t.index), force, delta);
-        sum += c.variable == "S" ? force : c.variable == "E" ? delta : 0.0;
+        const SpringResult& spring = system.spring_output(static_cast<std::size_t>(t.index));
+        sum += c.variable == "S" ? spring.force : c.variable == "E" ? spring.delta : 0.0;
         break;
       }
       case Source::Node:

@@ -1,14 +1,18 @@
-// What Newton sees (ARCHITECTURE.md "Key interfaces"): a residual and a tangent with a fixed
-// sparsity pattern, a way to apply a correction, and the norms the convergence criteria of
-// *CONTROLS need. The state (displacements, rotations, multipliers, trial history) lives inside
-// the problem because rotations are updated multiplicatively under NLGEOM.
+// What Newton and the step driver see (ARCHITECTURE.md "Key interfaces"). Newton: a residual and
+// a tangent with a fixed sparsity pattern, a way to apply a correction, and the norms the
+// convergence criteria of *CONTROLS need. The step driver, between solves: commit or revert the
+// trial state, settle the active set, the end-of-increment events, and what the laws asked for.
+// The state (displacements, rotations, multipliers, trial history) lives inside the problem
+// because rotations are updated multiplicatively under NLGEOM.
 #pragma once
 
+#include <limits>
 #include <string>
+
+#include "src/linalg/sparse_matrix.hpp"
 
 #include <Eigen/Core>
 
-#include "src/linalg/linear_solver.hpp"
 
 namespace clinch {
 
@@ -37,6 +41,14 @@ struct IterationNorms {
   double constraint_violation = 0;       // max |g| / its tolerance (≤ 1 passes)
 };
 
+// What the laws asked of the time step: the smallest ratio any law suggested (infinity when none
+// did), whether some result was unreliable, and the message of the law that set the ratio.
+struct StepRequest {
+  double dt_ratio = std::numeric_limits<double>::infinity();
+  bool unreliable = false;
+  std::string message;
+};
+
 class NonlinearProblem {
  public:
   virtual ~NonlinearProblem() = default;
@@ -55,6 +67,18 @@ class NonlinearProblem {
   // is non-null.
   virtual void measure(const Eigen::VectorXd& residual, const Eigen::VectorXd* correction,
                        IterationNorms& norms) const = 0;
+
+  // ---- between solves (the step driver) ----
+  virtual void commit() = 0;  // the trial state becomes the converged one
+  virtual void revert() = 0;  // back to the converged state (a cutback)
+  // Updates the active set (stops) from the solved state; true when it changed, and the
+  // increment then iterates on.
+  virtual bool update_active_set() { return false; }
+  // Events of a converged, committed increment (locks engage).
+  virtual void end_increment() {}
+  // What the laws asked for in the last evaluation: a time-step ratio (below 1: retry smaller;
+  // above 1: grow at most so much), whether a result was unreliable, and why.
+  virtual StepRequest step_request() const { return {}; }
 };
 
 }  // namespace clinch

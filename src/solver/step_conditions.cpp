@@ -191,16 +191,18 @@ void StepConditions::begin_step(std::size_t s, ConnectorSystem& system) {
 void StepConditions::apply(ConnectorSystem& system, double step_time, double total_time) const {
   const double tau = period_ > 0 ? step_time / period_ : 1.0;
   auto value = [&](const Condition& c) { return c.value(tau, step_time, total_time, amplitudes_); };
-  system.clear_conditions();
-  for (const auto& [eq, c] : boundaries_) system.prescribe(static_cast<int>(eq), value(c));
-  for (const auto& [eq, c] : loads_) system.add_load(static_cast<int>(eq), value(c));
-  for (const auto& [eq, c] : released_loads_) system.add_load(static_cast<int>(eq), value(c));
+  IncrementConditions& conditions = system.conditions();
+  conditions.clear();
+  for (const auto& [eq, c] : boundaries_) conditions.prescribe(static_cast<int>(eq), value(c));
+  for (const auto& [eq, c] : loads_) conditions.add_load(static_cast<int>(eq), value(c));
+  for (const auto& [eq, c] : released_loads_) conditions.add_load(static_cast<int>(eq), value(c));
   for (const auto& [key, c] : motions_) {
-    system.prescribe_motion(static_cast<int>(key / 8), static_cast<int>(key % 8), value(c));
+    conditions.prescribe_motion(static_cast<int>(key / 8), static_cast<int>(key % 8), value(c));
   }
   for (const Table* table : {&connector_loads_, &released_connector_loads_}) {
     for (const auto& [key, c] : *table) {
-      system.add_connector_load(static_cast<int>(key / 8), static_cast<int>(key % 8), value(c));
+      conditions.add_connector_load(static_cast<int>(key / 8), static_cast<int>(key % 8),
+                                    value(c));
     }
   }
 }

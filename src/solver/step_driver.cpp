@@ -40,18 +40,27 @@ std::string describe_equation(const Model& model, const AnalysisPlan& plan, int 
 
 class Driver {
  public:
-  Driver(const Model& model, ConnectorSystem& system, LinearSolver& solver, RunOutputs& out,
-         const RunOptions& options)
+  Driver(const Model& model, ConnectorSystem& system, const SolverFactory& solvers,
+         RunOutputs& out, const RunOptions& options)
       : model_(model),
         plan_(system.plan()),
         system_(system),
-        solver_(solver),
+        problem_(system),
+        solvers_(solvers),
         out_(out),
         options_(options),
         conditions_(model, system.plan()),
         criteria_(model.history.steps.empty() ? Controls{} : model.history.steps[0].controls) {}
 
   RunResult run() {
+    // Row 0: the initial state, before any condition applies (output-variables.md §1.4).
+    Eigen::VectorXd residual(problem_.size());
+    if (const EvalStatus initial = problem_.evaluate(residual, nullptr); !initial.ok) {
+      fail(initial.message, 1, 0);
+      out_.status.write_failed(result_.reason, result_.step, result_.increment, result_.time);
+      out_.log.error(fmt::format("analysis stopped: {}", result_.reason));
+      return result_;
+    }
     write_row(1, 0, 0.0, 0.0, false);
     for (std::size_t s = 0; s < model_.history.steps.size(); ++s) {
       if (!run_step(s)) {
@@ -90,7 +99,7 @@ class Driver {
     changes = 0;
     for (;;) {
       const auto start = std::chrono::steady_clock::now();
-      NewtonReport report = solve_increment(system_, solver_, criteria_, options);
+      NewtonReport report = solve_increment(problem_, *solver_, criteria_, options);
       result_.newton_seconds +=
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       result_.linear_seconds += report.linear_seconds;
@@ -110,7 +119,7 @@ class Driver {
         out_.log.iteration(record);
       }
       iterations += std::max(0, static_cast<int>(report.iterations.size()) - 1);
-      if (!report.converged() || !system_.update_stops()) return report;
+      if (!report.converged() || !problem_.update_active_set()) return report;
       if (++changes > 8) {
         report.outcome = NewtonOutcome::TooManyIterations;
         report.message = "stop active set did not settle";
@@ -127,6 +136,7 @@ class Driver {
     // DIRECT=NO STOP accepts an increment that reaches the iteration limit (keywords.md §15).
     accept_unconverged_ = procedure.direct && procedure.no_stop;
     system_.set_nlgeom(step.nlgeom);
+    if (!choose_storage(step, step_number)) return false;
     conditions_.begin_step(s, system_);
     criteria_.start_step(step.controls);
     out_.columns.begin_step(s);
@@ -158,11 +168,14 @@ class Driver {
                                             iterations, changes);
         result_.iterations += iterations;
         const bool converged = report.converged();
-        out_.status.write_attempt({step_number, increment + 1, attempt_number, !converged,
-                                   iterations, iterations + changes, total_time_ + dt,
-                                   new_time, dt});
-        if (converged) {
-          system_.commit();
+        // A converged attempt is still abandoned when a law asks for a smaller increment.
+        const StepRequest request = problem_.step_request();
+        const bool smaller = converged && request.dt_ratio < 1.0;
+        out_.status.write_attempt({step_number, increment + 1, attempt_number,
+                                   !converged || smaller, iterations, iterations + changes,
+                                   total_time_ + dt, new_time, dt});
+        if (converged && !smaller) {
+          problem_.commit();
           criteria_.accept_increment(report.iterations.back());
           step_time = new_time;
           total_time_ += dt;
@@ -173,29 +186,36 @@ class Driver {
           write_row(step_number, increment, step_time, total_time_, last);
           // A lock engages at the converged state; its row shows the unlocked state
           // (behaviors.md §5.2, example E5).
-          system_.engage_locks();
+          problem_.end_increment();
           out_.progress.update(step_number, increment, total_time_);
           if (!procedure.direct) {
             // keywords.md §16: D_B after a hard increment, D_D after two easy ones.
             easy_in_a_row = iterations <= t.ig ? easy_in_a_row + 1 : 0;
+            const double accepted = dt;
             if (iterations > t.il) dt *= t.db;
             else if (easy_in_a_row >= 2) dt *= t.dd;
+            // A law may cap the growth: by its ratio, or to none while it doubts its result.
+            dt = std::min(dt, accepted * (request.unreliable ? std::min(1.0, request.dt_ratio)
+                                                             : request.dt_ratio));
             dt = std::min(dt, procedure.max_increment);
           }
           break;
         }
-        system_.revert();
-        std::string reason = report.message;
-        if (report.outcome == NewtonOutcome::SolverFailed) {
+        problem_.revert();
+        std::string reason = smaller ? request.message : report.message;
+        if (!smaller && report.outcome == NewtonOutcome::SolverFailed) {
           reason = describe_equation(model_, plan_, report.failed_pivot);
           // A singular system does not get better with a smaller increment.
           return fail(reason, step_number, increment + 1);
         }
-        if (report.outcome == NewtonOutcome::EvaluationFailed && procedure.direct) {
+        if (!smaller && report.outcome == NewtonOutcome::EvaluationFailed && procedure.direct) {
           return fail(reason, step_number, increment + 1);
         }
         if (procedure.direct) {
-          return fail(fmt::format("no convergence with fixed increments ({})", reason),
+          return fail(smaller ? fmt::format("a law asks for a smaller increment than DIRECT "
+                                            "allows ({})",
+                                            reason)
+                              : fmt::format("no convergence with fixed increments ({})", reason),
                       step_number, increment + 1);
         }
         ++result_.cutbacks;
@@ -203,7 +223,8 @@ class Driver {
           return fail(fmt::format("too many cutbacks ({}; last: {})", t.ia, reason), step_number,
                       increment + 1);
         }
-        dt *= report.outcome == NewtonOutcome::Diverged ? t.df : t.dc;
+        dt *= smaller ? request.dt_ratio
+                      : report.outcome == NewtonOutcome::Diverged ? t.df : t.dc;
         easy_in_a_row = 0;
         if (dt < procedure.min_increment * (1.0 - 1e-12)) {
           return fail(fmt::format("time increment {} below the minimum {} ({})", dt,
@@ -218,10 +239,56 @@ class Driver {
     return true;
   }
 
+  // keywords.md §14, friction.md §4.3: the upper triangle and CHOLMOD when every law is
+  // symmetric and the step does not ask for UNSYMM=YES; the full pattern and UMFPACK otherwise.
+  // UNSYMM=NO keeps the upper triangle and symmetrises unsymmetric laws. A solver is analysed
+  // once per storage and kept for later steps.
+  bool choose_storage(const Step& step, int step_number) {
+    const bool laws_symmetric = plan_.laws_symmetric();
+    bool symmetric = laws_symmetric;
+    std::string why = laws_symmetric ? "every law's tangent is symmetric"
+                                     : "a law's tangent is unsymmetric";
+    if (step.unsymmetric == Unsymmetric::Yes) {
+      symmetric = false;
+      why = "*STEP, UNSYMM=YES";
+    } else if (step.unsymmetric == Unsymmetric::No) {
+      symmetric = true;
+      why = laws_symmetric ? "*STEP, UNSYMM=NO"
+                           : "*STEP, UNSYMM=NO: the unsymmetric tangent is symmetrised";
+    }
+    std::unique_ptr<LinearSolver>& solver = symmetric ? symmetric_solver_ : full_solver_;
+    system_.use_storage(symmetric);
+    if (!solver) {
+      const auto start = std::chrono::steady_clock::now();
+      solver = solvers_(symmetric);
+      if (!solver) {
+        return fail(fmt::format("the requested linear solver cannot solve this step ({}): use "
+                                "--solver auto or umfpack",
+                                why),
+                    step_number, 0);
+      }
+      std::string error;
+      if (solver->analyze(system_.pattern(), &error) != LinearStatus::Ok) {
+        return fail(fmt::format("linear solver analysis failed: {}", error), step_number, 0);
+      }
+      result_.analyze_seconds +=
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+    solver_ = solver.get();
+    out_.log.info(fmt::format("step {}: {} on the {} ({} equations, {} stored entries): {}",
+                              step_number, solver_->name(),
+                              symmetric ? "upper triangle" : "full pattern",
+                              system_.pattern().n, system_.pattern().values.size(), why));
+    return true;
+  }
+
   const Model& model_;
   const AnalysisPlan& plan_;
-  ConnectorSystem& system_;
-  LinearSolver& solver_;
+  ConnectorSystem& system_;   // conditions and output
+  NonlinearProblem& problem_;  // solving and the state between solves
+  const SolverFactory& solvers_;
+  std::unique_ptr<LinearSolver> symmetric_solver_, full_solver_;
+  LinearSolver* solver_ = nullptr;
   RunOutputs& out_;
   const RunOptions& options_;
   StepConditions conditions_;
@@ -235,9 +302,9 @@ class Driver {
 
 }  // namespace
 
-RunResult run_analysis(const Model& model, ConnectorSystem& system, LinearSolver& solver,
+RunResult run_analysis(const Model& model, ConnectorSystem& system, const SolverFactory& solvers,
                        RunOutputs& outputs, const RunOptions& options) {
-  return Driver(model, system, solver, outputs, options).run();
+  return Driver(model, system, solvers, outputs, options).run();
 }
 
 }  // namespace clinch

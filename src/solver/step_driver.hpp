@@ -1,10 +1,14 @@
 // The step driver (keywords.md §13–§16): runs every step of the deck, increment by increment —
 // automatic incrementation with cutbacks and growth, or DIRECT — calls Newton for each attempt,
-// settles the active set of stops, engages locks on converged increments, and reports each
-// attempt to the status file, each iteration to the log and each converged increment to the
-// history table. A failure stops the run with the reason, the step, the increment and the time.
+// settles the active set of stops, honours what the laws ask of the time step, engages locks on
+// converged increments, and reports each attempt to the status file, each iteration to the log
+// and each converged increment to the history table. Each step assembles a symmetric tangent
+// (CHOLMOD) or a full one (UMFPACK) as its laws and *STEP, UNSYMM require. A failure stops the run
+// with the reason, the step, the increment and the time.
 #pragma once
 
+#include <functional>
+#include <memory>
 #include <string>
 
 #include "src/assembly/connector_system.hpp"
@@ -39,9 +43,14 @@ struct RunResult {
   int factorizations = 0;
   double linear_seconds = 0;  // wall time in factorize + solve
   double newton_seconds = 0;  // wall time in Newton (evaluation, assembly, factorize, solve)
+  double analyze_seconds = 0;  // wall time in the solvers' symbolic analyses
 };
 
-RunResult run_analysis(const Model& model, ConnectorSystem& system, LinearSolver& solver,
+// Makes the linear solver of a storage (symmetric: upper triangle; otherwise the full pattern),
+// nullptr when the solver the user chose cannot solve it.
+using SolverFactory = std::function<std::unique_ptr<LinearSolver>(bool symmetric)>;
+
+RunResult run_analysis(const Model& model, ConnectorSystem& system, const SolverFactory& solvers,
                        RunOutputs& outputs, const RunOptions& options);
 
 }  // namespace clinch

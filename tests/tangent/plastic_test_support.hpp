@@ -49,6 +49,35 @@ struct Evaluation {
   std::vector<double> history;
 };
 
+// A plastic law's history read through its named layout (behavior.hpp): what the output of
+// CUP, CUPEQ, CUPEQC and CALPHAF shows.
+struct BehaviorState {
+  Vector6 plastic_motion = Vector6::Zero();      // CUP
+  Vector6 equivalent_plastic = Vector6::Zero();  // CUPEQ of each uncoupled plasticity
+  ComponentMask uncoupled_plastic = 0;           // components whose CUPEQ slot is named
+  double coupled_equivalent_plastic = 0;         // CUPEQC
+  bool has_coupled_plasticity = false;
+  Vector6 back_force = Vector6::Zero();          // CALPHAF
+};
+
+inline BehaviorState read_state(const Behavior& law, std::span<const double> history) {
+  BehaviorState s;
+  const std::span<const HistoryVariable> layout = law.history_layout();
+  for (int i = 1; i <= 6; ++i) {
+    if (const int k = history_slot(layout, "CUP", i); k >= 0) s.plastic_motion[i - 1] = history[k];
+    if (const int k = history_slot(layout, "CUPEQ", i); k >= 0) {
+      s.equivalent_plastic[i - 1] = history[k];
+      s.uncoupled_plastic |= component_bit(i);
+    }
+    if (const int k = history_slot(layout, "CALPHAF", i); k >= 0) s.back_force[i - 1] = history[k];
+  }
+  if (const int k = history_slot(layout, "CUPEQC", 0); k >= 0) {
+    s.has_coupled_plasticity = true;
+    s.coupled_equivalent_plastic = history[k];
+  }
+  return s;
+}
+
 // Integrates one element's law; `commit` makes the last trial state the converged one.
 class Driver {
  public:
@@ -74,11 +103,7 @@ class Driver {
     motion_ = u;
     return e;
   }
-  BehaviorState state() const {
-    BehaviorState s;
-    law_.describe_state(committed_, s);
-    return s;
-  }
+  BehaviorState state() const { return read_state(law_, committed_); }
   const Vector6& motion() const { return motion_; }
 
   // §1.4: D_fd[:, j] = (f(u + h e_j) − f(u − h e_j))/(2h), h = 1e-6·max(|u|_∞, u_s), every

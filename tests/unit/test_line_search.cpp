@@ -39,6 +39,8 @@ class ArctanProblem final : public NonlinearProblem {
     norms.largest_increment[0] = std::abs(x_ - x0_);
     if (correction) norms.largest_correction[0] = std::abs((*correction)[0]);
   }
+  void commit() override { x0_ = x_; }
+  void revert() override { x_ = x0_; }
   double x() const { return x_; }
   int evaluations = 0;
   static constexpr double kRoot = 0.2;

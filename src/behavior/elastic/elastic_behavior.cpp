@@ -29,7 +29,8 @@ class UncoupledElasticBehavior final : public Behavior {
   bool empty() const { return mask_ == 0; }
 
   ComponentMask components() const override { return mask_; }
-  int history_size() const override { return 0; }  // §4.6: path-independent
+  // §4.6: path-independent, no history.
+  std::span<const HistoryVariable> history_layout() const override { return {}; }
   bool tangent_is_symmetric() const override { return true; }
 
   IntegrationStatus integrate(const BehaviorInput& in, BehaviorOutput& out) const override {
@@ -70,7 +71,7 @@ class CoupledElasticBehavior final : public Behavior {
       : d_(d), mask_(available) {}
 
   ComponentMask components() const override { return mask_; }
-  int history_size() const override { return 0; }
+  std::span<const HistoryVariable> history_layout() const override { return {}; }
   bool tangent_is_symmetric() const override { return true; }
 
   IntegrationStatus integrate(const BehaviorInput& in, BehaviorOutput& out) const override {

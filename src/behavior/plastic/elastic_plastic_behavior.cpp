@@ -82,10 +82,18 @@ class ElasticPlasticBehavior final : public Behavior {
     for (const UncoupledPlasticity& p : uncoupled_) uncoupled_mask_ |= component_bit(p.slot + 1);
     mask_ = linear_;
     if (nonlinear_) mask_ |= nonlinear_->components();
+    // Output names of the slots (output-variables.md §2); CUPEQ of a component without uncoupled
+    // plasticity and CUPEQC without a coupled one hold nothing.
+    for (int i = 0; i < 6; ++i) {
+      layout_[kPlasticMotion + i] = {"CUP", i + 1};
+      if (has_component(uncoupled_mask_, i + 1)) layout_[kUncoupledEquivalent + i] = {"CUPEQ", i + 1};
+      layout_[kBackForce + i] = {"CALPHAF", i + 1};
+    }
+    if (coupled_) layout_[kCoupledEquivalent] = {"CUPEQC", 0};
   }
 
   ComponentMask components() const override { return mask_; }
-  int history_size() const override { return kHistorySize; }
+  std::span<const HistoryVariable> history_layout() const override { return layout_; }
   bool tangent_is_symmetric() const override { return true; }
 
   IntegrationStatus integrate(const BehaviorInput& in, BehaviorOutput& out) const override {
@@ -95,20 +103,6 @@ class ElasticPlasticBehavior final : public Behavior {
                                                       in.tangent == TangentRequest::Consistent)
                                      : CoupledReturn{};
     return correct(in, out, trial, r, plastic);
-  }
-
-  void describe_state(std::span<const double> history, BehaviorState& state) const override {
-    const double* h = history.data();
-    state.plastic_motion = Eigen::Map<const Vector6>(h + kPlasticMotion);
-    for (const UncoupledPlasticity& p : uncoupled_) {
-      state.equivalent_plastic[p.slot] = h[kUncoupledEquivalent + p.slot];
-    }
-    state.uncoupled_plastic = uncoupled_mask_;
-    if (coupled_) {
-      state.has_coupled_plasticity = true;
-      state.coupled_equivalent_plastic = h[kCoupledEquivalent];
-    }
-    state.back_force = Eigen::Map<const Vector6>(h + kBackForce);
   }
 
  private:
@@ -240,6 +234,7 @@ class ElasticPlasticBehavior final : public Behavior {
   Vector6 coupled_slots_ = Vector6::Zero();  // 1 on the components of coupled_space_, else 0
   std::vector<UncoupledPlasticity> uncoupled_;
   ComponentMask uncoupled_mask_ = 0;
+  std::array<HistoryVariable, kHistorySize> layout_{};
   std::optional<CoupledPlasticity> coupled_;
   std::unique_ptr<Behavior> nonlinear_;  // nonlinear elastic components without plasticity
   ComponentMask mask_ = 0;

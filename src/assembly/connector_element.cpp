@@ -1,0 +1,183 @@
+#include "src/assembly/connector_element.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace clinch {
+namespace {
+
+// The constraint equation g of a multiplier row and whether it is active (connection-types.md
+// §3.8, behaviors.md §4.4, §5): constrained and RIGID components hold c_i = 0, a connector motion
+// holds c_i at its target, a lock at its position, a stop at its limit; an inactive row holds
+// λ = 0.
+bool constraint_gap(const ConnectorRecord& r, const ConnectorConditions& conditions,
+                    const ConnectorActiveSet& set, const KinematicsResult& k, int i, double& g) {
+  const auto slot = static_cast<std::size_t>(i - 1);
+  const auto status = static_cast<StopStatus>(set.status[slot]);
+  if (has_component(r.constrained | r.rigid, i)) {
+    g = k.change[i - 1];
+  } else if (has_component(conditions.motion, i)) {
+    g = k.change[i - 1] - conditions.motion_target[i - 1];
+  } else if (status == StopStatus::Locked) {
+    g = k.position[i - 1] - set.lock_position[i - 1];
+  } else if (status == StopStatus::Lower) {
+    g = k.position[i - 1] - *r.stops[slot].lower;
+  } else if (status == StopStatus::Upper) {
+    g = k.position[i - 1] - *r.stops[slot].upper;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+NodePose node_pose(const DofMap& dofs, const AnalysisState& state, std::int32_t node) {
+  NodePose p;
+  if (node < 0) return p;
+  for (int k = 0; k < 3; ++k) {
+    const int eu = dofs.equation(node, 1 + k);
+    if (eu >= 0) p.u[k] = state.x[eu];
+    const int er = dofs.equation(node, 4 + k);
+    if (er >= 0) p.theta[k] = state.x[er];
+  }
+  p.rotation = state.rotation[static_cast<std::size_t>(node)];
+  return p;
+}
+
+std::string ConnectorElements::label(std::size_t c) const {
+  const Element& element = model_.elements[static_cast<std::size_t>(plan_.connectors[c].element)];
+  return qualified_label(model_, element.instance, element.label);
+}
+
+EvalStatus ConnectorElements::evaluate(std::size_t c, const ElementContext& context,
+                                       AnalysisState& state, bool want_tangent,
+                                       LocalSystem& local) const {
+  const ConnectorRecord& r = plan_.connectors[c];
+  KinematicsResult& k = local.kinematics;
+  plan_.kinematics[r.kinematics].evaluate(node_pose(plan_.dofs, state, r.nodes[0]),
+                                          node_pose(plan_.dofs, state, r.nodes[1]),
+                                          context.nlgeom, state.position_n[c],
+                                          want_tangent && context.nlgeom, k);
+  if (!k.ok) return {false, fmt::format("connector element {}: {}", label(c), k.message)};
+
+  // The multipliers first: the laws may read the constraint forces they give.
+  const ConnectorConditions& conditions = context.conditions.connector(c);
+  const ConnectorActiveSet& set = state.active_sets[c];
+  const int n = r.column_count;
+  Vector6 reaction = Vector6::Zero(), gap = Vector6::Zero();
+  for (int j = 0; j < r.multiplier_count; ++j) {
+    const int i = r.multiplier_components[static_cast<std::size_t>(j)];
+    const double lambda = state.x[r.local.equation[static_cast<std::size_t>(n + j)]];
+    double g = 0;
+    const bool active = constraint_gap(r, conditions, set, k, i, g);
+    local.active[static_cast<std::size_t>(j)] = active;
+    gap[i - 1] = active ? g : lambda;
+    if (active) reaction[i - 1] += lambda;
+  }
+
+  // The law stack (§1.3), on the constitutive motion u = p − ref (§1.1).
+  const Vector6 u = k.position - r.reference;
+  const Vector6 motion_old = state.position_n[c] - r.reference;
+  const Vector6 increment = u - motion_old;
+  Vector6 law_force = Vector6::Zero();
+  Matrix6 stiffness = Matrix6::Zero(), force_stiffness = Matrix6::Zero();
+  const TangentRequest request = want_tangent ? TangentRequest::Consistent : TangentRequest::None;
+  bool first = true;
+  for (const LawSlot& slot : r.laws) {
+    const std::size_t size = slot.law->history_size();
+    BehaviorOutput out;
+    out.history_new = std::span<double>(state.history.data() + slot.history, size);
+    const BehaviorInput in{motion_old,
+                           increment,
+                           context.time,
+                           context.dt,
+                           std::span<const double>(state.history_n.data() + slot.history, size),
+                           request,
+                           first ? nullptr : &law_force,
+                           first ? nullptr : &stiffness,
+                           r.laws.needs_connector_forces ? &reaction : nullptr};
+    const IntegrationStatus status = slot.law->integrate(in, out);
+    if (status == IntegrationStatus::Failure) {
+      return {false, fmt::format("connector element {}: {}", label(c), out.message)};
+    }
+    if (status == IntegrationStatus::Unreliable || std::isfinite(out.suggested_dt_ratio)) {
+      merge_step_request(state.request, out.suggested_dt_ratio,
+                         status == IntegrationStatus::Unreliable,
+                         fmt::format("connector element {}: {}", label(c), out.message));
+    }
+    law_force += out.force;
+    if (want_tangent) {
+      stiffness += out.tangent;
+      if (slot.law->needs_connector_forces()) force_stiffness += out.force_tangent;
+    }
+    first = false;
+  }
+
+  // Forces (connection-types.md §4): RIGID multipliers are elastic forces (CEF), the others CRF.
+  Vector6 elastic = law_force, constraint_force = Vector6::Zero();
+  for (int i = 0; i < 6; ++i) {
+    (has_component(r.rigid, i + 1) ? elastic : constraint_force)[i] += reaction[i];
+  }
+  const Vector6& applied = conditions.load;
+  const Vector6 total = elastic + constraint_force - applied;
+
+  for (int a = 0; a < n; ++a) {
+    local.r[a] = k.b.col(r.columns[static_cast<std::size_t>(a)]).dot(total);
+  }
+  for (int j = 0; j < r.multiplier_count; ++j) {
+    local.r[n + j] = gap[r.multiplier_components[static_cast<std::size_t>(j)] - 1];
+  }
+  if (want_tangent) {
+    const int m = n + r.multiplier_count;
+    local.k.topLeftCorner(m, m).setZero();
+    Eigen::Matrix<double, 6, 12> bc;
+    for (int a = 0; a < n; ++a) bc.col(a) = k.b.col(r.columns[static_cast<std::size_t>(a)]);
+    local.k.topLeftCorner(n, n) = bc.leftCols(n).transpose() * (stiffness * bc.leftCols(n));
+    if (context.nlgeom) {
+      // Geometric stiffness Σ f_i H_i (connection-types.md §3.7).
+      for (int i = 0; i < 6; ++i) {
+        if (total[i] == 0 || !has_component(k.existing, i + 1)) continue;
+        for (int b = 0; b < n; ++b) {
+          for (int a = 0; a < n; ++a) {
+            local.k(a, b) +=
+                total[i] * k.h[static_cast<std::size_t>(i)](r.columns[static_cast<std::size_t>(a)],
+                                                            r.columns[static_cast<std::size_t>(b)]);
+          }
+        }
+      }
+    }
+    // The laws' force against the constraint forces: unsymmetric columns of the multipliers.
+    Eigen::Matrix<double, 12, 6> against_reaction;
+    if (r.laws.needs_connector_forces) {
+      against_reaction.topRows(n) = bc.leftCols(n).transpose() * force_stiffness;
+    }
+    for (int j = 0; j < r.multiplier_count; ++j) {
+      const int i = r.multiplier_components[static_cast<std::size_t>(j)];
+      if (!local.active[static_cast<std::size_t>(j)]) {
+        local.k(n + j, n + j) = 1.0;
+        continue;
+      }
+      for (int a = 0; a < n; ++a) local.k(a, n + j) = local.k(n + j, a) = bc(i - 1, a);
+      if (r.laws.needs_connector_forces) {
+        for (int a = 0; a < n; ++a) local.k(a, n + j) += against_reaction(a, i - 1);
+      }
+    }
+  }
+
+  ConnectorResult& result = state.results[c];
+  result.position = k.position;
+  result.change = k.change;
+  for (int i = 0; i < 6; ++i) {
+    const bool exists = has_component(k.existing, i + 1);
+    result.constitutive[i] = exists && has_component(r.available, i + 1) ? u[i] : 0.0;
+    result.elastic[i] = exists ? elastic[i] : 0.0;
+    result.multiplier[i] = exists ? constraint_force[i] : 0.0;
+    result.applied[i] = exists ? applied[i] : 0.0;
+    result.total[i] = exists ? total[i] : 0.0;
+  }
+  return {};
+}
+
+}  // namespace clinch
