@@ -15,6 +15,7 @@
 #include "src/assembly/connector_system.hpp"
 #include "src/linalg/linear_solver.hpp"
 #include "src/solver/newton.hpp"
+#include "tests/tangent/contract_test_laws.hpp"
 #include "tests/unit/checked_deck.hpp"
 
 namespace clinch {
@@ -159,7 +160,7 @@ NewtonReport solve_tightly(ConnectorSystem& s) {
   tight.rotation.residual = 1e-13;
   tight.rotation.correction = 1e-13;
   ConvergenceCriteria criteria(tight);
-  auto solver = make_linear_solver(SolverChoice::Automatic, true, true);
+  auto solver = make_linear_solver(SolverChoice::Automatic, s.symmetric_storage(), true);
   std::string message;
   EXPECT_EQ(solver->analyze(s.pattern(), &message), LinearStatus::Ok) << message;
   return solve_increment(s, *solver, criteria, NewtonOptions{});
@@ -414,6 +415,120 @@ TEST(AssembledTangent, WeldsSharingABehaviourEachMatchTheWeldAlone) {
   EXPECT_GE(plastic, 15);
   EXPECT_LE(plastic, kWelds - 3);
   check_tangent_at_random_state("", false, 3, spot_weld_deck(kWelds));
+}
+
+// A SLOT connector (component 1 free, 2 and 3 constrained) whose law on component 1 reads the
+// constraint force of component 2 (ContactStiffenedSpring, f₁ = k u₁ + c λ₂ u₁³), node 1 held,
+// node 2 loaded by (P₁, P₂, 0). The deck's elasticity is replaced by the test law.
+constexpr double kSpringK = 1000.0, kContactC = 2e5, kLoad1 = 200.0, kLoad2 = 50.0;
+std::unique_ptr<Analysis> contact_stiffened_slot(const ContactStiffenedSpring& law) {
+  auto a = std::make_unique<Analysis>();
+  read_deck_text("deck.inp",
+                 "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n*ELEMENT, TYPE=CONN3D2, ELSET=C\n1, 1, 2\n"
+                 "*CONNECTOR SECTION, ELSET=C\nSLOT,\n*BOUNDARY\n1, 1, 6\n"
+                 "*STEP\n*STATIC\n*END STEP\n",
+                 a->deck.sources, a->deck.model, a->deck.sink);
+  EXPECT_FALSE(a->deck.sink.has_errors()) << a->deck.dump();
+  std::string error;
+  a->plan = build_analysis_plan(a->deck.model, &error);
+  EXPECT_TRUE(a->plan) << error;
+  if (!a->plan) return a;
+  a->plan->add_law(0, law);
+  a->system = std::make_unique<ConnectorSystem>(a->deck.model, *a->plan);
+  a->system->use_storage(a->plan->laws_symmetric());
+  ConnectorSystem& s = *a->system;
+  s.conditions().clear();
+  for (int dof = 1; dof <= 6; ++dof) {
+    const int eq = a->plan->dofs.equation(0, dof);  // SLOT: node a's rotations are active
+    if (eq >= 0) s.conditions().prescribe(eq, 0.0);
+  }
+  s.conditions().add_load(a->plan->dofs.equation(1, 1), kLoad1);
+  s.conditions().add_load(a->plan->dofs.equation(1, 2), kLoad2);
+  s.start_increment(0.0);
+  return a;
+}
+
+// The element's full tangent, including the column of the SLOT multiplier λ₂ (∂f₁/∂λ₂ = c u₁³
+// in the u₁ row, which the transposed entry does not have), against central differences of the
+// residual at random states. Full storage: every entry is compared, not the symmetric part.
+// Tolerance as in check_tangent_at_random_state: 1e-5 of the largest entry (behaviors.md §1.4).
+TEST(AssembledTangent, LawThatReadsAMultiplierHasItsBlockInTheFullTangent) {
+  const ContactStiffenedSpring law(kSpringK, kContactC);
+  auto a = contact_stiffened_slot(law);
+  ASSERT_TRUE(a->system);
+  ConnectorSystem& s = *a->system;
+  ASSERT_FALSE(s.symmetric_storage());
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int trial = 0; trial < 3; ++trial) {
+    // A new random state: displacements of 0.05, multipliers of 80.
+    Eigen::VectorXd move = Eigen::VectorXd::Zero(s.size());
+    for (int i = 0; i < s.size(); ++i) {
+      if (s.is_prescribed(i)) continue;
+      move[i] = (i >= a->plan->dofs.node_equations() ? 80.0 : 0.05) * unit(rng) - s.value(i);
+    }
+    s.apply_correction(move);
+    SparseMatrix k = s.pattern();
+    Eigen::VectorXd r(s.size()), plus(s.size()), minus(s.size());
+    ASSERT_TRUE(s.evaluate(r, &k).ok);
+    Eigen::MatrixXd analytic = Eigen::MatrixXd::Zero(s.size(), s.size());
+    for (int j = 0; j < s.size(); ++j) {
+      for (int p = k.col_ptr[static_cast<std::size_t>(j)];
+           p < k.col_ptr[static_cast<std::size_t>(j) + 1]; ++p) {
+        analytic(k.row_idx[static_cast<std::size_t>(p)], j) = k.values[static_cast<std::size_t>(p)];
+      }
+    }
+    const double largest = analytic.cwiseAbs().maxCoeff();
+    const double h = 1e-6;
+    for (int j = 0; j < s.size(); ++j) {
+      if (s.is_prescribed(j)) continue;
+      Eigen::VectorXd step = Eigen::VectorXd::Zero(s.size());
+      step[j] = h;
+      s.apply_correction(step);
+      ASSERT_TRUE(s.evaluate(plus, nullptr).ok);
+      step[j] = -2 * h;
+      s.apply_correction(step);
+      ASSERT_TRUE(s.evaluate(minus, nullptr).ok);
+      step[j] = h;
+      s.apply_correction(step);
+      for (int i = 0; i < s.size(); ++i) {
+        if (s.is_prescribed(i)) continue;
+        EXPECT_NEAR(analytic(i, j), (plus[i] - minus[i]) / (2 * h), 1e-5 * largest)
+            << "entry (" << i << ", " << j << ")";
+      }
+    }
+    // The block against the multiplier is there and is what the law says: ∂r(u₁)/∂λ₂ = c u₁³.
+    const int u1 = a->plan->dofs.equation(1, 1);
+    const ConnectorRecord& slot = a->plan->connectors[0];
+    ASSERT_EQ(slot.multiplier_components[0], 2);
+    const int lambda2 = slot.local.equation[static_cast<std::size_t>(slot.column_count)];
+    const double u = s.value(u1);
+    EXPECT_NEAR(analytic(u1, lambda2), kContactC * u * u * u, 1e-12 * largest);
+    EXPECT_NE(analytic(u1, lambda2), analytic(lambda2, u1));
+  }
+}
+
+// Newton on the same connector under load converges quadratically (the residual at most
+// 1·r² once r < 1, expect_quadratic_convergence) to the root of k u + c P₂ u³ = P₁ (λ₂ = P₂),
+// which bisection finds independently to 1e-15.
+TEST(AssembledTangent, NewtonConvergesQuadraticallyWithALawThatReadsAMultiplier) {
+  const ContactStiffenedSpring law(kSpringK, kContactC);
+  auto a = contact_stiffened_slot(law);
+  ASSERT_TRUE(a->system);
+  ConnectorSystem& s = *a->system;
+  const NewtonReport report = solve_tightly(s);
+  ASSERT_TRUE(report.converged()) << report.message;
+  EXPECT_GE(report.iterations.size(), 5u);  // nonlinear enough to show the rate
+  expect_quadratic_convergence(report, 0);
+  double lo = 0, hi = kLoad1 / kSpringK;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (kSpringK * mid + kContactC * kLoad2 * mid * mid * mid < kLoad1 ? lo : hi) = mid;
+  }
+  EXPECT_NEAR(s.value(a->plan->dofs.equation(1, 1)), 0.5 * (lo + hi), 1e-12);
+  const ConnectorOutput out = s.connector_output(0);
+  EXPECT_NEAR(out.multiplier[1], kLoad2, 1e-9);
+  EXPECT_NEAR(out.total[0], kLoad1, 1e-9);
 }
 
 }  // namespace

@@ -1,0 +1,59 @@
+// Laws that exist only to exercise the behaviour contract (src/behavior/behavior.hpp) through the
+// connector element and the step driver: one whose force depends on a constraint force of its
+// connector (as friction's contact force does), one that asks for smaller time increments.
+#pragma once
+
+#include <cmath>
+#include <string>
+
+#include "src/behavior/behavior.hpp"
+
+namespace clinch {
+
+// On component 1: f₁ = k u₁ + c λ₂ u₁³, λ₂ the constraint force of component 2 (SLOT: a
+// constrained component). ∂f₁/∂u₁ = k + 3 c λ₂ u₁², ∂f₁/∂λ₂ = c u₁³: an unsymmetric element
+// tangent with a block against the multiplier. Smooth, so Newton converges quadratically.
+class ContactStiffenedSpring final : public Behavior {
+ public:
+  ContactStiffenedSpring(double k, double c) : k_(k), c_(c) {}
+  ComponentMask components() const override { return component_bit(1); }
+  std::span<const HistoryVariable> history_layout() const override { return {}; }
+  bool tangent_is_symmetric() const override { return false; }
+  bool needs_connector_forces() const override { return true; }
+  IntegrationStatus integrate(const BehaviorInput& in, BehaviorOutput& out) const override {
+    const double u = in.motion_old[0] + in.increment[0];
+    const double lambda = (*in.connector_forces)[1];
+    out.force[0] = k_ * u + c_ * lambda * u * u * u;
+    out.tangent(0, 0) = k_ + 3 * c_ * lambda * u * u;
+    out.force_tangent(0, 1) = c_ * u * u * u;
+    return IntegrationStatus::Success;
+  }
+
+ private:
+  double k_, c_;
+};
+
+// A linear spring k on component 1 that accepts a motion increment of at most `limit` per
+// increment: beyond it, it asks for the increment scaled to fit (suggested_dt_ratio < 1).
+class IncrementLimitedSpring final : public Behavior {
+ public:
+  IncrementLimitedSpring(double k, double limit) : k_(k), limit_(limit) {}
+  ComponentMask components() const override { return component_bit(1); }
+  std::span<const HistoryVariable> history_layout() const override { return {}; }
+  bool tangent_is_symmetric() const override { return true; }
+  IntegrationStatus integrate(const BehaviorInput& in, BehaviorOutput& out) const override {
+    out.force[0] = k_ * (in.motion_old[0] + in.increment[0]);
+    out.tangent(0, 0) = k_;
+    const double step = std::abs(in.increment[0]);
+    if (step > limit_) {
+      out.suggested_dt_ratio = 0.9 * limit_ / step;
+      out.message = "motion increment " + std::to_string(step) + " above the limit";
+    }
+    return IntegrationStatus::Success;
+  }
+
+ private:
+  double k_, limit_;
+};
+
+}  // namespace clinch

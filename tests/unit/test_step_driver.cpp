@@ -1,0 +1,117 @@
+// The step driver honours what a law asks of the time step (behaviour contract,
+// src/behavior/behavior.hpp): an increment whose law suggests a ratio below 1 is abandoned and
+// retried that much smaller, under automatic incrementation; with DIRECT it cannot be, and the run
+// stops saying why. Each test runs the whole driver on a small deck and reads its outputs.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "parser/deck_reader.hpp"
+#include "src/assembly/connector_system.hpp"
+#include "src/output/history_columns.hpp"
+#include "src/solver/step_driver.hpp"
+#include "tests/tangent/contract_test_laws.hpp"
+#include "tests/unit/checked_deck.hpp"
+
+namespace clinch {
+namespace {
+
+constexpr double kLimit = 0.02;  // the law's largest motion increment
+
+// AXIAL between node 1 (held) and node 2, moved by 0.1 along the axis over a step of period 1
+// that starts with one increment of 1 (`procedure` is the *STATIC line and its data).
+std::string axial_deck(const std::string& procedure) {
+  return "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n*NSET, NSET=N2\n2\n"
+         "*ELEMENT, TYPE=CONN3D2, ELSET=C\n1, 1, 2\n*CONNECTOR SECTION, ELSET=C\nAXIAL,\n"
+         "*BOUNDARY\n1, 1, 3\n2, 2, 3\n*STEP\n" +
+         procedure +
+         "\n*BOUNDARY\n2, 1, 1, 0.1\n*OUTPUT, HISTORY\n*NODE OUTPUT, NSET=N2\nU1\n*END STEP\n";
+}
+
+struct DriverRun {
+  RunResult result;
+  std::vector<double> u1;  // U1 of node 2, one value per history row
+  std::string status_file;
+};
+
+DriverRun run_with_limited_spring(const std::string& deck_text, const std::string& job) {
+  CheckedDeck deck;
+  read_deck_text("deck.inp", deck_text, deck.sources, deck.model, deck.sink);
+  EXPECT_FALSE(deck.sink.has_errors()) << deck.dump();
+  std::string error;
+  std::optional<AnalysisPlan> plan = build_analysis_plan(deck.model, &error);
+  EXPECT_TRUE(plan) << error;
+  DriverRun run;
+  if (!plan) return run;
+  const IncrementLimitedSpring law(1000.0, kLimit);
+  plan->add_law(0, law);
+  ConnectorSystem system(deck.model, *plan);
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "clinch-step-driver";
+  std::filesystem::create_directories(dir);
+  HistoryColumns columns(deck.model, *plan);
+  HistoryTable table;
+  StatusFile status;
+  RunLog log;
+  EXPECT_TRUE(table.open(dir / (job + ".csv"), columns.names(), &error)) << error;
+  EXPECT_TRUE(status.open(dir / (job + ".sta"), &error)) << error;
+  EXPECT_TRUE(log.open(dir / (job + ".log"), &error)) << error;
+  Progress progress = Progress::for_stderr(true);
+  RunOutputs outputs{table, columns, status, log, progress};
+  const SolverFactory solvers = [](bool symmetric) {
+    return make_linear_solver(SolverChoice::Automatic, symmetric, true);
+  };
+  run.result = run_analysis(deck.model, system, solvers, outputs, RunOptions{});
+  table = HistoryTable{};
+  status = StatusFile{};
+  std::ifstream csv(dir / (job + ".csv"));
+  std::string line;
+  std::size_t column = 0;
+  while (std::getline(csv, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::vector<std::string> fields;
+    std::stringstream split(line);
+    for (std::string f; std::getline(split, f, ',');) fields.push_back(f);
+    if (column == 0) {
+      column = static_cast<std::size_t>(
+          std::find(fields.begin(), fields.end(), "U1@2") - fields.begin());
+      EXPECT_LT(column, fields.size()) << line;
+      continue;
+    }
+    if (column < fields.size()) run.u1.push_back(std::stod(fields[column]));
+  }
+  std::ifstream sta(dir / (job + ".sta"));
+  run.status_file.assign(std::istreambuf_iterator<char>(sta), {});
+  return run;
+}
+
+// Automatic incrementation: the first attempt (Δu = 0.1) is abandoned, and every accepted
+// increment moves by at most the limit; the step still ends at U1 = 0.1 exactly.
+TEST(StepDriver, CutsBackWhenALawAsksForASmallerIncrement) {
+  const DriverRun run = run_with_limited_spring(axial_deck("*STATIC\n1., 1."), "automatic");
+  ASSERT_TRUE(run.result.completed) << run.result.reason;
+  EXPECT_GE(run.result.cutbacks, 1);
+  EXPECT_GE(run.result.increments, 5);  // 0.1 in steps of at most 0.02
+  ASSERT_GE(run.u1.size(), 6u);
+  for (std::size_t i = 1; i < run.u1.size(); ++i) {
+    EXPECT_LE(std::abs(run.u1[i] - run.u1[i - 1]), kLimit * (1 + 1e-12)) << "row " << i;
+  }
+  EXPECT_DOUBLE_EQ(run.u1.back(), 0.1);
+}
+
+// DIRECT: fixed increments cannot be cut back, so the run stops at the first increment and says
+// which law asked and why.
+TEST(StepDriver, DirectIncrementationStopsWhenALawAsksForASmallerIncrement) {
+  const DriverRun run = run_with_limited_spring(axial_deck("*STATIC, DIRECT\n1., 1."), "direct");
+  EXPECT_FALSE(run.result.completed);
+  EXPECT_EQ(run.result.increment, 1);
+  EXPECT_NE(run.result.reason.find("a law asks for a smaller increment"), std::string::npos)
+      << run.result.reason;
+  EXPECT_NE(run.result.reason.find("connector element 1"), std::string::npos) << run.result.reason;
+  EXPECT_NE(run.status_file.find("FAILED"), std::string::npos) << run.status_file;
+}
+
+}  // namespace
+}  // namespace clinch
