@@ -1,5 +1,7 @@
 #include "src/model/active_dofs.hpp"
 
+#include <array>
+
 #include "src/model/connection_types.hpp"
 #include "src/model/model.hpp"
 
@@ -21,14 +23,7 @@ DofMask dof_bit(int dof) {
 // activated). So CARTESIAN, SLOT, SLIDE-PLANE and RADIAL-THRUST (orientation ignored at b)
 // activate the rotations of node a only. Elements without a valid section are taken to use every
 // DOF, so that the errors about the section are not followed by warnings about DOFs.
-DofMask connector_dofs(const Model& model, std::int32_t element, int slot) {
-  const auto& sections = model.sections;
-  if (element < 0 || static_cast<std::size_t>(element) >= sections.section_of_element.size()) {
-    return kAll3D;
-  }
-  const std::int32_t s = sections.section_of_element[static_cast<std::size_t>(element)];
-  if (s < 0 || static_cast<std::size_t>(s) >= sections.connector_sections.size()) return kAll3D;
-  const ConnectorSection& section = sections.connector_sections[static_cast<std::size_t>(s)];
+DofMask section_dofs(const ConnectorSection& section, int slot) {
   if (!section.valid || section.type_names.empty()) return kAll3D;
   for (const std::string& type : section.type_names) {
     if (type == "AXIAL" || type == "LINK" || type == "JOIN") continue;
@@ -41,6 +36,29 @@ DofMask connector_dofs(const Model& model, std::int32_t element, int slot) {
   }
   return kTranslations3D;
 }
+
+// The DOFs of every connector section at each end, looked up once per section: a deck has few
+// sections and many elements.
+class ConnectorDofs {
+ public:
+  explicit ConnectorDofs(const Model& model) {
+    for (const ConnectorSection& section : model.sections.connector_sections) {
+      by_section_.push_back({section_dofs(section, 0), section_dofs(section, 1)});
+    }
+  }
+  DofMask operator()(const Model& model, std::int32_t element, int slot) const {
+    const auto& sections = model.sections;
+    if (element < 0 || static_cast<std::size_t>(element) >= sections.section_of_element.size()) {
+      return kAll3D;
+    }
+    const std::int32_t s = sections.section_of_element[static_cast<std::size_t>(element)];
+    if (s < 0 || static_cast<std::size_t>(s) >= by_section_.size()) return kAll3D;
+    return by_section_[static_cast<std::size_t>(s)][static_cast<std::size_t>(slot)];
+  }
+
+ private:
+  std::vector<std::array<DofMask, 2>> by_section_;
+};
 
 // keywords.md §7: SPRING1/SPRING2 use the DOFs of their *SPRING DOF line (1–6 while the spring
 // data are unknown or invalid).
@@ -59,9 +77,9 @@ DofMask spring_dofs(const Model& model, std::int32_t element, int slot, bool two
   return mask ? mask : fallback;
 }
 
-}  // namespace
-
-DofMask element_dofs(const Model& model, std::int32_t element, int slot) {
+// DOFs element `element` (global index) uses at its node in `slot` (0 or 1).
+DofMask element_dofs(const Model& model, const ConnectorDofs& connector_dofs,
+                     std::int32_t element, int slot) {
   if (element < 0 || static_cast<std::size_t>(element) >= model.elements.size()) return 0;
   const Element& e = model.elements[static_cast<std::size_t>(element)];
   const bool two_d = model.dimension == 2;
@@ -81,7 +99,10 @@ DofMask element_dofs(const Model& model, std::int32_t element, int slot) {
   return 0;
 }
 
+}  // namespace
+
 std::vector<DofMask> active_dofs(const Model& model) {
+  const ConnectorDofs connector_dofs(model);
   std::vector<DofMask> active(model.nodes.size(), 0);
   for (std::size_t e = 0; e < model.elements.size(); ++e) {
     const Element& element = model.elements[e];
@@ -89,7 +110,7 @@ std::vector<DofMask> active_dofs(const Model& model) {
       const std::int32_t node = element.nodes[static_cast<std::size_t>(slot)];
       if (node < 0 || static_cast<std::size_t>(node) >= active.size()) continue;  // ground
       active[static_cast<std::size_t>(node)] |=
-          element_dofs(model, static_cast<std::int32_t>(e), slot);
+          element_dofs(model, connector_dofs, static_cast<std::int32_t>(e), slot);
     }
   }
   return active;

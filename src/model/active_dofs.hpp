@@ -14,9 +14,6 @@ struct Model;
 // Bit d − 1 stands for DOF d (1–3 translations, 4–6 rotations).
 using DofMask = std::uint8_t;
 
-// DOFs element `element` (global index) uses at its node in `slot` (0 or 1).
-DofMask element_dofs(const Model& model, std::int32_t element, int slot);
-
 // DOF mask of every global node; 0 for a node that belongs to no element. Valid after
 // validate_sections (it reads section_of_element and the *SPRING DOFs).
 std::vector<DofMask> active_dofs(const Model& model);

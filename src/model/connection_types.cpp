@@ -81,11 +81,31 @@ std::string connection_type_key(std::string_view spelled) {
   return key;
 }
 
+namespace {
+
+// connection_type_key(a) == connection_type_key(b), without building either key: a deck names a
+// type once per section, and a check of many sections looks each one up several times.
+bool same_key(std::string_view a, std::string_view b) {
+  auto separator = [](char c) { return c == ' ' || c == '\t' || c == '-' || c == '_'; };
+  std::size_t i = 0, j = 0;
+  for (;;) {
+    while (i < a.size() && separator(a[i])) ++i;
+    while (j < b.size() && separator(b[j])) ++j;
+    if (i == a.size() || j == b.size()) return i == a.size() && j == b.size();
+    if (std::toupper(static_cast<unsigned char>(a[i])) !=
+        std::toupper(static_cast<unsigned char>(b[j]))) {
+      return false;
+    }
+    ++i;
+    ++j;
+  }
+}
+
+}  // namespace
+
 const ConnectionTypeInfo* find_connection_type(std::string_view spelled) {
-  const std::string key = connection_type_key(spelled);
-  if (key.empty()) return nullptr;
   for (const ConnectionTypeInfo& info : kTypes) {
-    if (connection_type_key(info.name) == key) return &info;
+    if (same_key(info.name, spelled)) return &info;
   }
   return nullptr;
 }
