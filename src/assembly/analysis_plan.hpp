@@ -1,8 +1,9 @@
 // The analysis plan (ARCHITECTURE.md principle 7): what a run needs from the model, built once.
-// Active DOFs and their equations, one record per connector and spring with its kinematics,
-// behaviour, equations and scatter positions, one multiplier per connector component that can
-// ever be constrained (connection constraints, RIGID elasticity, stops, locks, connector motions),
-// and the fixed sparsity pattern. Nothing here changes during the analysis.
+// Active DOFs and their equations, one record per connector and spring with its kinematics, law
+// stack and equations, one multiplier per connector component that can ever be constrained
+// (connection constraints, RIGID elasticity, stops, locks, connector motions), and the size of
+// the laws' history. Nothing here changes during the analysis (assembly_pattern.hpp says where
+// each element's entries go).
 #pragma once
 
 #include <array>

@@ -212,6 +212,12 @@ class ElasticPlasticBehavior final : public Behavior {
 
   // §6.4/§6.6: the multi-surface return for a MAX potential; the grouped return where it
   // applies, with the general closest-point return as its fallback.
+  // Which return solves the coupled equations, and why (behaviors.md §6.4, §6.6): a MAX potential
+  // takes the multi-surface return; a SUM potential whose terms form disjoint groups over a
+  // diagonal elasticity takes the grouped return (closed-form shares, no 6×6 solve: the spot
+  // weld); any other SUM potential, and a grouped return that does not settle, take the general
+  // closest-point return (kink active set, cutting-plane fallback). GroupedReturn::create decides
+  // at set-up whether a potential has the group structure.
   CoupledReturn coupled_return(const Vector6& trial, double ubar, bool consistent) const {
     const CoupledPlasticity& c = *coupled_;
     if (c.potential.is_max()) {
