@@ -4,12 +4,12 @@
 // (coupled) from decks read through the reader; RIGID components and when no law is built.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "base/jacobian_check.hpp"
 #include "parser/deck_reader.hpp"
 #include "parser/diagnostic_render.hpp"
 #include "src/behavior/elastic/elastic_behavior.hpp"
@@ -38,21 +38,15 @@ Evaluation integrate(const Behavior& law, const Vector6& old, const Vector6& u,
 void expect_fd_tangent(const Behavior& law, const Vector6& old, const Vector6& u, double k_s) {
   const Evaluation at = integrate(law, old, u);
   ASSERT_EQ(at.status, IntegrationStatus::Success);
-  const double h = 1e-6 * std::max(u.cwiseAbs().maxCoeff(), 1e-3);
-  Matrix6 fd;
-  for (int j = 0; j < 6; ++j) {
-    Vector6 plus = u, minus = u;
-    plus[j] += h;
-    minus[j] -= h;
-    fd.col(j) =
-        (integrate(law, old, plus).out.force - integrate(law, old, minus).out.force) / (2 * h);
-  }
-  const Matrix6& d = at.out.tangent;
-  const double error = (d - fd).cwiseAbs().maxCoeff();
-  EXPECT_LE(error, 1e-5 * d.cwiseAbs().maxCoeff() + 1e-8 * k_s)
-      << "u = " << u.transpose() << "\nanalytic:\n"
-      << d << "\nfinite difference:\n"
-      << fd;
+  const double h = tangent_check_step(u.cwiseAbs().maxCoeff(), 1e-3);
+  const auto force = [&](const Eigen::VectorXd& x, Eigen::VectorXd& f) {
+    const Evaluation e = integrate(law, old, Vector6(x));
+    f = e.out.force;
+    return e.status == IntegrationStatus::Success;
+  };
+  const JacobianReport report =
+      check_jacobian(perturb_additively(force, u), Vector6::Constant(h), at.out.tangent);
+  EXPECT_TRUE(report.meets_tangent_rule(k_s)) << "u = " << u.transpose() << "\n" << report;
 }
 
 Vector6 motion(double u1, double u2 = 0, double u3 = 0, double u4 = 0, double u5 = 0,
