@@ -91,12 +91,7 @@ void check_tangent_at_random_state(const std::string& type, bool nlgeom, unsigne
   for (int j = 0; j < s.size(); ++j) {
     if (!s.is_prescribed(j)) steps[j] = 1e-6;
   }
-  JacobianCheckOptions options;
-  options.compare_row = [&s](int i) { return !s.is_prescribed(i); };
-  options.symmetric_part = true;
-  const JacobianReport report = check_jacobian(
-      residual_perturbation(s), s.size(), steps,
-      [&k](int row, int column) { return entry(k, row, column); }, options);
+  const JacobianReport report = check_assembled_tangent(s, k, steps, true);
   ASSERT_TRUE(report.evaluated()) << report;
   EXPECT_LE(report.max_error, 1e-5 * largest) << type << (nlgeom ? " NLGEOM" : "") << "\n"
                                               << report;
