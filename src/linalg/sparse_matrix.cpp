@@ -2,8 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 namespace clinch {
 
@@ -32,6 +34,14 @@ void validate_pattern(const SparseMatrix& m) {
       }
     }
   }
+}
+
+double entry(const SparseMatrix& m, int row, int column) {
+  if (m.symmetric_upper && row > column) std::swap(row, column);
+  const auto first = m.row_idx.begin() + m.col_ptr[column];
+  const auto last = m.row_idx.begin() + m.col_ptr[column + 1];
+  const auto found = std::lower_bound(first, last, row);
+  return found != last && *found == row ? m.values[found - m.row_idx.begin()] : 0.0;
 }
 
 std::vector<int> diagonal_positions(const SparseMatrix& m) {

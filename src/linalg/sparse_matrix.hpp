@@ -24,6 +24,10 @@ struct SparseMatrix {
 // its builder, not a numerical condition.
 void validate_pattern(const SparseMatrix& m);
 
+// Entry (row, column) of the matrix `m` stands for, 0 outside the pattern: read directly from a
+// full pattern, from its mirror (column, row) in the lower triangle of symmetric-upper storage.
+double entry(const SparseMatrix& m, int row, int column);
+
 // Index into `values` of each diagonal entry, −1 where the pattern has none.
 std::vector<int> diagonal_positions(const SparseMatrix& m);
 

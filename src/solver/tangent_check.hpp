@@ -6,11 +6,24 @@
 
 #include <string>
 
+#include "base/jacobian_check.hpp"
 #include "src/assembly/connector_system.hpp"
+#include "src/solver/nonlinear_problem.hpp"
 
 namespace clinch {
 
-// The report (several lines); the state of `system` is unchanged afterwards.
+// The assembled tangent `k` (the values at the current state) against central differences of
+// the residual of `problem`, equation j moved by steps[j] through apply_correction (rotations
+// multiplicatively under NLGEOM); an equation with a zero step (prescribed) is neither
+// differenced nor compared. `k` is read whole: directly from a full pattern, mirrored from
+// symmetric-upper storage. With `symmetric_part`, compared with ½(J + Jᵀ) of the differences J.
+// Each evaluation restarts from the current state and leaves it as it was; none touches the
+// committed history (behaviors.md §1.4).
+JacobianReport check_assembled_tangent(NonlinearProblem& problem, const SparseMatrix& k,
+                                       const Eigen::VectorXd& steps, bool symmetric_part = false);
+
+// The report (several lines); the state of `system` is unchanged afterwards. The whole matrix
+// is compared, read through the storage of its pattern (full or symmetric upper).
 std::string check_tangent(ConnectorSystem& system, int step, int increment);
 
 }  // namespace clinch

@@ -1,21 +1,23 @@
 // Test support for the derived-component and potential evaluation tests: a complete one-element
 // BUSHING deck (six available components) around a behaviour body, read and validated by the
 // deck reader, and central-difference derivatives of a scalar or vector function of the six
-// components.
+// components checked with base/jacobian_check.
 #pragma once
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
 #include <random>
 #include <string>
+#include <type_traits>
 
-#include <gtest/gtest.h>
-
+#include "base/jacobian_check.hpp"
+#include "base/small_types.hpp"
 #include "parser/deck_reader.hpp"
 #include "src/behavior/potential/connector_potential.hpp"
 #include "src/behavior/potential/derived_component.hpp"
-#include "base/small_types.hpp"
 #include "tests/unit/checked_deck.hpp"
 
 namespace clinch::potential_test {
@@ -63,31 +65,32 @@ inline ConnectorPotential compile_potential(const CheckedDeck& deck, std::size_t
 // compared quantity for states whose kinks are further than ~1% of |c| away.
 inline double step(double c) { return 1e-5 * std::max(1.0, std::fabs(c)); }
 
+// The derivatives `analytic` of `f` (a scalar or a 6-vector function of the six components:
+// its gradient as a row, or its Jacobian) against central differences at `c` with the steps
+// above, entry-wise within rtol·max(max|numeric|, floor) (`floor` for quantities that are zero).
+// Only the components in `columns` are differenced; of a Jacobian, only those rows are compared.
 template <typename F>
-Vector6 central_gradient(F&& f, const Vector6& c) {
-  Vector6 g;
+void expect_fd_derivatives(const Eigen::Ref<const Eigen::MatrixXd>& analytic, F&& f,
+                           const Vector6& c, double rtol, double floor, const std::string& what,
+                           ComponentMask columns = 0b111111) {
+  Vector6 steps = Vector6::Zero();
   for (int j = 0; j < 6; ++j) {
-    const double h = step(c[j]);
-    Vector6 cp = c, cm = c;
-    cp[j] += h;
-    cm[j] -= h;
-    g[j] = (f(cp) - f(cm)) / (2 * h);
+    if ((columns >> j) & 1u) steps[j] = step(c[j]);
   }
-  return g;
-}
-
-// Column j: the central difference of the vector function `g` along c_j.
-template <typename G>
-Matrix6 central_jacobian(G&& g, const Vector6& c) {
-  Matrix6 jac;
-  for (int j = 0; j < 6; ++j) {
-    const double h = step(c[j]);
-    Vector6 cp = c, cm = c;
-    cp[j] += h;
-    cm[j] -= h;
-    jac.col(j) = (g(cp) - g(cm)) / (2 * h);
-  }
-  return jac;
+  const auto vector_f = [&f](const Eigen::VectorXd& x, Eigen::VectorXd& value) {
+    if constexpr (std::is_arithmetic_v<decltype(f(Vector6(x)))>) {
+      value = Eigen::VectorXd::Constant(1, f(Vector6(x)));
+    } else {
+      value = f(Vector6(x));
+    }
+    return true;
+  };
+  JacobianCheckOptions options;
+  if (analytic.rows() == 6) options.compare_row = [columns](int i) { return (columns >> i) & 1u; };
+  const JacobianReport report =
+      check_jacobian(perturb_additively(vector_f, c), steps, analytic, options);
+  EXPECT_LE(report.max_error, rtol * std::max(report.largest_numeric, floor)) << what << "\n"
+                                                                              << report;
 }
 
 // Entry-wise comparison with a tolerance relative to the largest entry of `expected` (an

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "base/jacobian_check.hpp"
 #include "src/kinematics/connector_kinematics.hpp"
 #include "src/kinematics/rotation_math.hpp"
 
@@ -114,18 +115,29 @@ KinematicsResult eval(const ConnectorKinematics& k, const Pose& p, bool nlgeom, 
   return out;
 }
 
+// The finite-difference derivatives of `quantity` (of the kinematics at a pose) with respect to
+// the 12 DOFs, perturbed as `perturbed` does, each evaluation unwrapped towards `last`.
+template <typename Quantity>
+JacobianReport check_against_differences(const ConnectorKinematics& k, const Pose& p, bool nlgeom,
+                                         const Vector6& last, double step,
+                                         const Eigen::Ref<const Eigen::MatrixXd>& analytic,
+                                         Quantity quantity) {
+  const auto f = [&](int j, double s, Eigen::VectorXd& value) {
+    const KinematicsResult out = eval(k, perturbed(p, j, s, nlgeom), nlgeom, last, false);
+    value = quantity(out);
+    return out.ok;
+  };
+  return check_jacobian(f, Vector12::Constant(step), analytic);
+}
+
 // B against central differences of the positions (unwrapped towards the base state).
 void check_b(const ConnectorKinematics& k, const Pose& p, bool nlgeom) {
   const KinematicsResult base = eval(k, p, nlgeom, k.initial_position(), false);
-  Matrix6x12 fd;
-  for (int j = 0; j < 12; ++j) {
-    const KinematicsResult plus =
-        eval(k, perturbed(p, j, kStepB, nlgeom), nlgeom, base.position, false);
-    const KinematicsResult minus =
-        eval(k, perturbed(p, j, -kStepB, nlgeom), nlgeom, base.position, false);
-    fd.col(j) = (plus.position - minus.position) / (2 * kStepB);
-  }
-  EXPECT_LT(relative_error(base.b, fd), kToleranceB) << "B\n" << base.b << "\nFD\n" << fd;
+  const JacobianReport report =
+      check_against_differences(k, p, nlgeom, base.position, kStepB, base.b,
+                                [](const KinematicsResult& out) { return out.position; });
+  EXPECT_LT(report.max_error, kToleranceB * std::max(1.0, report.largest_numeric)) << "B\n"
+                                                                                   << report;
 }
 
 // H_i against central differences of B_i. Under multiplicative rotation updates the
@@ -133,16 +145,6 @@ void check_b(const ConnectorKinematics& k, const Pose& p, bool nlgeom) {
 // non-symmetric correction), so that term is added to the expectation.
 void check_h(const ConnectorKinematics& k, const Pose& p) {
   const KinematicsResult base = eval(k, p, true, k.initial_position(), true);
-  std::array<Matrix12, 6> fd;
-  for (int j = 0; j < 12; ++j) {
-    const KinematicsResult plus =
-        eval(k, perturbed(p, j, kStepH, true), true, base.position, false);
-    const KinematicsResult minus =
-        eval(k, perturbed(p, j, -kStepH, true), true, base.position, false);
-    for (int i = 0; i < 6; ++i) {
-      fd[i].col(j) = (plus.b.row(i) - minus.b.row(i)).transpose() / (2 * kStepH);
-    }
-  }
   for (int i = 0; i < 6; ++i) {
     if (!has_component(base.existing, i + 1)) continue;
     Matrix12 expected = base.h[i];
@@ -150,9 +152,12 @@ void check_h(const ConnectorKinematics& k, const Pose& p) {
       const Vector3 spin_row = base.b.row(i).segment<3>(node).transpose();
       expected.block<3, 3>(node, node) -= 0.5 * skew(spin_row);
     }
-    EXPECT_LT(relative_error(expected, fd[i]), kToleranceH) << "component " << i + 1 << "\nH\n"
-                                                            << expected << "\nFD\n"
-                                                            << fd[i];
+    const JacobianReport report = check_against_differences(
+        k, p, true, base.position, kStepH, expected,
+        [i](const KinematicsResult& out) { return Vector12(out.b.row(i).transpose()); });
+    EXPECT_LT(report.max_error, kToleranceH * std::max(1.0, report.largest_numeric))
+        << "component " << i + 1 << "\n"
+        << report;
     EXPECT_LT(relative_error(base.h[i], base.h[i].transpose()), 1e-12) << "H not symmetric";
   }
 }

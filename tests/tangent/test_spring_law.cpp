@@ -4,13 +4,13 @@
 // linear springs of either sign.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 
+#include "base/jacobian_check.hpp"
 #include "parser/deck_reader.hpp"
 #include "src/behavior/elastic/spring_law.hpp"
 
@@ -49,11 +49,16 @@ double reference_delta() {
 // behaviors.md §1.4 for one scalar: central difference with h = 1e-6·max(|Δ|, u_s), u_s = 1e-3
 // (no yield force), passing when |k' − k'_fd| ≤ 1e-5·|k'| + 1e-8·k_s.
 void expect_fd_tangent(const SpringLaw& law, double delta, double k_s) {
-  const double h = 1e-6 * std::max(std::abs(delta), 1e-3);
-  const double fd = (law.evaluate(delta + h).force - law.evaluate(delta - h).force) / (2 * h);
-  const double k = law.evaluate(delta).stiffness;
-  EXPECT_LE(std::abs(k - fd), 1e-5 * std::abs(k) + 1e-8 * k_s)
-      << "Δ = " << delta << ": analytic " << k << ", finite difference " << fd;
+  const double h = tangent_check_step(std::abs(delta), 1e-3);
+  const auto force = [&law](const Eigen::VectorXd& x, Eigen::VectorXd& f) {
+    f.setConstant(1, law.evaluate(x[0]).force);
+    return true;
+  };
+  const JacobianReport report =
+      check_jacobian(perturb_additively(force, Eigen::VectorXd::Constant(1, delta)),
+                     Eigen::VectorXd::Constant(1, h),
+                     Eigen::MatrixXd::Constant(1, 1, law.evaluate(delta).stiffness));
+  EXPECT_TRUE(report.meets_tangent_rule(k_s)) << "Δ = " << delta << "\n" << report;
 }
 
 TEST(SpringLaw, CcxSpring2ReproducesTheReferenceForce) {

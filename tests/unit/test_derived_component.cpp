@@ -16,9 +16,7 @@
 namespace clinch {
 namespace {
 
-using potential_test::central_gradient;
-using potential_test::central_jacobian;
-using potential_test::expect_close;
+using potential_test::expect_fd_derivatives;
 
 double mac(double x) { return x > 0 ? x : 0; }
 
@@ -103,16 +101,15 @@ TEST(DerivedComponentEval, EveryOperatorMatchesClosedFormAndFiniteDifferences) {
       EXPECT_NEAR(v, closed_form(name, c), 1e-13 * std::max(1.0, std::fabs(v)))
           << name << " seed " << seed;
       EXPECT_EQ(g.value(c), v);
-      const Vector6 fd = central_gradient([&](const Vector6& x) { return closed_form(name, x); }, c);
-      expect_close(grad, fd, 1e-6, 1e-12, name + " gradient");
-      const Matrix6 fdh = central_jacobian(
-          [&](const Vector6& x) {
-            Vector6 gx;
-            g.evaluate(x, &gx, nullptr);
-            return gx;
-          },
-          c);
-      expect_close(hess, fdh, 1e-6, 1e-12, name + " Hessian");
+      expect_fd_derivatives(
+          grad.transpose(), [&](const Vector6& x) { return closed_form(name, x); }, c, 1e-6, 1e-12,
+          name + " gradient");
+      const auto gradient = [&](const Vector6& x) {
+        Vector6 gx;
+        g.evaluate(x, &gx, nullptr);
+        return gx;
+      };
+      expect_fd_derivatives(hess, gradient, c, 1e-6, 1e-12, name + " Hessian");
       EXPECT_TRUE(hess.isApprox(hess.transpose(), 1e-15)) << name;
     }
   }
