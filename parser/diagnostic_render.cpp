@@ -55,7 +55,13 @@ void append_located(std::string& out, SourceLoc loc, std::string_view severity,
   for (std::uint32_t i = 1; i < loc.column && i <= line.size(); ++i) {
     out += line[i - 1] == '\t' ? '\t' : ' ';
   }
-  out += "^\n";
+  out += '^';
+  // The rest of the span underlined, as clang does (^~~~~); a TAB stays a TAB so that the
+  // underline keeps its alignment with the line above.
+  for (std::uint32_t i = loc.column + 1; i <= loc.end_column() && i <= line.size(); ++i) {
+    out += line[i - 1] == '\t' ? '\t' : '~';
+  }
+  out += '\n';
 }
 
 }  // namespace
@@ -82,10 +88,12 @@ std::string render_json(const std::vector<Diagnostic>& diagnostics,
       object["file"] = sources.file(loc.file).display_name;
       object["line"] = loc.line;
       object["column"] = loc.column;
+      object["end_column"] = loc.end_column();
     } else {
       object["file"] = nullptr;
       object["line"] = nullptr;
       object["column"] = nullptr;
+      object["end_column"] = nullptr;
     }
   };
   nlohmann::json array = nlohmann::json::array();

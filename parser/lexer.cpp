@@ -125,7 +125,11 @@ bool split_fields(std::string_view text, SourceLoc loc, std::vector<Field>& fiel
       field.text.assign(data + i, last - i);
     } else {
       clean = slow_field(text, loc, i, end, field, sink) && clean;
+      // A quoted comma may have moved the end on: the span ends at its last non-blank.
+      last = end;
+      while (last > i && is_blank(data[last - 1])) --last;
     }
+    field.loc.length = static_cast<std::uint32_t>(last - i);
     if (end >= n) break;
     i = end + 1;  // past the comma
   }
@@ -171,8 +175,11 @@ bool parse_keyword_line(const std::vector<KeywordSegment>& segments, KeywordLine
   {
     Piece first = items.front();
     std::size_t star = first.text.find('*');
-    out.loc = first.loc.shifted(static_cast<std::uint32_t>(star));
     std::string_view name = trim(first.text.substr(star + 1));
+    // The span runs from the '*' to the end of the name.
+    out.loc = first.loc.shifted(static_cast<std::uint32_t>(star))
+                  .spanning(static_cast<std::uint32_t>(name.data() + name.size() -
+                                                       (first.text.data() + star)));
     for (std::size_t k = 0; k < name.size(); ++k) {
       if (is_high(name[k])) {
         sink.report(DiagCode::non_ascii, out.loc, "non-ASCII character in a keyword name");
@@ -215,8 +222,8 @@ bool parse_keyword_line(const std::vector<KeywordSegment>& segments, KeywordLine
       }
     }
     KeywordParam param;
-    param.loc = item_loc;
     std::string_view name = eq == std::string_view::npos ? body : trim(body.substr(0, eq));
+    param.loc = item_loc.spanning(static_cast<std::uint32_t>(name.size()));
     bool malformed = name.empty();
     for (char c : name) {
       if (c == '"' || is_high(c)) malformed = true;
@@ -232,7 +239,8 @@ bool parse_keyword_line(const std::vector<KeywordSegment>& segments, KeywordLine
     }
     if (malformed) {
       any_malformed = true;
-      sink.report(DiagCode::malformed_parameter, item_loc,
+      sink.report(DiagCode::malformed_parameter,
+                  item_loc.spanning(static_cast<std::uint32_t>(body.size())),
                   fmt::format("malformed parameter '{}' (expected NAME or NAME=VALUE)", body));
       continue;
     }

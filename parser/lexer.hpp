@@ -20,7 +20,7 @@ struct ParamValue;
 // One comma-separated field of a data line or a keyword parameter value.
 struct Field {
   std::string text;           // trimmed; unquoted: inner blanks removed; quoted: without quotes
-  SourceLoc loc;              // first non-blank character (or where the field would start)
+  SourceLoc loc;              // from the first to the last non-blank character (quotes included)
   bool quoted = false;
   bool had_inner_blank = false;  // an unquoted field lost blanks (W0102 for numbers and names)
   bool empty() const { return text.empty() && !quoted; }
@@ -33,7 +33,7 @@ struct Field {
 struct KeywordParam {
   std::string name;           // folded: upper case, no blanks (input-syntax.md §2)
   std::string spelled;        // as written, trimmed
-  SourceLoc loc;              // first character of the name
+  SourceLoc loc;              // the name
   bool has_value = false;
   Field value;
 };
@@ -41,7 +41,7 @@ struct KeywordParam {
 struct KeywordLine {
   std::string name;           // folded: upper case, no blanks
   std::string spelled;        // as written after '*', trimmed
-  SourceLoc loc;              // the '*'
+  SourceLoc loc;              // from the '*' to the end of the name
   std::vector<KeywordParam> params;
 };
 

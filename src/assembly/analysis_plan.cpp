@@ -32,15 +32,14 @@ std::string unsupported_behavior(const ConnectorBehavior& b) {
   return {};
 }
 
-// Components a *CONNECTOR MOTION of any step (or model data) prescribes, per element.
+// Components a *CONNECTOR MOTION of any step (or model data) prescribes, per element; the
+// targets as validation resolved them.
 std::vector<ComponentMask> motion_components(const Model& model) {
   std::vector<ComponentMask> mask(model.elements.size(), 0);
-  DiagnosticSink quiet;
-  std::vector<std::int32_t> targets;
   auto add = [&](const ConnectorCondition& c) {
-    targets.clear();
-    if (!resolve_elements(model, c.target, targets, quiet)) return;
-    for (std::int32_t e : targets) mask[static_cast<std::size_t>(e)] |= component_bit(c.component);
+    for (std::int32_t e : c.resolved) {
+      mask[static_cast<std::size_t>(e)] |= component_bit(c.component);
+    }
   };
   for (const ConnectorCondition& c : model.history.model_motions) add(c);
   for (const Step& step : model.history.steps) {

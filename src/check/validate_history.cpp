@@ -108,30 +108,30 @@ class HistoryValidator {
     InForce in_force;
     {
       DofTable seen;
-      for (const BoundaryCondition& bc : history.model_boundaries) {
+      for (BoundaryCondition& bc : history.model_boundaries) {
         check_boundary(bc, "model data", seen, in_force.boundaries);
       }
       seen.clear();
-      for (const ConnectorCondition& motion : history.model_motions) {
+      for (ConnectorCondition& motion : history.model_motions) {
         check_connector(motion, ConditionKind::Motion, "model data", &seen, in_force);
       }
     }
 
-    for (const Step& step : history.steps) {
+    for (Step& step : history.steps) {
       check_step_structure(step);
       const std::string where = fmt::format("step '{}'", step.name.display);
       if (step.replaces(ConditionKind::Boundary)) in_force.boundaries.clear();
       if (step.replaces(ConditionKind::Motion)) in_force.motions.clear();
       DofTable seen;
-      for (const BoundaryCondition& bc : step.boundaries) {
+      for (BoundaryCondition& bc : step.boundaries) {
         check_boundary(bc, where, seen, in_force.boundaries);
       }
       seen.clear();
-      for (const ConnectorCondition& motion : step.motions) {
+      for (ConnectorCondition& motion : step.motions) {
         check_connector(motion, ConditionKind::Motion, where, &seen, in_force);
       }
-      for (const ConcentratedLoad& load : step.loads) check_load(load, in_force);
-      for (const ConnectorCondition& load : step.connector_loads) {
+      for (ConcentratedLoad& load : step.loads) check_load(load, in_force);
+      for (ConnectorCondition& load : step.connector_loads) {
         check_connector(load, ConditionKind::ConnectorLoad, where, nullptr, in_force);
       }
     }
@@ -204,6 +204,7 @@ class HistoryValidator {
 
   // ---- *BOUNDARY (keywords.md §9) -----------------------------------------------------------
 
+  // Resolves a condition's target into the list the run reads (`out`); an empty set is E0515.
   bool resolve(const TargetRef& target, bool element, std::vector<std::int32_t>& out) {
     out.clear();
     const bool ok = element ? resolve_elements(model_, target, out, sink_)
@@ -217,9 +218,9 @@ class HistoryValidator {
     return true;
   }
 
-  void check_boundary(const BoundaryCondition& bc, const std::string& where,
-                      DofTable& seen, DofTable& in_force) {
-    if (!resolve(bc.target, false, nodes_)) return;
+  void check_boundary(BoundaryCondition& bc, const std::string& where, DofTable& seen,
+                      DofTable& in_force) {
+    if (!resolve(bc.target, false, bc.resolved)) return;
     DofMask dofs = bc.dofs;
     // In 2-D only the members 1, 2 and 6 of a named type apply (§9).
     if (!bc.named_type.empty() && model_.dimension == 2) dofs &= 0b100011;
@@ -230,7 +231,7 @@ class HistoryValidator {
     std::size_t inactive_nodes = 0;
     std::int32_t inactive_node = -1;
     bool duplicate_reported = false;
-    for (std::int32_t node : nodes_) {
+    for (std::int32_t node : bc.resolved) {
       const DofMask active = active_[static_cast<std::size_t>(node)];
       if (active == 0) {
         if (lonely++ == 0) lonely_node = node;
@@ -281,13 +282,13 @@ class HistoryValidator {
 
   // ---- *CLOAD (keywords.md §10) -------------------------------------------------------------
 
-  void check_load(const ConcentratedLoad& load, const InForce& in_force) {
-    if (!resolve(load.target, false, nodes_)) return;
+  void check_load(ConcentratedLoad& load, const InForce& in_force) {
+    if (!resolve(load.target, false, load.resolved)) return;
     const DofMask bit = static_cast<DofMask>(1u << (load.dof - 1));
     std::size_t lost = 0;
     std::int32_t lost_node = -1;
     bool prescribed_reported = false;
-    for (std::int32_t node : nodes_) {
+    for (std::int32_t node : load.resolved) {
       if (!(active_[static_cast<std::size_t>(node)] & bit)) {
         if (lost++ == 0) lost_node = node;
         continue;
@@ -312,17 +313,16 @@ class HistoryValidator {
 
   // ---- *CONNECTOR MOTION, *CONNECTOR LOAD (keywords.md §11, §12) ----------------------------
 
-  void check_connector(const ConnectorCondition& condition, ConditionKind kind,
-                       const std::string& where, DofTable* seen,
-                       InForce& in_force) {
-    if (!resolve(condition.target, true, elements_)) return;
+  void check_connector(ConnectorCondition& condition, ConditionKind kind, const std::string& where,
+                       DofTable* seen, InForce& in_force) {
+    if (!resolve(condition.target, true, condition.resolved)) return;
     const char* keyword = condition_keyword(kind);
     const int c = condition.component;
     bool kind_reported = false, dimension_reported = false, duplicate_reported = false;
     bool prescribed_reported = false;
     std::vector<std::int32_t> reported_sections;
     const auto& sections = model_.sections;
-    for (std::int32_t e : elements_) {
+    for (std::int32_t e : condition.resolved) {
       const Element& element = model_.elements[static_cast<std::size_t>(e)];
       if (!is_connector(element.type)) {
         if (!kind_reported) {
@@ -396,7 +396,6 @@ class HistoryValidator {
   Model& model_;
   DiagnosticSink& sink_;
   std::vector<DofMask> active_;
-  std::vector<std::int32_t> nodes_, elements_;
   bool friction_known_ = false, friction_ = false;
 };
 

@@ -54,34 +54,35 @@ bool produces(const BehaviorFeatures& f, OutputProducer producer) {
 // Expands the requests of each step into columns, reporting as it goes.
 class OutputValidator {
  public:
-  OutputValidator(const Model& model, const std::vector<DofMask>& active, DiagnosticSink& sink)
+  OutputValidator(Model& model, const std::vector<DofMask>& active, DiagnosticSink& sink)
       : model_(model), active_(active), sink_(sink) {}
 
-  void run() {
-    for (const Step& step : model_.history.steps) {
+  // The resolved sets are stored in the requests: the history writer reads them.
+  void run(std::vector<Step>& steps) {
+    for (Step& step : steps) {
       set_columns_.clear();
       target_columns_.clear();
-      for (const OutputRequest& request : step.outputs) {
-        for (const ElementOutputRequest& block : request.elements) {
+      for (OutputRequest& request : step.outputs) {
+        for (ElementOutputRequest& block : request.elements) {
           if (!block.has_elset) continue;
-          std::vector<std::int32_t> elements;
+          std::vector<std::int32_t>& elements = block.resolved;
           if (!resolve_elements(model_, block.elset, elements, sink_) || request.field) continue;
           for (const OutputIdentifier& id : block.identifiers) {
             element_identifier(id, block.elset, elements, false);
           }
         }
-        for (const NodeOutputRequest& block : request.nodes) {
+        for (NodeOutputRequest& block : request.nodes) {
           if (!block.has_nset) continue;
-          std::vector<std::int32_t> nodes;
+          std::vector<std::int32_t>& nodes = block.resolved;
           if (!resolve_nodes(model_, block.nset, nodes, sink_) || request.field) continue;
           for (const OutputIdentifier& id : block.identifiers) {
             node_identifier(id, block.nset, nodes, PrintRequest::Totals::No);
           }
         }
       }
-      for (const PrintRequest& print : step.prints) {
+      for (PrintRequest& print : step.prints) {
         if (!print.has_set) continue;
-        std::vector<std::int32_t> members;
+        std::vector<std::int32_t>& members = print.resolved;
         if (print.node) {
           if (!resolve_nodes(model_, print.set, members, sink_)) continue;
           for (const OutputIdentifier& id : print.identifiers) {
@@ -385,9 +386,9 @@ class OutputValidator {
 
 }  // namespace
 
-void validate_output_requests(const Model& model, const std::vector<DofMask>& active,
+void validate_output_requests(Model& model, const std::vector<DofMask>& active,
                               DiagnosticSink& sink) {
-  OutputValidator(model, active, sink).run();
+  OutputValidator(model, active, sink).run(model.history.steps);
 }
 
 }  // namespace clinch

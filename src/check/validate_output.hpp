@@ -1,7 +1,8 @@
 // Output-request checks of validate_history (keywords.md §17–§18, output-variables.md §1.2):
-// sets resolved, components against the connection type (E0902), variables the behaviour cannot
-// produce (W0901), derived-component names (E0506, cder-no-context) and duplicate columns
-// (W0903), by expanding every request of a step into its history columns.
+// sets resolved and stored in the requests, components against the connection type (E0902),
+// variables the behaviour cannot produce (W0901), derived-component names (E0506,
+// cder-no-context) and duplicate columns (W0903), by expanding every request of a step into its
+// history columns.
 #pragma once
 
 #include <vector>
@@ -13,7 +14,7 @@ namespace clinch {
 class DiagnosticSink;
 struct Model;
 
-void validate_output_requests(const Model& model, const std::vector<DofMask>& active,
+void validate_output_requests(Model& model, const std::vector<DofMask>& active,
                               DiagnosticSink& sink);
 
 }  // namespace clinch

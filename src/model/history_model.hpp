@@ -1,8 +1,11 @@
 // Plain data for amplitudes, steps and everything in them: procedure, controls, boundary
 // conditions, loads, connector motions and loads, output requests (keywords.md §8–§18). The
 // history keyword handlers fill it in deck order; validate_history resolves references and checks
-// the rules that need the whole model. Steps hold their *effective* NLGEOM and controls (what
-// carries over from earlier steps, keywords.md §13), so the step driver reads one step at a time.
+// the rules that need the whole model. It stores the global nodes or elements each condition,
+// load and output request targets (`resolved`; empty when the reference is in error), and the
+// run reads those instead of resolving the names again. Steps hold their *effective* NLGEOM and
+// controls (what carries over from earlier steps, keywords.md §13), so the step driver reads one
+// step at a time.
 #pragma once
 
 #include <array>
@@ -57,8 +60,9 @@ struct ConditionBlock {
 // *BOUNDARY data line. DOFs as a mask (bit d − 1 for DOF d) because the named types are not
 // ranges (XSYMM = 1, 5, 6).
 struct BoundaryCondition {
-  std::int32_t block = -1;  // into the owner's ConditionBlock list
-  TargetRef target;         // node or node set
+  std::int32_t block = -1;             // into the owner's ConditionBlock list
+  TargetRef target;                    // node or node set
+  std::vector<std::int32_t> resolved;  // global nodes of target, set by validation
   std::uint8_t dofs = 0;
   int first_dof = 0, last_dof = 0;  // range form; 0 for a named type
   std::string named_type;           // "ENCASTRE", ... (empty: range form)
@@ -72,6 +76,7 @@ struct BoundaryCondition {
 struct ConcentratedLoad {
   std::int32_t block = -1;
   TargetRef target;
+  std::vector<std::int32_t> resolved;  // global nodes of target, set by validation
   int dof = 0;
   double magnitude = 0;
   SourceLoc loc, dof_loc;
@@ -80,8 +85,9 @@ struct ConcentratedLoad {
 // *CONNECTOR MOTION and *CONNECTOR LOAD data line.
 struct ConnectorCondition {
   std::int32_t block = -1;
-  TargetRef target;   // element or element set
-  int component = 0;  // 1…6
+  TargetRef target;                    // element or element set
+  std::vector<std::int32_t> resolved;  // global elements of target, set by validation
+  int component = 0;                   // 1…6
   double magnitude = 0;
   SourceLoc loc, component_loc, magnitude_loc;
 };
@@ -151,6 +157,7 @@ struct ElementOutputRequest {
   SourceLoc loc;
   TargetRef elset;
   bool has_elset = false;
+  std::vector<std::int32_t> resolved;  // global elements of elset, set by validation
   std::vector<OutputIdentifier> identifiers;
 };
 
@@ -158,6 +165,7 @@ struct NodeOutputRequest {
   SourceLoc loc;
   TargetRef nset;
   bool has_nset = false;
+  std::vector<std::int32_t> resolved;  // global nodes of nset, set by validation
   std::vector<OutputIdentifier> identifiers;
 };
 
@@ -184,6 +192,7 @@ struct PrintRequest {
   SourceLoc loc;
   TargetRef set;
   bool has_set = false;
+  std::vector<std::int32_t> resolved;  // global nodes (elements) of set, set by validation
   int frequency = 1;
   SourceLoc frequency_loc;  // the FREQUENCY value (invalid when defaulted)
   Totals totals = Totals::No;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "base/diagnostic.hpp"
 #include "src/model/output_variables.hpp"
 #include "src/model/potential_queries.hpp"
 
@@ -90,8 +89,6 @@ std::vector<HistoryColumns::Request> HistoryColumns::expand_step(
     const std::vector<const OutputRequest*>& outputs,
     const std::vector<const PrintRequest*>& prints, bool default_request) {
   std::vector<Request> requests;
-  DiagnosticSink quiet;
-  std::vector<std::int32_t> members;
   auto default_columns = [&](Request& request) {
     // output-variables.md §4: CTF, CU, then the variables of the behaviours in use, per
     // connector in label order.
@@ -129,17 +126,15 @@ std::vector<HistoryColumns::Request> HistoryColumns::expand_step(
     request.frequency = r->frequency;
     if (r->variables != OutputRequest::Variables::Listed) default_columns(request);
     for (const ElementOutputRequest& block : r->elements) {
-      members.clear();
-      if (!block.has_elset || !resolve_elements(model_, block.elset, members, quiet)) continue;
+      if (!block.has_elset) continue;
       for (const OutputIdentifier& id : block.identifiers) {
-        element_columns(id, members, request, false, false, "");
+        element_columns(id, block.resolved, request, false, false, "");
       }
     }
     for (const NodeOutputRequest& block : r->nodes) {
-      members.clear();
-      if (!block.has_nset || !resolve_nodes(model_, block.nset, members, quiet)) continue;
+      if (!block.has_nset) continue;
       for (const OutputIdentifier& id : block.identifiers) {
-        node_columns(id, members, request, false, false, "");
+        node_columns(id, block.resolved, request, false, false, "");
       }
     }
     requests.push_back(std::move(request));
@@ -147,16 +142,13 @@ std::vector<HistoryColumns::Request> HistoryColumns::expand_step(
   for (const PrintRequest* p : prints) {
     Request request;
     request.frequency = p->frequency;
-    members.clear();
-    const bool ok = p->has_set && (p->node ? resolve_nodes(model_, p->set, members, quiet)
-                                           : resolve_elements(model_, p->set, members, quiet));
-    if (ok) {
+    if (p->has_set) {
       const bool totals = p->totals != PrintRequest::Totals::No;
       const bool only = p->totals == PrintRequest::Totals::Only;
       const std::string set = set_label(p->set, !p->node);
       for (const OutputIdentifier& id : p->identifiers) {
-        if (p->node) node_columns(id, members, request, totals, only, set);
-        else element_columns(id, members, request, totals, only, set);
+        if (p->node) node_columns(id, p->resolved, request, totals, only, set);
+        else element_columns(id, p->resolved, request, totals, only, set);
       }
     }
     requests.push_back(std::move(request));

@@ -1,7 +1,5 @@
 #include "src/solver/step_conditions.hpp"
 
-#include "base/diagnostic.hpp"
-
 namespace clinch {
 namespace {
 
@@ -84,17 +82,13 @@ void StepConditions::carry_over(Table& table, bool replaced, bool load_kind, con
 void StepConditions::begin_step(std::size_t s, ConnectorSystem& system) {
   const Step& step = model_.history.steps[s];
   period_ = step.procedure ? step.procedure->period : 1.0;
-  DiagnosticSink quiet;
-  std::vector<std::int32_t> targets;
   released_loads_.clear();
   released_connector_loads_.clear();
 
   if (s == 0) {
     // Model-data conditions hold zero from time 0 (keywords.md §9, §11).
     for (const BoundaryCondition& bc : model_.history.model_boundaries) {
-      targets.clear();
-      if (!resolve_nodes(model_, bc.target, targets, quiet)) continue;
-      for (std::int32_t node : targets) {
+      for (std::int32_t node : bc.resolved) {
         for (int dof = 1; dof <= 6; ++dof) {
           const int eq = (bc.dofs >> (dof - 1)) & 1u ? plan_.dofs.equation(node, dof) : -1;
           if (eq >= 0) boundaries_[eq] = Condition{Mode::Hold, 0.0, 0.0, -1};
@@ -102,9 +96,7 @@ void StepConditions::begin_step(std::size_t s, ConnectorSystem& system) {
       }
     }
     for (const ConnectorCondition& m : model_.history.model_motions) {
-      targets.clear();
-      if (!resolve_elements(model_, m.target, targets, quiet)) continue;
-      for (std::int32_t e : targets) {
+      for (std::int32_t e : m.resolved) {
         const std::int32_t c = plan_.connector_of_element[static_cast<std::size_t>(e)];
         if (c >= 0) motions_[component_key(c, m.component)] = Condition{Mode::Hold, 0.0, 0.0, -1};
       }
@@ -135,10 +127,8 @@ void StepConditions::begin_step(std::size_t s, ConnectorSystem& system) {
              released_connector_loads_);
 
   for (const BoundaryCondition& bc : step.boundaries) {
-    targets.clear();
-    if (!resolve_nodes(model_, bc.target, targets, quiet)) continue;
     const ConditionBlock& block = step.blocks[static_cast<std::size_t>(bc.block)];
-    for (std::int32_t node : targets) {
+    for (std::int32_t node : bc.resolved) {
       for (int dof = 1; dof <= 6; ++dof) {
         if (!((bc.dofs >> (dof - 1)) & 1u)) continue;
         const int eq = plan_.dofs.equation(node, dof);
@@ -149,10 +139,8 @@ void StepConditions::begin_step(std::size_t s, ConnectorSystem& system) {
     }
   }
   for (const ConcentratedLoad& load : step.loads) {
-    targets.clear();
-    if (!resolve_nodes(model_, load.target, targets, quiet)) continue;
     const ConditionBlock& block = step.blocks[static_cast<std::size_t>(load.block)];
-    for (std::int32_t node : targets) {
+    for (std::int32_t node : load.resolved) {
       const int eq = plan_.dofs.equation(node, load.dof);
       if (eq < 0) continue;
       // v₀ of a load is its value at the end of the previous step (0 when new).
@@ -166,10 +154,8 @@ void StepConditions::begin_step(std::size_t s, ConnectorSystem& system) {
   auto connector_conditions = [&](const std::vector<ConnectorCondition>& list, Table& table,
                                   bool motion) {
     for (const ConnectorCondition& cc : list) {
-      targets.clear();
-      if (!resolve_elements(model_, cc.target, targets, quiet)) continue;
       const ConditionBlock& block = step.blocks[static_cast<std::size_t>(cc.block)];
-      for (std::int32_t e : targets) {
+      for (std::int32_t e : cc.resolved) {
         const std::int32_t c = plan_.connector_of_element[static_cast<std::size_t>(e)];
         if (c < 0) continue;
         const std::int64_t key = component_key(c, cc.component);

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "src/linalg/cholmod_solver.hpp"
-#include "src/linalg/model_problems.hpp"
+#include "tests/support/model_problems.hpp"
 
 namespace clinch {
 namespace {

@@ -4,6 +4,7 @@
 //   ** expected-warning@-2:14 {{...}}              warning two lines up, at column 14
 // Offsets are relative to the comment line (none or @+0: that line). Every error and warning
 // produced must be expected, and every expectation must be met, in every file the deck reads.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -116,6 +117,41 @@ INSTANTIATE_TEST_SUITE_P(Decks, DiagnosticDeck, ::testing::ValuesIn(diagnostic_d
 GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(DiagnosticDeck);
 
 TEST(DiagnosticDecks, ThereAreAtLeastForty) { EXPECT_GE(diagnostic_decks().size(), 40u); }
+
+// A field error underlines the whole field, clang-style: the caret at its first column and '~'
+// under the rest (ARCHITECTURE.md principle 6); the JSON gives the last column as end_column.
+TEST(DiagnosticRender, FieldErrorUnderlinesTheWholeField) {
+  SourceManager sources;
+  DiagnosticSink sink;
+  Model model;
+  read_deck_text("deck.inp",
+                 "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n*ELEMENT, TYPE=CONN3D2, ELSET=C\n1, 1, 2\n"
+                 "*CONNECTOR SECTION, ELSET=C\n  HINGEE,\n*STEP\n*STATIC\n*END STEP\n",
+                 sources, model, sink);
+  const auto it = std::find_if(sink.diagnostics().begin(), sink.diagnostics().end(),
+                               [](const Diagnostic& d) { return d.severity == Severity::Error; });
+  ASSERT_NE(it, sink.diagnostics().end());
+  EXPECT_EQ(it->loc, (SourceLoc{it->loc.file, 7, 3, 6}));
+  const std::string text = render_text(*it, sources);
+  EXPECT_NE(text.find("deck.inp:7:3: error: unknown connection type 'HINGEE'"), std::string::npos)
+      << text;
+  EXPECT_NE(text.find("\n   HINGEE,\n   ^~~~~~\n"), std::string::npos) << text;
+  const std::string json = render_json({*it}, sources);
+  EXPECT_NE(json.find("\"column\": 3"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"end_column\": 8"), std::string::npos) << json;
+}
+
+// A location without an extent keeps the caret alone.
+TEST(DiagnosticRender, PointLocationHasACaretOnly) {
+  SourceManager sources;
+  const std::uint32_t file = sources.add_buffer("deck.inp", "*NODE\n1, 0., 0., 0.\n");
+  Diagnostic d{DiagCode::undefined_node, Severity::Error, SourceLoc{file, 2, 4}, "x", {}};
+  EXPECT_NE(render_text(d, sources).find("\n 1, 0., 0., 0.\n    ^\n"), std::string::npos)
+      << render_text(d, sources);
+  d.loc.length = 3;
+  EXPECT_NE(render_text(d, sources).find("\n 1, 0., 0., 0.\n    ^~~\n"), std::string::npos)
+      << render_text(d, sources);
+}
 
 }  // namespace
 }  // namespace clinch

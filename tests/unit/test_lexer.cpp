@@ -60,6 +60,31 @@ TEST(Lexer, FieldsAreTrimmedAndLocated) {
   EXPECT_FALSE(sink.has_errors());
 }
 
+// A field's location spans its written text, trimmed, quotes included; an empty field is a
+// point (ARCHITECTURE.md principle 6).
+TEST(Lexer, FieldsSpanTheirText) {
+  DiagnosticSink sink;
+  auto f = split("  12 ,  Set 1, \"a, b\" , ,x", sink);
+  ASSERT_EQ(f.size(), 5u);
+  EXPECT_EQ(f[0].loc, (SourceLoc{0, 7, 3, 2}));
+  EXPECT_EQ(f[1].loc, (SourceLoc{0, 7, 9, 5}));  // "Set 1": inner blanks belong to the span
+  EXPECT_EQ(f[2].loc, (SourceLoc{0, 7, 16, 6}));
+  EXPECT_EQ(f[2].loc.end_column(), 21u);
+  EXPECT_EQ(f[3].loc.length, 0u);
+  EXPECT_EQ(f[4].loc, (SourceLoc{0, 7, 26, 1}));
+  EXPECT_EQ(f[0].loc.shifted(1), (SourceLoc{0, 7, 4}));  // a position inside is a point
+}
+
+TEST(Lexer, KeywordNamesAndParametersSpanTheirText) {
+  DiagnosticSink sink;
+  KeywordLine line;
+  ASSERT_TRUE(parse_keyword_line({{" *Connector Section , elset = welds", {0, 4, 1}}}, line, sink));
+  EXPECT_EQ(line.loc, (SourceLoc{0, 4, 2, 18}));  // "*Connector Section"
+  ASSERT_EQ(line.params.size(), 1u);
+  EXPECT_EQ(line.params[0].loc, (SourceLoc{0, 4, 23, 5}));        // "elset"
+  EXPECT_EQ(line.params[0].value.loc, (SourceLoc{0, 4, 31, 5}));  // "welds"
+}
+
 TEST(Lexer, CommasInsideQuotesDoNotSplit) {
   DiagnosticSink sink;
   auto f = split("\"a, b\", c", sink);

@@ -17,8 +17,8 @@
 
 #include "src/linalg/cholmod_solver.hpp"
 #include "src/linalg/linear_solver.hpp"
-#include "src/linalg/model_problems.hpp"
 #include "src/linalg/pivot_checks.hpp"
+#include "tests/support/model_problems.hpp"
 
 namespace clinch {
 

@@ -1,4 +1,4 @@
-#include "src/linalg/model_problems.hpp"
+#include "tests/support/model_problems.hpp"
 
 namespace clinch {
 
