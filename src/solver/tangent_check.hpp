@@ -22,8 +22,9 @@ namespace clinch {
 JacobianReport check_assembled_tangent(NonlinearProblem& problem, const SparseMatrix& k,
                                        const Eigen::VectorXd& steps, bool symmetric_part = false);
 
-// The report (several lines); the state of `system` is unchanged afterwards. The whole matrix
-// is compared, read through the storage of its pattern (full or symmetric upper).
+// The report (several lines); the state of `system` is unchanged afterwards. The whole matrix is
+// compared, prescribed DOFs included (it is checked without the increment's conditions), read
+// through the storage of its pattern (full or symmetric upper).
 std::string check_tangent(ConnectorSystem& system, int step, int increment);
 
 }  // namespace clinch
