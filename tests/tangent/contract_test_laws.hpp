@@ -56,4 +56,28 @@ class IncrementLimitedSpring final : public Behavior {
   double k_, limit_;
 };
 
+// A linear spring k on component 1 that keeps the next increment from growing, by suggesting a
+// ratio of 1 or, with `unreliable`, by reporting every result as Unreliable.
+class GrowthHoldingSpring final : public Behavior {
+ public:
+  GrowthHoldingSpring(double k, bool unreliable) : k_(k), unreliable_(unreliable) {}
+  ComponentMask components() const override { return component_bit(1); }
+  std::span<const HistoryVariable> history_layout() const override { return {}; }
+  bool tangent_is_symmetric() const override { return true; }
+  IntegrationStatus integrate(const BehaviorInput& in, BehaviorOutput& out) const override {
+    out.force[0] = k_ * (in.motion_old[0] + in.increment[0]);
+    out.tangent(0, 0) = k_;
+    if (unreliable_) {
+      out.message = "unsure of this result";
+      return IntegrationStatus::Unreliable;
+    }
+    out.suggested_dt_ratio = 1.0;
+    return IntegrationStatus::Success;
+  }
+
+ private:
+  double k_;
+  bool unreliable_;
+};
+
 }  // namespace clinch

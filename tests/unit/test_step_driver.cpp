@@ -1,7 +1,8 @@
 // The step driver honours what a law asks of the time step (behaviour contract,
 // src/behavior/behavior.hpp): an increment whose law suggests a ratio below 1 is abandoned and
 // retried that much smaller, under automatic incrementation; with DIRECT it cannot be, and the run
-// stops saying why. Each test runs the whole driver on a small deck and reads its outputs.
+// stops saying why; a law that suggests a ratio of 1, or reports Unreliable, keeps the increment
+// from growing. Each test runs the whole driver on a small deck and reads its outputs.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -37,7 +38,7 @@ struct DriverRun {
   std::string status_file;
 };
 
-DriverRun run_with_limited_spring(const std::string& deck_text, const std::string& job) {
+DriverRun run_with_law(const std::string& deck_text, const Behavior& law, const std::string& job) {
   CheckedDeck deck;
   read_deck_text("deck.inp", deck_text, deck.sources, deck.model, deck.sink);
   EXPECT_FALSE(deck.sink.has_errors()) << deck.dump();
@@ -46,7 +47,6 @@ DriverRun run_with_limited_spring(const std::string& deck_text, const std::strin
   EXPECT_TRUE(plan) << error;
   DriverRun run;
   if (!plan) return run;
-  const IncrementLimitedSpring law(1000.0, kLimit);
   plan->add_law(0, law);
   ConnectorSystem system(deck.model, *plan);
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "clinch-step-driver";
@@ -90,7 +90,8 @@ DriverRun run_with_limited_spring(const std::string& deck_text, const std::strin
 // Automatic incrementation: the first attempt (Δu = 0.1) is abandoned, and every accepted
 // increment moves by at most the limit; the step still ends at U1 = 0.1 exactly.
 TEST(StepDriver, CutsBackWhenALawAsksForASmallerIncrement) {
-  const DriverRun run = run_with_limited_spring(axial_deck("*STATIC\n1., 1."), "automatic");
+  const IncrementLimitedSpring law(1000.0, kLimit);
+  const DriverRun run = run_with_law(axial_deck("*STATIC\n1., 1."), law, "automatic");
   ASSERT_TRUE(run.result.completed) << run.result.reason;
   EXPECT_GE(run.result.cutbacks, 1);
   EXPECT_GE(run.result.increments, 5);  // 0.1 in steps of at most 0.02
@@ -104,13 +105,34 @@ TEST(StepDriver, CutsBackWhenALawAsksForASmallerIncrement) {
 // DIRECT: fixed increments cannot be cut back, so the run stops at the first increment and says
 // which law asked and why.
 TEST(StepDriver, DirectIncrementationStopsWhenALawAsksForASmallerIncrement) {
-  const DriverRun run = run_with_limited_spring(axial_deck("*STATIC, DIRECT\n1., 1."), "direct");
+  const IncrementLimitedSpring law(1000.0, kLimit);
+  const DriverRun run = run_with_law(axial_deck("*STATIC, DIRECT\n1., 1."), law, "direct");
   EXPECT_FALSE(run.result.completed);
   EXPECT_EQ(run.result.increment, 1);
   EXPECT_NE(run.result.reason.find("a law asks for a smaller increment"), std::string::npos)
       << run.result.reason;
   EXPECT_NE(run.result.reason.find("connector element 1"), std::string::npos) << run.result.reason;
   EXPECT_NE(run.status_file.find("FAILED"), std::string::npos) << run.status_file;
+}
+
+// Automatic incrementation from 0.1 of a step of 1: a linear problem converges in one iteration,
+// so after two easy increments the driver grows the increment (keywords.md §16, D_D = 1.5) and
+// needs fewer than 10. A law that suggests a ratio of 1, or calls its results Unreliable, holds
+// every increment at 0.1: exactly 10, none cut back.
+TEST(StepDriver, ALawCanHoldTheIncrementFromGrowing) {
+  const IncrementLimitedSpring free_law(1000.0, 1.0);  // never asks for anything here
+  const DriverRun grown = run_with_law(axial_deck("*STATIC\n0.1, 1."), free_law, "grown");
+  ASSERT_TRUE(grown.result.completed) << grown.result.reason;
+  EXPECT_LT(grown.result.increments, 10);
+  for (bool unreliable : {false, true}) {
+    const GrowthHoldingSpring law(1000.0, unreliable);
+    const DriverRun held = run_with_law(axial_deck("*STATIC\n0.1, 1."), law,
+                                        unreliable ? "unreliable" : "ratio-one");
+    ASSERT_TRUE(held.result.completed) << held.result.reason;
+    EXPECT_EQ(held.result.increments, 10) << (unreliable ? "Unreliable" : "ratio 1");
+    EXPECT_EQ(held.result.cutbacks, 0);
+    EXPECT_DOUBLE_EQ(held.u1.back(), 0.1);
+  }
 }
 
 }  // namespace
