@@ -10,40 +10,55 @@
 
 namespace clinch {
 
+// A linear spring k on component 1, without history: what the laws below share.
+class ComponentOneSpring : public Behavior {
+ public:
+  explicit ComponentOneSpring(double k) : k_(k) {}
+  ComponentMask components() const override { return component_bit(1); }
+  std::span<const HistoryVariable> history_layout() const override { return {}; }
+  bool tangent_is_symmetric() const override { return true; }
+
+ protected:
+  // f₁ = k u₁, ∂f₁/∂u₁ = k; returns u₁.
+  double spring(const BehaviorInput& in, BehaviorOutput& out) const {
+    const double u = in.motion_old[0] + in.increment[0];
+    out.force[0] = k_ * u;
+    out.tangent(0, 0) = k_;
+    return u;
+  }
+
+ private:
+  double k_;
+};
+
 // On component 1: f₁ = k u₁ + c λ₂ u₁³, λ₂ the constraint force of component 2 (SLOT: a
 // constrained component). ∂f₁/∂u₁ = k + 3 c λ₂ u₁², ∂f₁/∂λ₂ = c u₁³: an unsymmetric element
 // tangent with a block against the multiplier. Smooth, so Newton converges quadratically.
-class ContactStiffenedSpring final : public Behavior {
+class ContactStiffenedSpring final : public ComponentOneSpring {
  public:
-  ContactStiffenedSpring(double k, double c) : k_(k), c_(c) {}
-  ComponentMask components() const override { return component_bit(1); }
-  std::span<const HistoryVariable> history_layout() const override { return {}; }
+  ContactStiffenedSpring(double k, double c) : ComponentOneSpring(k), c_(c) {}
   bool tangent_is_symmetric() const override { return false; }
   bool needs_connector_forces() const override { return true; }
   IntegrationStatus integrate(const BehaviorInput& in, BehaviorOutput& out) const override {
-    const double u = in.motion_old[0] + in.increment[0];
+    const double u = spring(in, out);
     const double lambda = (*in.connector_forces)[1];
-    out.force[0] = k_ * u + c_ * lambda * u * u * u;
-    out.tangent(0, 0) = k_ + 3 * c_ * lambda * u * u;
+    out.force[0] += c_ * lambda * u * u * u;
+    out.tangent(0, 0) += 3 * c_ * lambda * u * u;
     out.force_tangent(0, 1) = c_ * u * u * u;
     return IntegrationStatus::Success;
   }
 
  private:
-  double k_, c_;
+  double c_;
 };
 
 // A linear spring k on component 1 that accepts a motion increment of at most `limit` per
 // increment: beyond it, it asks for the increment scaled to fit (suggested_dt_ratio < 1).
-class IncrementLimitedSpring final : public Behavior {
+class IncrementLimitedSpring final : public ComponentOneSpring {
  public:
-  IncrementLimitedSpring(double k, double limit) : k_(k), limit_(limit) {}
-  ComponentMask components() const override { return component_bit(1); }
-  std::span<const HistoryVariable> history_layout() const override { return {}; }
-  bool tangent_is_symmetric() const override { return true; }
+  IncrementLimitedSpring(double k, double limit) : ComponentOneSpring(k), limit_(limit) {}
   IntegrationStatus integrate(const BehaviorInput& in, BehaviorOutput& out) const override {
-    out.force[0] = k_ * (in.motion_old[0] + in.increment[0]);
-    out.tangent(0, 0) = k_;
+    spring(in, out);
     const double step = std::abs(in.increment[0]);
     if (step > limit_) {
       out.suggested_dt_ratio = 0.9 * limit_ / step;
@@ -53,20 +68,16 @@ class IncrementLimitedSpring final : public Behavior {
   }
 
  private:
-  double k_, limit_;
+  double limit_;
 };
 
 // A linear spring k on component 1 that keeps the next increment from growing, by suggesting a
 // ratio of 1 or, with `unreliable`, by reporting every result as Unreliable.
-class GrowthHoldingSpring final : public Behavior {
+class GrowthHoldingSpring final : public ComponentOneSpring {
  public:
-  GrowthHoldingSpring(double k, bool unreliable) : k_(k), unreliable_(unreliable) {}
-  ComponentMask components() const override { return component_bit(1); }
-  std::span<const HistoryVariable> history_layout() const override { return {}; }
-  bool tangent_is_symmetric() const override { return true; }
+  GrowthHoldingSpring(double k, bool unreliable) : ComponentOneSpring(k), unreliable_(unreliable) {}
   IntegrationStatus integrate(const BehaviorInput& in, BehaviorOutput& out) const override {
-    out.force[0] = k_ * (in.motion_old[0] + in.increment[0]);
-    out.tangent(0, 0) = k_;
+    spring(in, out);
     if (unreliable_) {
       out.message = "unsure of this result";
       return IntegrationStatus::Unreliable;
@@ -76,7 +87,6 @@ class GrowthHoldingSpring final : public Behavior {
   }
 
  private:
-  double k_;
   bool unreliable_;
 };
 
