@@ -10,8 +10,6 @@ namespace {
 bool is_blank(char c) { return c == ' ' || c == '\t'; }
 bool is_high(char c) { return static_cast<unsigned char>(c) >= 0x80; }
 
-char upper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
-
 std::string_view trim(std::string_view s) {
   std::size_t b = 0, e = s.size();
   while (b < e && is_blank(s[b])) ++b;
@@ -78,15 +76,6 @@ bool slow_field(std::string_view text, SourceLoc loc, std::size_t i, std::size_t
 }
 
 }  // namespace
-
-std::string fold_name(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (char c : text) {
-    if (!is_blank(c)) out.push_back(upper(c));
-  }
-  return out;
-}
 
 bool split_fields(std::string_view text, SourceLoc loc, std::vector<Field>& fields,
                   DiagnosticSink& sink) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "base/diagnostic.hpp"
+#include "base/fold_name.hpp"
 #include "parser/file_window.hpp"
 
 namespace clinch {
@@ -67,8 +68,6 @@ struct KeywordSegment {
 bool parse_keyword_line(const std::vector<KeywordSegment>& segments, KeywordLine& out,
                         DiagnosticSink& sink);
 
-// Folds a keyword or parameter name: blanks removed, upper case.
-std::string fold_name(std::string_view text);
 
 // Iterates the physical lines of one file: classification of §1.1, line-level checks (control
 // characters E0107, long lines W0101 once per file). The file is either text in memory or read

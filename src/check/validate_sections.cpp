@@ -11,7 +11,7 @@
 #include <tuple>
 
 #include "base/diagnostic.hpp"
-#include "parser/lexer.hpp"
+#include "base/fold_name.hpp"
 #include "base/suggest.hpp"
 #include "src/model/connection_types.hpp"
 #include "src/model/model.hpp"
