@@ -275,6 +275,7 @@ class Driver {
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
     solver_ = solver.get();
+    if (symmetric && plan_.has_multipliers) why += "; the multipliers make it indefinite";
     out_.log.info(fmt::format("step {}: {} on the {} ({} equations, {} stored entries): {}",
                               step_number, solver_->name(),
                               symmetric ? "upper triangle" : "full pattern",
