@@ -6,12 +6,11 @@
 // the output, the stop and lock updates and the next increment read them.
 #pragma once
 
+#include <Eigen/Core>
 #include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "src/assembly/analysis_plan.hpp"
 #include "src/solver/nonlinear_problem.hpp"
@@ -49,7 +48,7 @@ struct AnalysisState {
   void commit();
   void revert();
 
-  Eigen::VectorXd x, x_n, dx_n;  // solution, last converged, last converged increment
+  Eigen::VectorXd x, x_n, dx_n;               // solution, last converged, last converged increment
   std::vector<Matrix3> rotation, rotation_n;  // NLGEOM node rotations (identity otherwise)
   std::vector<double> history, history_n;
   std::vector<Vector6> position_n;  // converged connector positions (angle branches, §3.6)

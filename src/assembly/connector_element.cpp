@@ -57,9 +57,8 @@ EvalStatus ConnectorElements::evaluate(std::size_t c, const ElementContext& cont
   const ConnectorRecord& r = plan_.connectors[c];
   KinematicsResult& k = local.kinematics;
   plan_.kinematics[r.kinematics].evaluate(node_pose(plan_.dofs, state, r.nodes[0]),
-                                          node_pose(plan_.dofs, state, r.nodes[1]),
-                                          context.nlgeom, state.position_n[c],
-                                          want_tangent && context.nlgeom, k);
+                                          node_pose(plan_.dofs, state, r.nodes[1]), context.nlgeom,
+                                          state.position_n[c], want_tangent && context.nlgeom, k);
   if (!k.ok) return {false, fmt::format("connector element {}: {}", label(c), k.message)};
 
   // The multipliers first: the laws may read the constraint forces they give.

@@ -6,10 +6,9 @@
 // multipliers, writes the laws' trial history and keeps what it computed in the state's results.
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <string>
-
-#include <Eigen/Core>
 
 #include "src/assembly/analysis_state.hpp"
 #include "src/assembly/increment_conditions.hpp"

@@ -168,8 +168,8 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
   return {};
 }
 
-void ConnectorSystem::scatter(const LocalEquations& l, std::size_t offset,
-                              const LocalSystem& local, bool symmetrize, SparseMatrix* tangent) {
+void ConnectorSystem::scatter(const LocalEquations& l, std::size_t offset, const LocalSystem& local,
+                              bool symmetrize, SparseMatrix* tangent) {
   for (int a = 0; a < l.count; ++a) {
     internal_[l.equation[static_cast<std::size_t>(a)]] += local.r[a];
   }
@@ -186,8 +186,8 @@ void ConnectorSystem::scatter(const LocalEquations& l, std::size_t offset,
       const bool fixed_a = conditions_.is_prescribed(ea);
       // Upper storage holds K(a, b) for both triangles; an unsymmetric element gives its
       // symmetric part there (keywords.md §14, UNSYMM=NO).
-      const double k = symmetric && symmetrize ? 0.5 * (local.k(a, b) + local.k(b, a))
-                                               : local.k(a, b);
+      const double k =
+          symmetric && symmetrize ? 0.5 * (local.k(a, b) + local.k(b, a)) : local.k(a, b);
       if (!fixed_a && !fixed_b) {
         values[*position] += k;
       } else if (predicting_ && fixed_a != fixed_b) {
@@ -230,7 +230,8 @@ void ConnectorSystem::apply_correction(const Eigen::VectorXd& dx) {
       phi *= 1.0 + 2.0 * std::numbers::pi * turns / phi.norm();
     }
     for (int k = 0; k < 3; ++k) {
-      if (eqs[static_cast<std::size_t>(k)] >= 0) state_.x[eqs[static_cast<std::size_t>(k)]] = phi[k];
+      if (eqs[static_cast<std::size_t>(k)] >= 0)
+        state_.x[eqs[static_cast<std::size_t>(k)]] = phi[k];
     }
   }
   snap_prescribed_rotations();
@@ -268,7 +269,8 @@ void ConnectorSystem::measure(const Eigen::VectorXd& residual, const Eigen::Vect
     if (conditions_.is_prescribed(eq)) continue;
     norms.largest_residual[f] = std::max(norms.largest_residual[f], std::abs(residual[eq]));
     residual_sq += residual[eq] * residual[eq];
-    norms.largest_increment[f] = std::max(norms.largest_increment[f], std::abs(state_.x[eq] - state_.x_n[eq]));
+    norms.largest_increment[f] =
+        std::max(norms.largest_increment[f], std::abs(state_.x[eq] - state_.x_n[eq]));
     if (correction) {
       const double dx = (*correction)[eq];
       norms.largest_correction[f] = std::max(norms.largest_correction[f], std::abs(dx));
@@ -312,9 +314,9 @@ ConnectorOutput ConnectorSystem::connector_output(std::size_t connector) const {
   out.status = state_.active_sets[connector].status;
   std::size_t l = 0;
   for (const LawSlot& slot : r.laws) {
-    out.laws[l++] = {slot.law->history_layout(),
-                     std::span<const double>(state_.history.data() + slot.history,
-                                             slot.law->history_size())};
+    out.laws[l++] = {
+        slot.law->history_layout(),
+        std::span<const double>(state_.history.data() + slot.history, slot.law->history_size())};
   }
   return out;
 }

@@ -3,10 +3,9 @@
 // connector loads. Plain data that the elements and the assembly read.
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "src/assembly/analysis_plan.hpp"
 

@@ -6,13 +6,11 @@
 // because rotations are updated multiplicatively under NLGEOM.
 #pragma once
 
+#include <Eigen/Core>
 #include <limits>
 #include <string>
 
 #include "src/linalg/sparse_matrix.hpp"
-
-#include <Eigen/Core>
-
 
 namespace clinch {
 
@@ -24,10 +22,10 @@ struct EvalStatus {
 // Per-field measures of one iteration (keywords.md §16): index 0 = translations and forces,
 // 1 = rotations and moments.
 struct IterationNorms {
-  double largest_residual[2] = {0, 0};   // r_max over free DOFs of the field
-  double flux[2] = {0, 0};               // q̃: mean magnitude of the nonzero nodal forces
-  double largest_correction[2] = {0, 0}; // c_max of the last correction
-  double largest_increment[2] = {0, 0};  // largest change of the solution in the increment
+  double largest_residual[2] = {0, 0};    // r_max over free DOFs of the field
+  double flux[2] = {0, 0};                // q̃: mean magnitude of the nonzero nodal forces
+  double largest_correction[2] = {0, 0};  // c_max of the last correction
+  double largest_increment[2] = {0, 0};   // largest change of the solution in the increment
   // Corrections up to this size are round-off (1e-12·L̄ for translations, 1e-12 rad for
   // rotations) and pass the correction tests, so that a field that does not move in the
   // increment is not held by corrections of 1e-16 against an increment of 0.
@@ -36,9 +34,9 @@ struct IterationNorms {
   // flux over L̄ (times L̄ for moments). A field whose flux is no more than this carries no force
   // (a moment of 3e-14 beside forces of 90 is not a moment field to converge on).
   double force_resolution[2] = {0, 0};
-  double residual_norm = 0;              // Euclidean norm over all free equations (log)
+  double residual_norm = 0;  // Euclidean norm over all free equations (log)
   double correction_norm = 0;
-  double constraint_violation = 0;       // max |g| / its tolerance (≤ 1 passes)
+  double constraint_violation = 0;  // max |g| / its tolerance (≤ 1 passes)
 };
 
 // What the laws asked of the time step: the smallest ratio any law suggested (infinity when none

@@ -21,10 +21,10 @@ std::string describe_equation(const Model& model, const AnalysisPlan& plan, int 
   const std::int32_t node = plan.dofs.node_of(equation);
   if (node >= 0) {
     const Node& n = model.nodes[static_cast<std::size_t>(node)];
-    return fmt::format("singular system: DOF {} of node {} has no stiffness (add a *BOUNDARY or "
-                       "an element that restrains it)",
-                       kDofNames[plan.dofs.dof_of(equation)],
-                       qualified_label(model, n.instance, n.label));
+    return fmt::format(
+        "singular system: DOF {} of node {} has no stiffness (add a *BOUNDARY or "
+        "an element that restrains it)",
+        kDofNames[plan.dofs.dof_of(equation)], qualified_label(model, n.instance, n.label));
   }
   for (const ConnectorRecord& r : plan.connectors) {
     for (int j = 0; j < r.multiplier_count; ++j) {
@@ -40,8 +40,8 @@ std::string describe_equation(const Model& model, const AnalysisPlan& plan, int 
 
 class Driver {
  public:
-  Driver(const Model& model, ConnectorSystem& system, const SolverFactory& solvers,
-         RunOutputs& out, const RunOptions& options)
+  Driver(const Model& model, ConnectorSystem& system, const SolverFactory& solvers, RunOutputs& out,
+         const RunOptions& options)
       : model_(model),
         plan_(system.plan()),
         system_(system),
@@ -91,8 +91,7 @@ class Driver {
   }
 
   // One attempt: Newton, then the stop active set (behaviors.md §5.1), re-solved until it settles.
-  NewtonReport attempt(int step, int increment, int attempt_number, int& iterations,
-                       int& changes) {
+  NewtonReport attempt(int step, int increment, int attempt_number, int& iterations, int& changes) {
     const TimeIncrementationControls& t = controls_->time;
     const NewtonOptions options{t.ic, t.i0, accept_unconverged_, controls_->line_search};
     iterations = 0;
@@ -147,8 +146,8 @@ class Driver {
     int increment = 0, easy_in_a_row = 0;
     while (step_time < period * (1.0 - 1e-12)) {
       if (increment >= step.max_increments) {
-        return fail(fmt::format("too many increments (INC={})", step.max_increments),
-                    step_number, increment);
+        return fail(fmt::format("too many increments (INC={})", step.max_increments), step_number,
+                    increment);
       }
       const double remaining = period - step_time;
       // The last increment ends exactly at T (keywords.md §15).
@@ -164,8 +163,8 @@ class Driver {
           out_.log.info(check_tangent(system_, step_number, increment + 1));
         }
         int iterations = 0, changes = 0;
-        const NewtonReport report = attempt(step_number, increment + 1, attempt_number,
-                                            iterations, changes);
+        const NewtonReport report =
+            attempt(step_number, increment + 1, attempt_number, iterations, changes);
         result_.iterations += iterations;
         const bool converged = report.converged();
         // A converged attempt is still abandoned when a law asks for a smaller increment.
@@ -192,8 +191,10 @@ class Driver {
             // keywords.md §16: D_B after a hard increment, D_D after two easy ones.
             easy_in_a_row = iterations <= t.ig ? easy_in_a_row + 1 : 0;
             const double accepted = dt;
-            if (iterations > t.il) dt *= t.db;
-            else if (easy_in_a_row >= 2) dt *= t.dd;
+            if (iterations > t.il)
+              dt *= t.db;
+            else if (easy_in_a_row >= 2)
+              dt *= t.dd;
             // A law may cap the growth: by its ratio, or to none while it doubts its result.
             dt = std::min(dt, accepted * (request.unreliable ? std::min(1.0, request.dt_ratio)
                                                              : request.dt_ratio));
@@ -223,8 +224,7 @@ class Driver {
           return fail(fmt::format("too many cutbacks ({}; last: {})", t.ia, reason), step_number,
                       increment + 1);
         }
-        dt *= smaller ? request.dt_ratio
-                      : report.outcome == NewtonOutcome::Diverged ? t.df : t.dc;
+        dt *= smaller ? request.dt_ratio : report.outcome == NewtonOutcome::Diverged ? t.df : t.dc;
         easy_in_a_row = 0;
         if (dt < procedure.min_increment * (1.0 - 1e-12)) {
           return fail(fmt::format("time increment {} below the minimum {} ({})", dt,
@@ -246,8 +246,8 @@ class Driver {
   bool choose_storage(const Step& step, int step_number) {
     const bool laws_symmetric = plan_.laws_symmetric();
     bool symmetric = laws_symmetric;
-    std::string why = laws_symmetric ? "every law's tangent is symmetric"
-                                     : "a law's tangent is unsymmetric";
+    std::string why =
+        laws_symmetric ? "every law's tangent is symmetric" : "a law's tangent is unsymmetric";
     if (step.unsymmetric == Unsymmetric::Yes) {
       symmetric = false;
       why = "*STEP, UNSYMM=YES";
@@ -278,14 +278,14 @@ class Driver {
     if (symmetric && plan_.has_multipliers) why += "; the multipliers make it indefinite";
     out_.log.info(fmt::format("step {}: {} on the {} ({} equations, {} stored entries): {}",
                               step_number, solver_->name(),
-                              symmetric ? "upper triangle" : "full pattern",
-                              system_.pattern().n, system_.pattern().values.size(), why));
+                              symmetric ? "upper triangle" : "full pattern", system_.pattern().n,
+                              system_.pattern().values.size(), why));
     return true;
   }
 
   const Model& model_;
   const AnalysisPlan& plan_;
-  ConnectorSystem& system_;   // conditions and output
+  ConnectorSystem& system_;    // conditions and output
   NonlinearProblem& problem_;  // solving and the state between solves
   const SolverFactory& solvers_;
   std::unique_ptr<LinearSolver> symmetric_solver_, full_solver_;

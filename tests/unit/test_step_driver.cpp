@@ -75,8 +75,8 @@ DriverRun run_with_law(const std::string& deck_text, const Behavior& law, const 
     std::stringstream split(line);
     for (std::string f; std::getline(split, f, ',');) fields.push_back(f);
     if (column == 0) {
-      column = static_cast<std::size_t>(
-          std::find(fields.begin(), fields.end(), "U1@2") - fields.begin());
+      column = static_cast<std::size_t>(std::find(fields.begin(), fields.end(), "U1@2") -
+                                        fields.begin());
       EXPECT_LT(column, fields.size()) << line;
       continue;
     }
@@ -126,8 +126,8 @@ TEST(StepDriver, ALawCanHoldTheIncrementFromGrowing) {
   EXPECT_LT(grown.result.increments, 10);
   for (bool unreliable : {false, true}) {
     const GrowthHoldingSpring law(1000.0, unreliable);
-    const DriverRun held = run_with_law(axial_deck("*STATIC\n0.1, 1."), law,
-                                        unreliable ? "unreliable" : "ratio-one");
+    const DriverRun held =
+        run_with_law(axial_deck("*STATIC\n0.1, 1."), law, unreliable ? "unreliable" : "ratio-one");
     ASSERT_TRUE(held.result.completed) << held.result.reason;
     EXPECT_EQ(held.result.increments, 10) << (unreliable ? "Unreliable" : "ratio 1");
     EXPECT_EQ(held.result.cutbacks, 0);
