@@ -127,9 +127,15 @@ int run_deck(const RunCommandOptions& options) {
   }
   if (!result.completed) {
     log.error(fmt::format("{}: FAILED after {}", job, summary));
-    return kExitStopped;
+    // An output that could not be written is an I/O error (cli-contract.md), not a stop of the
+    // analysis.
+    return result.io_error ? kExitUsage : kExitStopped;
   }
   log.info(fmt::format("{}: COMPLETED: {}", job, summary));
+  if (log.file().failed()) {
+    std::cerr << "clinch: error: " << log.file().error() << "\n";
+    return kExitUsage;
+  }
   return kExitCompleted;
 }
 

@@ -36,7 +36,8 @@ struct RunOptions {
 
 struct RunResult {
   bool completed = false;
-  std::string reason;  // why it stopped
+  std::string reason;     // why it stopped
+  bool io_error = false;  // it stopped because an output could not be written
   int step = 0, increment = 0;
   double time = 0;
   int increments = 0, iterations = 0, cutbacks = 0;
