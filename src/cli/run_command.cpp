@@ -27,12 +27,29 @@ std::string count_of(std::size_t n, const char* what) {
   return fmt::format("{} {}{}", n, what, n == 1 ? "" : "s");
 }
 
+// A --job value must be a file name, not a path: the outputs land in the output directory and
+// nowhere else. Returns the message, or an empty string when it is one.
+std::string check_job_name(const std::string& job) {
+  if (job.empty() || job == "." || job == ".." || job.find('/') != std::string::npos) {
+    return fmt::format("--job '{}' is not a job name: a file name (not empty, '.' or '..', no "
+                       "'/') is needed",
+                       job);
+  }
+  return {};
+}
+
 }  // namespace
 
 int run_deck(const RunCommandOptions& options) {
   namespace fs = std::filesystem;
   stop_idle_blas_threads();  // until the first factorization
 
+  if (options.job) {
+    if (const std::string message = check_job_name(*options.job); !message.empty()) {
+      std::cerr << "clinch: error: " << message << "\n";
+      return kExitUsage;
+    }
+  }
   const auto start = std::chrono::steady_clock::now();
   SourceManager sources;
   DiagnosticSink sink;
@@ -42,8 +59,7 @@ int run_deck(const RunCommandOptions& options) {
     std::cerr << "clinch: error: " << io_error << "\n";
     return kExitUsage;
   }
-  const std::string job =
-      options.job.empty() ? fs::path(options.deck).stem().string() : options.job;
+  const std::string job = options.job.value_or(fs::path(options.deck).stem().string());
   std::error_code ec;
   fs::create_directories(options.out_dir, ec);
   if (ec) {
