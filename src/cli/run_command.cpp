@@ -11,6 +11,7 @@
 #include "src/assembly/analysis_plan.hpp"
 #include "src/assembly/connector_system.hpp"
 #include "src/cli/blas_threads.hpp"
+#include "src/cli/stop_signals.hpp"
 #include "src/output/history_columns.hpp"
 #include "src/solver/step_driver.hpp"
 
@@ -119,8 +120,10 @@ int run_deck(const RunCommandOptions& options) {
   };
   Progress progress = Progress::for_stderr(options.quiet);
   RunOutputs outputs{table, columns, status, log, progress};
-  const RunResult result =
-      run_analysis(model, system, solvers, outputs, RunOptions{options.check_tangent});
+  // From here a signal stops the run cleanly; before, nothing had been run, so it may just kill.
+  catch_stop_signals();
+  const RunResult result = run_analysis(model, system, solvers, outputs,
+                                        RunOptions{options.check_tangent, stop_signal_name});
   progress.finish();
   const double seconds = seconds_since(start);
   const std::string summary = fmt::format("{}, {}, {} in {:.3f} s",

@@ -87,6 +87,15 @@ class Driver {
     out_.table.write_row(step, increment, step_time, total_time, values_);
   }
 
+  // Between attempts the history holds every converged increment and nothing more, so a stop
+  // asked from outside (SIGINT, SIGTERM) is honoured here.
+  bool interrupted(int step, int increment) {
+    const char* signal = options_.stop_requested ? options_.stop_requested() : nullptr;
+    if (signal == nullptr) return false;
+    fail(fmt::format("interrupted by {}", signal), step, increment);
+    return true;
+  }
+
   // False, with the file and its error as the reason, once any output failed to be written: the
   // run stops there rather than go on with a history that has lost rows. While all is well it
   // records how far the run got, which a failed COMPLETED line reports.
@@ -175,6 +184,7 @@ class Driver {
       if (dt >= remaining * (1.0 - 1e-9)) dt = remaining;
       int cutbacks = 0;
       for (int attempt_number = 1;; ++attempt_number) {
+        if (interrupted(step_number, increment + 1)) return false;
         const double new_time = step_time + dt;
         system_.set_time(total_time_ + dt, dt);
         conditions_.apply(system_, new_time, total_time_ + dt);

@@ -32,6 +32,8 @@ struct RunOutputs {
 
 struct RunOptions {
   bool check_tangent = false;  // compare the tangent with finite differences each increment
+  // The name of a signal that asks the run to stop, or nullptr; asked before each attempt.
+  const char* (*stop_requested)() = nullptr;
 };
 
 struct RunResult {

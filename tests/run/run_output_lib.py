@@ -6,15 +6,16 @@ be cut short."""
 import os
 
 
-def write_chain_deck(path, connectors, increment, period=1.0):
+def write_chain_deck(path, connectors, increment, period=1.0, first_only=False):
     """CARTESIAN connectors from a held node to `connectors` nodes that are pulled along 1 and
     loaded along 2, with DIRECT increments of `increment`: a history of 6 columns per connector
-    and one row per increment, as many increments as wanted."""
+    (or, `first_only`, of the first connector alone) and one row per increment, as many
+    increments as wanted."""
     lines = ["*NODE", "1, 0., 0., 0."]
     lines += [f"{i + 1}, {1 + 0.1 * i}, 1., 0." for i in range(1, connectors + 1)]
     lines += ["*ELEMENT, TYPE=CONN3D2, ELSET=C"]
     lines += [f"{i}, 1, {i + 1}" for i in range(1, connectors + 1)]
-    lines += ["*NSET, NSET=MOVED"] + [str(i + 1) for i in range(1, connectors + 1)]
+    lines += ["*ELSET, ELSET=FIRST", "1", "*NSET, NSET=MOVED"] + [str(i + 1) for i in range(1, connectors + 1)]
     lines += ["*CONNECTOR SECTION, ELSET=C, BEHAVIOR=B", "CARTESIAN,",
               "*CONNECTOR BEHAVIOR, NAME=B"]
     for component in (1, 2, 3):
@@ -22,7 +23,10 @@ def write_chain_deck(path, connectors, increment, period=1.0):
     increments = round(period / increment)
     lines += ["*BOUNDARY", "1, ENCASTRE", f"*STEP, INC={2 * increments}", "*STATIC, DIRECT",
               f"{increment}, {period}", "*BOUNDARY", "MOVED, 1, 1, 0.5", "*CLOAD",
-              "MOVED, 2, 10.", "*END STEP"]
+              "MOVED, 2, 10."]
+    if first_only:
+        lines += ["*OUTPUT, HISTORY", "*ELEMENT OUTPUT, ELSET=FIRST", "CTF, CU"]
+    lines += ["*END STEP"]
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
 
