@@ -31,6 +31,7 @@ class HistoryTable {
   bool is_open() const { return file_.is_open(); }
   // The file underneath, which keeps the first write failure.
   const OutputFile& file() const { return file_; }
+  bool sync() { return file_.sync(); }
   const std::vector<std::string>& columns() const { return columns_; }
 
  private:

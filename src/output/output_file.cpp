@@ -30,6 +30,15 @@ OutputFile& OutputFile::operator=(OutputFile&& other) noexcept {
 
 OutputFile::~OutputFile() { close(); }
 
+std::string OutputFile::describe(int code) const {
+  return fmt::format("cannot write '{}': {}", path_, std::strerror(code));
+}
+
+bool OutputFile::keep_error(int code) {
+  if (error_.empty()) error_ = describe(code);
+  return false;
+}
+
 void OutputFile::close() {
   if (fd_ >= 0) ::close(fd_);
   fd_ = -1;
@@ -42,7 +51,7 @@ bool OutputFile::open(const std::filesystem::path& path, std::string* error) {
   at_line_start_ = true;
   fd_ = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
   if (fd_ < 0) {
-    *error = fmt::format("cannot write '{}': {}", path_, std::strerror(errno));
+    *error = describe(errno);
     return false;
   }
   return true;
@@ -54,14 +63,20 @@ bool OutputFile::write(std::string_view text) {
   return write_all(text);
 }
 
+bool OutputFile::sync() {
+  if (fd_ < 0) return false;
+  if (::fsync(fd_) == 0) return true;
+  // fsync fails with EINVAL on special files, which hold nothing to force.
+  if (errno == EINVAL || errno == EROFS) return true;
+  return keep_error(errno);
+}
+
 bool OutputFile::write_all(std::string_view text) {
   while (!text.empty()) {
     const ssize_t n = ::write(fd_, text.data(), text.size());
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) {
-      const int code = n < 0 ? errno : ENOSPC;  // a write of 0 bytes makes no progress
-      if (error_.empty()) error_ = fmt::format("cannot write '{}': {}", path_, std::strerror(code));
-      return false;
+      return keep_error(n < 0 ? errno : ENOSPC);  // a write of 0 bytes makes no progress
     }
     at_line_start_ = text[static_cast<std::size_t>(n) - 1] == '\n';
     text.remove_prefix(static_cast<std::size_t>(n));

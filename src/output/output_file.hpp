@@ -29,6 +29,10 @@ class OutputFile {
   // last line where space remains; it starts on a new line when a failed write left half a line.
   bool write(std::string_view text);
 
+  // Forces what was written to the disk (fsync). Some file systems report a full disk or a lost
+  // write only here (NFS, delayed allocation); such a failure is kept like a write's.
+  bool sync();
+
   bool is_open() const { return fd_ >= 0; }
   bool failed() const { return !error_.empty(); }
   // "cannot write 'PATH': REASON" of the first failure; empty while none.
@@ -36,6 +40,8 @@ class OutputFile {
 
  private:
   bool write_all(std::string_view text);
+  std::string describe(int code) const;  // "cannot write 'PATH': REASON"
+  bool keep_error(int code);             // keeps the first failure; returns false
   void close();
 
   int fd_ = -1;

@@ -37,6 +37,7 @@ class StatusFile {
   bool is_open() const { return file_.is_open(); }
   // The file underneath, which keeps the first write failure.
   const OutputFile& file() const { return file_; }
+  bool sync() { return file_.sync(); }
 
  private:
   bool write_line(std::string_view line);

@@ -66,8 +66,12 @@ class Driver {
     for (std::size_t s = 0; s < model_.history.steps.size(); ++s) {
       if (!run_step(s)) return stop();
     }
-    // Completion is claimed only when every output is whole, the COMPLETED line included.
+    // Completion is claimed only when every output is whole and the history is on the disk, the
+    // COMPLETED line included.
+    out_.table.sync();
+    if (!outputs_written(result_.step, result_.increment)) return stop();
     out_.status.write_completed();
+    out_.status.sync();
     if (!outputs_written(result_.step, result_.increment)) return stop();
     result_.completed = true;
     return result_;

@@ -6,11 +6,11 @@ be cut short."""
 import os
 
 
-def write_chain_deck(path, connectors, increment, period=1.0, first_only=False):
+def write_chain_deck(path, connectors, increment, period=1.0, first_only=False, frequency=1):
     """CARTESIAN connectors from a held node to `connectors` nodes that are pulled along 1 and
     loaded along 2, with DIRECT increments of `increment`: a history of 6 columns per connector
-    (or, `first_only`, of the first connector alone) and one row per increment, as many
-    increments as wanted."""
+    (or, `first_only`, of the first connector alone) and one row every `frequency` increments, as
+    many increments as wanted."""
     lines = ["*NODE", "1, 0., 0., 0."]
     lines += [f"{i + 1}, {1 + 0.1 * i}, 1., 0." for i in range(1, connectors + 1)]
     lines += ["*ELEMENT, TYPE=CONN3D2, ELSET=C"]
@@ -25,7 +25,8 @@ def write_chain_deck(path, connectors, increment, period=1.0, first_only=False):
               f"{increment}, {period}", "*BOUNDARY", "MOVED, 1, 1, 0.5", "*CLOAD",
               "MOVED, 2, 10."]
     if first_only:
-        lines += ["*OUTPUT, HISTORY", "*ELEMENT OUTPUT, ELSET=FIRST", "CTF, CU"]
+        lines += [f"*OUTPUT, HISTORY, FREQUENCY={frequency}", "*ELEMENT OUTPUT, ELSET=FIRST",
+                  "CTF, CU"]
     lines += ["*END STEP"]
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
@@ -87,9 +88,10 @@ def history_keys(path):
     return keys
 
 
-def status_problems(files):
+def status_problems(files, frequency=1):
     """Problems: each converged attempt in the status file whose row is not in the history (the
-    row is written before the status line, so the status file is never ahead)."""
+    row is written before the status line, so the status file is never ahead); with a FREQUENCY,
+    only the increments it writes have rows."""
     keys = history_keys(files["history.csv"])
     complete, _ = read_lines(files["sta"])
     problems = []
@@ -97,7 +99,8 @@ def status_problems(files):
         fields = line.split()
         # step inc att equil total times...: 8 fields; a cut-back attempt has a 9th, `U`.
         converged = len(fields) == 8 and fields[0].isdigit()
-        if converged and (int(fields[0]), int(fields[1])) not in keys:
+        due = converged and int(fields[1]) % frequency == 0
+        if due and (int(fields[0]), int(fields[1])) not in keys:
             problems.append(f"{files['sta']}: increment {fields[1]} is in the status file but "
                             f"not in the history")
     return problems
