@@ -91,8 +91,8 @@ class Driver {
     out_.table.write_row(step, increment, step_time, total_time, values_);
   }
 
-  // Between attempts the history holds every converged increment and nothing more, so a stop
-  // asked from outside (SIGINT, SIGTERM) is honoured here.
+  // Between attempts, or when Newton stopped an attempt for it, the history holds every converged
+  // increment and nothing more, so a stop asked from outside (SIGINT, SIGTERM) is honoured here.
   bool interrupted(int step, int increment) {
     const char* signal = options_.stop_requested ? options_.stop_requested() : nullptr;
     if (signal == nullptr) return false;
@@ -127,7 +127,8 @@ class Driver {
   NewtonReport attempt(int step, int increment, int attempt_number, int& iterations,
                        int& changes) {
     const TimeIncrementationControls& t = controls_->time;
-    const NewtonOptions options{t.ic, t.i0, accept_unconverged_, controls_->line_search};
+    const NewtonOptions options{t.ic, t.i0, accept_unconverged_, controls_->line_search,
+                                options_.stop_requested};
     iterations = 0;
     changes = 0;
     for (;;) {
@@ -201,6 +202,10 @@ class Driver {
         const NewtonReport report = attempt(step_number, increment + 1, attempt_number,
                                             iterations, changes);
         result_.iterations += iterations;
+        if (report.outcome == NewtonOutcome::Interrupted &&
+            interrupted(step_number, increment + 1)) {
+          return false;
+        }
         const bool converged = report.converged();
         // A converged attempt is still abandoned when a law asks for a smaller increment.
         const StepRequest request = problem_.step_request();

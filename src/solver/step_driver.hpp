@@ -32,7 +32,8 @@ struct RunOutputs {
 
 struct RunOptions {
   bool check_tangent = false;  // compare the tangent with finite differences each increment
-  // The name of a signal that asks the run to stop, or nullptr; asked before each attempt.
+  // The name of a signal that asks the run to stop, or nullptr; asked before each attempt and
+  // each factorization.
   const char* (*stop_requested)() = nullptr;
 };
 
