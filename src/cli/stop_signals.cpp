@@ -24,9 +24,12 @@ void catch_stop_signals() {
 
 const char* stop_signal_name() {
   switch (received) {
-    case SIGINT: return "SIGINT";
-    case SIGTERM: return "SIGTERM";
-    default: return nullptr;
+    case SIGINT:
+      return "SIGINT";
+    case SIGTERM:
+      return "SIGTERM";
+    default:
+      return nullptr;
   }
 }
 

@@ -33,8 +33,8 @@ bool StatusFile::write_attempt(const IncrementAttempt& a) {
 bool StatusFile::write_completed() { return write_line("COMPLETED"); }
 
 bool StatusFile::write_failed(std::string_view reason, int step, int increment, double total_time) {
-  return write_line(fmt::format("FAILED: {} (step {}, increment {}, time {})", reason, step, increment,
-                         total_time));
+  return write_line(fmt::format("FAILED: {} (step {}, increment {}, time {})", reason, step,
+                                increment, total_time));
 }
 
 bool StatusFile::write_line(std::string_view line) {

@@ -1,8 +1,9 @@
 """A disk that fills during a run (cli-contract.md: exit 3 = I/O error): `clinch run` writes into a
 64 kB tmpfs, in a mount namespace of its own so that nothing is left mounted, decks whose
-outputs outgrow it: one whose history fills it, one whose log does. The run must exit with 3, say on stderr which file could not be written at
-which step and increment, never claim completion, and leave a history whose complete rows are
-the converged increments of the same run on a normal disk.
+outputs outgrow it: one whose history fills it, one whose log does. The run must exit with 3,
+say on stderr which file could not be written at which step and increment, never claim
+completion, and leave a history whose complete rows are the converged increments of the same
+run on a normal disk, with the status file not ahead of it.
 
 usage: full_disk.py CLINCH WORKDIR; exits with 77 (CTest SKIP_RETURN_CODE) when no size-limited
 filesystem can be mounted here."""

@@ -15,7 +15,8 @@ def write_chain_deck(path, connectors, increment, period=1.0, first_only=False, 
     lines += [f"{i + 1}, {1 + 0.1 * i}, 1., 0." for i in range(1, connectors + 1)]
     lines += ["*ELEMENT, TYPE=CONN3D2, ELSET=C"]
     lines += [f"{i}, 1, {i + 1}" for i in range(1, connectors + 1)]
-    lines += ["*ELSET, ELSET=FIRST", "1", "*NSET, NSET=MOVED"] + [str(i + 1) for i in range(1, connectors + 1)]
+    lines += ["*ELSET, ELSET=FIRST", "1", "*NSET, NSET=MOVED"]
+    lines += [str(i + 1) for i in range(1, connectors + 1)]
     lines += ["*CONNECTOR SECTION, ELSET=C, BEHAVIOR=B", "CARTESIAN,",
               "*CONNECTOR BEHAVIOR, NAME=B"]
     for component in (1, 2, 3):
