@@ -19,12 +19,14 @@ int main(int argc, char** argv) {
   std::string solver = "auto";
   CLI::App* run = app.add_subcommand(
       "run", "Run every step of a deck; writes <job>.history.csv, <job>.sta and <job>.log; exit "
-             "0 = completed, 1 = deck errors (nothing run), 2 = stopped early, 3 = usage or I/O "
-             "error");
+             "0 = completed, 1 = deck errors (nothing run), 2 = stopped early (also by SIGINT or "
+             "SIGTERM, which keep every converged increment), 3 = usage or I/O error (an output "
+             "that cannot be written stops the run)");
   run->add_option("DECK", run_options.deck, "the deck (.inp)")->required();
   run->add_option("--out", run_options.out_dir, "output directory (created if missing)")
       ->capture_default_str();
-  run->add_option("--job", run_options.job, "job name (default: the deck's name without .inp)");
+  run->add_option("--job", run_options.job,
+                  "job name, a file name without '/' (default: the deck's name without .inp)");
   run->add_flag("--quiet", run_options.quiet, "print nothing but warnings and errors");
   run->add_flag("--check-tangent", run_options.check_tangent,
                 "compare the assembled tangent with finite differences of the residual at the "

@@ -11,6 +11,7 @@
 #include "src/assembly/analysis_plan.hpp"
 #include "src/assembly/connector_system.hpp"
 #include "src/cli/blas_threads.hpp"
+#include "src/cli/stop_signals.hpp"
 #include "src/output/history_columns.hpp"
 #include "src/solver/step_driver.hpp"
 
@@ -27,12 +28,29 @@ std::string count_of(std::size_t n, const char* what) {
   return fmt::format("{} {}{}", n, what, n == 1 ? "" : "s");
 }
 
+// A --job value must be a file name, not a path: the outputs land in the output directory and
+// nowhere else. Returns the message, or an empty string when it is one.
+std::string check_job_name(const std::string& job) {
+  if (job.empty() || job == "." || job == ".." || job.find('/') != std::string::npos) {
+    return fmt::format("--job '{}' is not a job name: a file name (not empty, '.' or '..', no "
+                       "'/') is needed",
+                       job);
+  }
+  return {};
+}
+
 }  // namespace
 
 int run_deck(const RunCommandOptions& options) {
   namespace fs = std::filesystem;
   stop_idle_blas_threads();  // until the first factorization
 
+  if (options.job) {
+    if (const std::string message = check_job_name(*options.job); !message.empty()) {
+      std::cerr << "clinch: error: " << message << "\n";
+      return kExitUsage;
+    }
+  }
   const auto start = std::chrono::steady_clock::now();
   SourceManager sources;
   DiagnosticSink sink;
@@ -42,8 +60,7 @@ int run_deck(const RunCommandOptions& options) {
     std::cerr << "clinch: error: " << io_error << "\n";
     return kExitUsage;
   }
-  const std::string job =
-      options.job.empty() ? fs::path(options.deck).stem().string() : options.job;
+  const std::string job = options.job.value_or(fs::path(options.deck).stem().string());
   std::error_code ec;
   fs::create_directories(options.out_dir, ec);
   if (ec) {
@@ -103,8 +120,10 @@ int run_deck(const RunCommandOptions& options) {
   };
   Progress progress = Progress::for_stderr(options.quiet);
   RunOutputs outputs{table, columns, status, log, progress};
-  const RunResult result =
-      run_analysis(model, system, solvers, outputs, RunOptions{options.check_tangent});
+  // From here a signal stops the run cleanly; before, nothing had been run, so it may just kill.
+  catch_stop_signals();
+  const RunResult result = run_analysis(model, system, solvers, outputs,
+                                        RunOptions{options.check_tangent, stop_signal_name});
   progress.finish();
   const double seconds = seconds_since(start);
   const std::string summary = fmt::format("{}, {}, {} in {:.3f} s",
@@ -127,9 +146,15 @@ int run_deck(const RunCommandOptions& options) {
   }
   if (!result.completed) {
     log.error(fmt::format("{}: FAILED after {}", job, summary));
-    return kExitStopped;
+    // An output that could not be written is an I/O error (cli-contract.md), not a stop of the
+    // analysis.
+    return result.io_error ? kExitUsage : kExitStopped;
   }
   log.info(fmt::format("{}: COMPLETED: {}", job, summary));
+  if (log.file().failed()) {
+    std::cerr << "clinch: error: " << log.file().error() << "\n";
+    return kExitUsage;
+  }
   return kExitCompleted;
 }
 

@@ -3,6 +3,7 @@
 // Exit 0 completed, 1 deck errors (nothing run), 2 stopped early, 3 usage or I/O error.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "src/linalg/linear_solver.hpp"
@@ -12,7 +13,7 @@ namespace clinch {
 struct RunCommandOptions {
   std::string deck;
   std::string out_dir = ".";
-  std::string job;  // empty: the deck's file name without .inp
+  std::optional<std::string> job;  // unset: the deck's file name without .inp
   bool quiet = false;
   bool check_tangent = false;
   SolverChoice solver = SolverChoice::Automatic;

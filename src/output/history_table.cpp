@@ -1,7 +1,5 @@
 #include "src/output/history_table.hpp"
 
-#include <cerrno>
-#include <cstring>
 #include <iterator>
 #include <stdexcept>
 
@@ -11,11 +9,7 @@ namespace clinch {
 
 bool HistoryTable::open(const std::filesystem::path& path, std::vector<std::string> columns,
                         std::string* error) {
-  out_.open(path, std::ios::out | std::ios::trunc | std::ios::binary);
-  if (!out_) {
-    *error = fmt::format("cannot write '{}': {}", path.string(), std::strerror(errno));
-    return false;
-  }
+  if (!file_.open(path, error)) return false;
   columns_ = std::move(columns);
   line_.clear();
   for (const char* key : kKeyColumns) {
@@ -27,9 +21,8 @@ bool HistoryTable::open(const std::filesystem::path& path, std::vector<std::stri
     line_ += column;
   }
   line_ += '\n';
-  out_ << line_ << std::flush;
-  if (!out_) {
-    *error = fmt::format("cannot write '{}': {}", path.string(), std::strerror(errno));
+  if (!file_.write(line_)) {
+    *error = file_.error();
     return false;
   }
   return true;
@@ -48,8 +41,7 @@ bool HistoryTable::write_row(int step, int increment, double step_time, double t
   fmt::format_to(out, "{},{},{},{}", step, increment, step_time, total_time);
   for (double v : values) fmt::format_to(out, ",{}", v);
   line_ += '\n';
-  out_ << line_ << std::flush;
-  return static_cast<bool>(out_);
+  return file_.write(line_);
 }
 
 }  // namespace clinch

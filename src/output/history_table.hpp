@@ -4,10 +4,11 @@
 #pragma once
 
 #include <filesystem>
-#include <fstream>
 #include <span>
 #include <string>
 #include <vector>
+
+#include "src/output/output_file.hpp"
 
 namespace clinch {
 
@@ -22,15 +23,19 @@ class HistoryTable {
             std::string* error);
 
   // Appends one row; `values` holds one value per column given to open(). Numbers are written in
-  // shortest round-trip form. Returns false if the stream failed (disk full, ...).
+  // shortest round-trip form. Returns false if it could not be written whole (disk full, ...):
+  // file().error() says why.
   bool write_row(int step, int increment, double step_time, double total_time,
                  std::span<const double> values);
 
-  bool is_open() const { return out_.is_open(); }
+  bool is_open() const { return file_.is_open(); }
+  // The file underneath, which keeps the first write failure.
+  const OutputFile& file() const { return file_; }
+  bool sync() { return file_.sync(); }
   const std::vector<std::string>& columns() const { return columns_; }
 
  private:
-  std::ofstream out_;
+  OutputFile file_;
   std::vector<std::string> columns_;
   std::string line_;  // reused row buffer
 };

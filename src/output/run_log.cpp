@@ -1,7 +1,5 @@
 #include "src/output/run_log.hpp"
 
-#include <cerrno>
-#include <cstring>
 #include <ostream>
 
 #include <fmt/format.h>
@@ -9,12 +7,7 @@
 namespace clinch {
 
 bool RunLog::open(const std::filesystem::path& path, std::string* error) {
-  out_.open(path, std::ios::out | std::ios::trunc | std::ios::binary);
-  if (!out_) {
-    *error = fmt::format("cannot write '{}': {}", path.string(), std::strerror(errno));
-    return false;
-  }
-  return true;
+  return file_.open(path, error);
 }
 
 void RunLog::info(std::string_view text) { emit(text, info_echo_); }
@@ -39,10 +32,10 @@ void RunLog::iteration(const IterationRecord& r) {
 
 void RunLog::emit(std::string_view text, std::ostream* echo) {
   const bool needs_newline = text.empty() || text.back() != '\n';
-  if (out_.is_open()) {
-    out_ << text;
-    if (needs_newline) out_ << '\n';
-    out_.flush();
+  if (file_.is_open()) {
+    line_.assign(text);
+    if (needs_newline) line_ += '\n';
+    file_.write(line_);
   }
   if (echo != nullptr) {
     *echo << text;

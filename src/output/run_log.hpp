@@ -4,10 +4,11 @@
 #pragma once
 
 #include <filesystem>
-#include <fstream>
 #include <iosfwd>
 #include <string>
 #include <string_view>
+
+#include "src/output/output_file.hpp"
 
 namespace clinch {
 
@@ -37,7 +38,8 @@ class RunLog {
   bool open(const std::filesystem::path& path, std::string* error);
 
   // `text` is printed and logged verbatim (it may span lines, e.g. a rendered diagnostic with its
-  // source excerpt); a final newline is added when missing.
+  // source excerpt); a final newline is added when missing. A message that cannot be logged is
+  // still printed; file() tells the step driver.
   void info(std::string_view text);
   void warning(std::string_view text);
   void error(std::string_view text);
@@ -45,12 +47,15 @@ class RunLog {
   // Logged only: iteration lines would drown the terminal.
   void iteration(const IterationRecord& record);
 
-  bool is_open() const { return out_.is_open(); }
+  bool is_open() const { return file_.is_open(); }
+  // The file underneath, which keeps the first write failure.
+  const OutputFile& file() const { return file_; }
 
  private:
   void emit(std::string_view text, std::ostream* echo);
 
-  std::ofstream out_;
+  OutputFile file_;
+  std::string line_;  // reused line buffer
   std::ostream* info_echo_;
   std::ostream* warning_echo_;
 };

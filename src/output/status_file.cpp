@@ -1,8 +1,5 @@
 #include "src/output/status_file.hpp"
 
-#include <cerrno>
-#include <cstring>
-
 #include <fmt/format.h>
 
 namespace clinch {
@@ -18,31 +15,32 @@ constexpr std::string_view kLineFormat =
 }  // namespace
 
 bool StatusFile::open(const std::filesystem::path& path, std::string* error) {
-  out_.open(path, std::ios::out | std::ios::trunc | std::ios::binary);
-  if (out_) {
-    write_line(fmt::format(kHeaderFormat, "step", "inc", "att", "cut", "equil", "total",
-                           "total time", "step time", "time inc"));
-  }
-  if (!out_) {
-    *error = fmt::format("cannot write '{}': {}", path.string(), std::strerror(errno));
+  if (!file_.open(path, error)) return false;
+  if (!write_line(fmt::format(kHeaderFormat, "step", "inc", "att", "cut", "equil", "total",
+                              "total time", "step time", "time inc"))) {
+    *error = file_.error();
     return false;
   }
   return true;
 }
 
-void StatusFile::write_attempt(const IncrementAttempt& a) {
-  write_line(fmt::format(kLineFormat, a.step, a.increment, a.attempt, a.cut_back ? "U" : "",
+bool StatusFile::write_attempt(const IncrementAttempt& a) {
+  return write_line(fmt::format(kLineFormat, a.step, a.increment, a.attempt, a.cut_back ? "U" : "",
                          a.equilibrium_iterations, a.total_iterations, a.total_time, a.step_time,
                          a.time_increment));
 }
 
-void StatusFile::write_completed() { write_line("COMPLETED"); }
+bool StatusFile::write_completed() { return write_line("COMPLETED"); }
 
-void StatusFile::write_failed(std::string_view reason, int step, int increment, double total_time) {
-  write_line(fmt::format("FAILED: {} (step {}, increment {}, time {})", reason, step, increment,
-                         total_time));
+bool StatusFile::write_failed(std::string_view reason, int step, int increment, double total_time) {
+  return write_line(fmt::format("FAILED: {} (step {}, increment {}, time {})", reason, step,
+                                increment, total_time));
 }
 
-void StatusFile::write_line(std::string_view line) { out_ << line << '\n' << std::flush; }
+bool StatusFile::write_line(std::string_view line) {
+  line_.assign(line);
+  line_ += '\n';
+  return file_.write(line_);
+}
 
 }  // namespace clinch

@@ -3,9 +3,10 @@
 #pragma once
 
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <string_view>
+
+#include "src/output/output_file.hpp"
 
 namespace clinch {
 
@@ -27,17 +28,22 @@ class StatusFile {
   // Creates (truncates) `path` and writes the header. On failure returns false and sets `error`.
   bool open(const std::filesystem::path& path, std::string* error);
 
-  void write_attempt(const IncrementAttempt& attempt);
-  void write_completed();
+  // Each returns false when the line could not be written whole; file().error() says why.
+  bool write_attempt(const IncrementAttempt& attempt);
+  bool write_completed();
   // `FAILED: <reason> (step S, increment I, time T)`.
-  void write_failed(std::string_view reason, int step, int increment, double total_time);
+  bool write_failed(std::string_view reason, int step, int increment, double total_time);
 
-  bool is_open() const { return out_.is_open(); }
+  bool is_open() const { return file_.is_open(); }
+  // The file underneath, which keeps the first write failure.
+  const OutputFile& file() const { return file_; }
+  bool sync() { return file_.sync(); }
 
  private:
-  void write_line(std::string_view line);
+  bool write_line(std::string_view line);
 
-  std::ofstream out_;
+  OutputFile file_;
+  std::string line_;  // reused line buffer
 };
 
 }  // namespace clinch

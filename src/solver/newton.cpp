@@ -49,6 +49,13 @@ NewtonReport solve_increment(NonlinearProblem& problem, LinearSolver& solver,
                            : "the residual diverges";
       return report;
     }
+    // A factorization of a large model can take long: a stop asked from outside is honoured
+    // before it rather than after the whole increment.
+    if (options.stop_requested != nullptr && options.stop_requested() != nullptr) {
+      report.outcome = NewtonOutcome::Interrupted;
+      report.message = "interrupted";
+      return report;
+    }
     std::string message;
     const auto start = std::chrono::steady_clock::now();
     LinearStatus linear = solver.factorize(tangent, &message);

@@ -18,9 +18,18 @@ struct NewtonOptions {
   int divergence_check_from = 4;   // I₀: two consecutive residual increases from here on diverge
   bool accept_unconverged = false; // DIRECT=NO STOP: return the last iterate as converged
   LineSearchControls line_search;  // *CONTROLS, PARAMETERS=LINE SEARCH (off by default)
+  // Asked before each factorization: non-null (a signal's name) stops the increment, Interrupted.
+  const char* (*stop_requested)() = nullptr;
 };
 
-enum class NewtonOutcome { Converged, Diverged, TooManyIterations, EvaluationFailed, SolverFailed };
+enum class NewtonOutcome {
+  Converged,
+  Diverged,
+  TooManyIterations,
+  EvaluationFailed,
+  SolverFailed,
+  Interrupted,  // stop_requested asked to stop; the increment is unfinished
+};
 
 struct NewtonReport {
   NewtonOutcome outcome = NewtonOutcome::TooManyIterations;

@@ -62,24 +62,57 @@ class Driver {
       return result_;
     }
     write_row(1, 0, 0.0, 0.0, false);
+    if (!outputs_written(1, 0)) return stop();
     for (std::size_t s = 0; s < model_.history.steps.size(); ++s) {
-      if (!run_step(s)) {
-        out_.status.write_failed(result_.reason, result_.step, result_.increment, result_.time);
-        out_.log.error(fmt::format("analysis stopped: {} (step {}, increment {}, time {})",
-                                   result_.reason, result_.step, result_.increment, result_.time));
-        return result_;
-      }
+      if (!run_step(s)) return stop();
     }
+    // Completion is claimed only when every output is whole and the history is on the disk, the
+    // COMPLETED line included.
+    out_.table.sync();
+    if (!outputs_written(result_.step, result_.increment)) return stop();
     out_.status.write_completed();
+    out_.status.sync();
+    if (!outputs_written(result_.step, result_.increment)) return stop();
     result_.completed = true;
     return result_;
   }
 
  private:
+  RunResult stop() {
+    out_.status.write_failed(result_.reason, result_.step, result_.increment, result_.time);
+    out_.log.error(fmt::format("analysis stopped: {} (step {}, increment {}, time {})",
+                               result_.reason, result_.step, result_.increment, result_.time));
+    return result_;
+  }
+
   void write_row(int step, int increment, double step_time, double total_time, bool last) {
     if (!out_.columns.due(increment, last)) return;
     out_.columns.evaluate(system_, increment, last, values_);
     out_.table.write_row(step, increment, step_time, total_time, values_);
+  }
+
+  // Between attempts, or when Newton stopped an attempt for it, the history holds every converged
+  // increment and nothing more, so a stop asked from outside (SIGINT, SIGTERM) is honoured here.
+  bool interrupted(int step, int increment) {
+    const char* signal = options_.stop_requested ? options_.stop_requested() : nullptr;
+    if (signal == nullptr) return false;
+    fail(fmt::format("interrupted by {}", signal), step, increment);
+    return true;
+  }
+
+  // False, with the file and its error as the reason, once any output failed to be written: the
+  // run stops there rather than go on with a history that has lost rows. While all is well it
+  // records how far the run got, which a failed COMPLETED line reports.
+  bool outputs_written(int step, int increment) {
+    for (const OutputFile* file : {&out_.table.file(), &out_.status.file(), &out_.log.file()}) {
+      if (file->failed()) {
+        result_.io_error = true;
+        return fail(file->error(), step, increment);
+      }
+    }
+    result_.step = step;
+    result_.increment = increment;
+    return true;
   }
 
   bool fail(std::string reason, int step, int increment) {
@@ -93,7 +126,8 @@ class Driver {
   // One attempt: Newton, then the stop active set (behaviors.md §5.1), re-solved until it settles.
   NewtonReport attempt(int step, int increment, int attempt_number, int& iterations, int& changes) {
     const TimeIncrementationControls& t = controls_->time;
-    const NewtonOptions options{t.ic, t.i0, accept_unconverged_, controls_->line_search};
+    const NewtonOptions options{t.ic, t.i0, accept_unconverged_, controls_->line_search,
+                                options_.stop_requested};
     iterations = 0;
     changes = 0;
     for (;;) {
@@ -154,6 +188,7 @@ class Driver {
       if (dt >= remaining * (1.0 - 1e-9)) dt = remaining;
       int cutbacks = 0;
       for (int attempt_number = 1;; ++attempt_number) {
+        if (interrupted(step_number, increment + 1)) return false;
         const double new_time = step_time + dt;
         system_.set_time(total_time_ + dt, dt);
         conditions_.apply(system_, new_time, total_time_ + dt);
@@ -166,13 +201,19 @@ class Driver {
         const NewtonReport report =
             attempt(step_number, increment + 1, attempt_number, iterations, changes);
         result_.iterations += iterations;
+        if (report.outcome == NewtonOutcome::Interrupted &&
+            interrupted(step_number, increment + 1)) {
+          return false;
+        }
         const bool converged = report.converged();
         // A converged attempt is still abandoned when a law asks for a smaller increment.
         const StepRequest request = problem_.step_request();
         const bool smaller = converged && request.dt_ratio < 1.0;
-        out_.status.write_attempt({step_number, increment + 1, attempt_number,
-                                   !converged || smaller, iterations, iterations + changes,
-                                   total_time_ + dt, new_time, dt});
+        const IncrementAttempt status_line{step_number, increment + 1, attempt_number,
+                                           !converged || smaller, iterations, iterations + changes,
+                                           total_time_ + dt, new_time, dt};
+        if (!converged || smaller) out_.status.write_attempt(status_line);
+        if (!outputs_written(step_number, increment + 1)) return false;
         if (converged && !smaller) {
           problem_.commit();
           criteria_.accept_increment(report.iterations.back());
@@ -183,6 +224,11 @@ class Driver {
           previous_dt = dt;
           const bool last = step_time >= period * (1.0 - 1e-12);
           write_row(step_number, increment, step_time, total_time_, last);
+          // The row is on disk before the status line of its increment: a killed run's status
+          // file is never ahead of its history.
+          if (!outputs_written(step_number, increment)) return false;
+          out_.status.write_attempt(status_line);
+          if (!outputs_written(step_number, increment)) return false;
           // A lock engages at the converged state; its row shows the unlocked state
           // (behaviors.md §5.2, example E5).
           problem_.end_increment();

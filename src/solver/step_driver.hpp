@@ -32,11 +32,15 @@ struct RunOutputs {
 
 struct RunOptions {
   bool check_tangent = false;  // compare the tangent with finite differences each increment
+  // The name of a signal that asks the run to stop, or nullptr; asked before each attempt and
+  // each factorization.
+  const char* (*stop_requested)() = nullptr;
 };
 
 struct RunResult {
   bool completed = false;
-  std::string reason;  // why it stopped
+  std::string reason;     // why it stopped
+  bool io_error = false;  // it stopped because an output could not be written
   int step = 0, increment = 0;
   double time = 0;
   int increments = 0, iterations = 0, cutbacks = 0;

@@ -204,6 +204,33 @@ TEST_F(OutputWriters, RunLogWithoutEchoStillLogs) {
   EXPECT_EQ(slurp(dir_ / "job.log"), "quiet\n");
 }
 
+// A full disk (/dev/full fails every write with ENOSPC): each writer reports it with the file's
+// name, and the log still prints what it could not log.
+TEST_F(OutputWriters, WritersReportAFullDisk) {
+  if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+  std::string error;
+  HistoryTable table;
+  EXPECT_FALSE(table.open("/dev/full", {"A@1"}, &error));
+  EXPECT_EQ(error, "cannot write '/dev/full': No space left on device");
+  EXPECT_FALSE(table.write_row(1, 0, 0.0, 0.0, std::vector<double>{1.0}));
+  EXPECT_EQ(table.file().error(), error);
+
+  error.clear();
+  StatusFile sta;
+  EXPECT_FALSE(sta.open("/dev/full", &error));
+  EXPECT_EQ(error, "cannot write '/dev/full': No space left on device");
+  EXPECT_FALSE(sta.write_completed());
+
+  std::ostringstream err;
+  RunLog log(nullptr, &err);
+  ASSERT_TRUE(log.open("/dev/full", &error)) << error;
+  EXPECT_FALSE(log.file().failed());
+  log.error("no convergence");
+  EXPECT_EQ(err.str(), "no convergence\n");
+  EXPECT_TRUE(log.file().failed());
+  EXPECT_EQ(log.file().error(), "cannot write '/dev/full': No space left on device");
+}
+
 TEST_F(OutputWriters, ProgressRewritesOneLine) {
   std::ostringstream err;
   {

@@ -10,6 +10,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <fmt/format.h>
+
 #include "parser/deck_reader.hpp"
 #include "src/assembly/connector_system.hpp"
 #include "src/output/history_columns.hpp"
@@ -38,7 +40,8 @@ struct DriverRun {
   std::string status_file;
 };
 
-DriverRun run_with_law(const std::string& deck_text, const Behavior& law, const std::string& job) {
+DriverRun run_with_law(const std::string& deck_text, const Behavior& law, const std::string& job,
+                       const RunOptions& options = {}) {
   CheckedDeck deck;
   read_deck_text("deck.inp", deck_text, deck.sources, deck.model, deck.sink);
   EXPECT_FALSE(deck.sink.has_errors()) << deck.dump();
@@ -63,7 +66,7 @@ DriverRun run_with_law(const std::string& deck_text, const Behavior& law, const 
   const SolverFactory solvers = [](bool symmetric) {
     return make_linear_solver(SolverChoice::Automatic, symmetric, true);
   };
-  run.result = run_analysis(deck.model, system, solvers, outputs, RunOptions{});
+  run.result = run_analysis(deck.model, system, solvers, outputs, options);
   table = HistoryTable{};
   status = StatusFile{};
   std::ifstream csv(dir / (job + ".csv"));
@@ -132,6 +135,33 @@ TEST(StepDriver, ALawCanHoldTheIncrementFromGrowing) {
     EXPECT_EQ(held.result.increments, 10) << (unreliable ? "Unreliable" : "ratio 1");
     EXPECT_EQ(held.result.cutbacks, 0);
     EXPECT_DOUBLE_EQ(held.u1.back(), 0.1);
+  }
+}
+
+// A stop asked from outside (src/cli/stop_signals.hpp), answered the n-th time the driver asks,
+// n = 1..8: before an attempt or before a factorization inside Newton alike, the run stops there,
+// says so in the status file, and the history holds every increment before it.
+int stop_questions = 0;
+constexpr int kStopFromCall = 4;
+const char* stop_when_asked_enough() {
+  return ++stop_questions >= kStopFromCall ? "SIGTERM" : nullptr;
+}
+
+TEST(StepDriver, AStopAskedFromOutsideEndsTheRunWithEveryConvergedIncrement) {
+  const IncrementLimitedSpring law(1000.0, 1.0);
+  for (int from = 1; from <= 2 * kStopFromCall; ++from) {
+    stop_questions = kStopFromCall - from;
+    const DriverRun run = run_with_law(axial_deck("*STATIC, DIRECT\n0.1, 1."), law, "stopped",
+                                       RunOptions{false, stop_when_asked_enough});
+    EXPECT_FALSE(run.result.completed);
+    EXPECT_FALSE(run.result.io_error);
+    EXPECT_EQ(run.result.reason, "interrupted by SIGTERM");
+    // Rows 0 .. increment - 1: the interrupted increment has none.
+    EXPECT_EQ(run.u1.size(), static_cast<std::size_t>(run.result.increment)) << from;
+    EXPECT_TRUE(run.status_file.ends_with(
+        fmt::format("FAILED: interrupted by SIGTERM (step 1, increment {}, time {})\n",
+                    run.result.increment, run.result.time)))
+        << run.status_file;
   }
 }
 

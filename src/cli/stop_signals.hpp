@@ -1,0 +1,15 @@
+// SIGINT and SIGTERM during `clinch run`: instead of dying mid-write, the run stops cleanly before
+// the next factorization or increment attempt, so that the history keeps every converged increment
+// and the status file says the run was interrupted (exit 2, cli-contract.md). A second signal of
+// the same kind kills at once, for a run that does not get there.
+#pragma once
+
+namespace clinch {
+
+// Installs the handlers for SIGINT and SIGTERM.
+void catch_stop_signals();
+
+// The name of the signal that asked the run to stop ("SIGINT" or "SIGTERM"), or nullptr.
+const char* stop_signal_name();
+
+}  // namespace clinch
