@@ -1,5 +1,7 @@
 #include "src/assembly/connector_system.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -11,6 +13,14 @@ namespace clinch {
 namespace {
 
 constexpr DofMask kRotationDofs = 0b111000;
+
+// std::max(a, NaN) is a: the norms keep a NaN, so that the log shows it instead of a zero.
+double max_keeping_nan(double a, double b) { return std::isnan(b) ? b : std::max(a, b); }
+
+// The element's local residual, and its tangent when one was asked for, are finite.
+bool local_finite(const LocalSystem& local, int n, bool want_tangent) {
+  return local.r.head(n).allFinite() && (!want_tangent || local.k.topLeftCorner(n, n).allFinite());
+}
 
 }  // namespace
 
@@ -142,6 +152,10 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
   for (std::size_t c = 0; c < plan_.connectors.size(); ++c) {
     const EvalStatus status = elements_.evaluate(c, context_, state_, want_tangent, local);
     if (!status.ok) return status;
+    if (!connector_finite(c, local, want_tangent)) {
+      return {false, fmt::format("connector element {}: a force, stiffness or output is not finite",
+                                 elements_.label(c))};
+    }
     const ConnectorRecord& r = plan_.connectors[c];
     for (int j = 0; j < r.multiplier_count; ++j) {
       multiplier_active_[static_cast<std::size_t>(
@@ -153,19 +167,47 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
   for (std::size_t s = 0; s < plan_.springs.size(); ++s) {
     const SpringRecord& spring = plan_.springs[s];
     evaluate_spring(plan_, spring, state_.x, context_.nlgeom, want_tangent, local, springs_[s]);
+    if (!local_finite(local, spring.local.count, want_tangent) ||
+        !std::isfinite(springs_[s].force) || !std::isfinite(springs_[s].delta)) {
+      const Element& e = model_.elements[static_cast<std::size_t>(spring.element)];
+      return {false, fmt::format("spring element {}: a force, stiffness or output is not finite",
+                                 qualified_label(model_, e.instance, e.label))};
+    }
     scatter(spring.local, pattern_->spring_offset[s], local, false, tangent);
   }
   residual = internal_ - conditions_.external();
   if (predicting_ && tangent) residual += predictor_;
   for (int eq : conditions_.prescribed()) {
-    // Newton's row of a prescribed DOF is Δu = target − u.
-    residual[eq] = state_.x[eq] - conditions_.target(eq);
+    // Newton's row of a prescribed DOF is Δu = target − u. A reaction that overflows takes the
+    // row's place, so that Newton stops on it rather than report it (principle 7).
+    residual[eq] = std::isfinite(internal_[eq]) ? state_.x[eq] - conditions_.target(eq)
+                                                : internal_[eq];
     if (tangent) {
       tangent->values[static_cast<std::size_t>(pattern_->diagonal[static_cast<std::size_t>(eq)])] =
           1.0;
     }
   }
   return {};
+}
+
+// An overflow in a law or in the kinematics fails the evaluation, which the step driver treats as
+// a failed attempt; the element's forces, stiffness, outputs and trial history are checked, so
+// that none of them reaches a converged row (ARCHITECTURE.md principle 7).
+bool ConnectorSystem::connector_finite(std::size_t c, const LocalSystem& local,
+                                       bool want_tangent) const {
+  const ConnectorRecord& r = plan_.connectors[c];
+  if (!local_finite(local, r.local.count, want_tangent)) return false;
+  const ConnectorResult& out = state_.results[c];
+  for (const Vector6* v : {&out.position, &out.change, &out.constitutive, &out.elastic,
+                           &out.multiplier, &out.applied, &out.total}) {
+    if (!v->allFinite()) return false;
+  }
+  for (const LawSlot& slot : r.laws) {
+    const auto first = state_.history.begin() + static_cast<std::ptrdiff_t>(slot.history);
+    const auto last = first + static_cast<std::ptrdiff_t>(slot.law->history_size());
+    if (!std::all_of(first, last, [](double v) { return std::isfinite(v); })) return false;
+  }
+  return true;
 }
 
 void ConnectorSystem::scatter(const LocalEquations& l, std::size_t offset,
@@ -266,12 +308,13 @@ void ConnectorSystem::measure(const Eigen::VectorXd& residual, const Eigen::Vect
       ++flux_count[f];
     }
     if (conditions_.is_prescribed(eq)) continue;
-    norms.largest_residual[f] = std::max(norms.largest_residual[f], std::abs(residual[eq]));
+    norms.largest_residual[f] = max_keeping_nan(norms.largest_residual[f], std::abs(residual[eq]));
     residual_sq += residual[eq] * residual[eq];
-    norms.largest_increment[f] = std::max(norms.largest_increment[f], std::abs(state_.x[eq] - state_.x_n[eq]));
+    norms.largest_increment[f] =
+        max_keeping_nan(norms.largest_increment[f], std::abs(state_.x[eq] - state_.x_n[eq]));
     if (correction) {
       const double dx = (*correction)[eq];
-      norms.largest_correction[f] = std::max(norms.largest_correction[f], std::abs(dx));
+      norms.largest_correction[f] = max_keeping_nan(norms.largest_correction[f], std::abs(dx));
       correction_sq += dx * dx;
     }
   }
