@@ -221,8 +221,6 @@ class Driver {
         if (singular || (!smaller && report.outcome == NewtonOutcome::NonFinite)) {
           reason = describe_failure(model_, plan_, report);
         }
-        // A singular system does not get better with a smaller increment.
-        if (singular) return fail(reason, step_number, increment + 1);
         // A tangent may be singular at one state and not at another (past the last point of a
         // table with CONSTANT extrapolation): smaller increments are tried as for any failed
         // attempt (principle 7). When none helps, the singular DOF is the reason that stands.
