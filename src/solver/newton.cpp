@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -20,14 +21,17 @@ bool diverging(const std::vector<IterationNorms>& history, int check_from) {
 
 // A NaN passes every "r > tolerance" test and an overflow can pass "r ≤ ε·q̄" against an infinite
 // flux, so a value that is not finite ends the attempt before the convergence tests see it
-// (ARCHITECTURE.md principle 7). Returns false and fills `report` for the first such entry.
+// (ARCHITECTURE.md principle 7). Returns false and fills `report` for the entry to blame: the
+// first overflow, else the first NaN (often 0·∞ in the substitutions, far from the overflow).
 bool finite(const Eigen::VectorXd& values, const char* what, NewtonReport& report) {
   if (values.allFinite()) return true;
-  Eigen::Index equation = 0;
-  while (std::isfinite(values[equation])) ++equation;
+  const double* begin = values.data();
+  const double* end = begin + values.size();
+  const double* at = std::find_if(begin, end, [](double v) { return std::isinf(v); });
+  if (at == end) at = std::find_if(begin, end, [](double v) { return std::isnan(v); });
   report.outcome = NewtonOutcome::NonFinite;
-  report.failed_equation = static_cast<int>(equation);
-  report.message = fmt::format("the {} is {}", what, values[equation]);
+  report.failed_equation = static_cast<int>(at - begin);
+  report.message = fmt::format("the {} is {}", what, *at);
   return false;
 }
 
