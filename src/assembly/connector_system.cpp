@@ -18,6 +18,13 @@ constexpr DofMask kRotationDofs = 0b111000;
 // std::max(a, NaN) is a: the norms keep a NaN, so that the log shows it instead of a zero.
 double max_keeping_nan(double a, double b) { return std::isnan(b) ? b : std::max(a, b); }
 
+// v·0 is 0 for a finite v and NaN for an infinite or NaN one: one sum tests every value at once,
+// cheaply enough for the hot path, and without the overflow a sum of the values could make.
+template <typename Vector>
+double zero_unless_non_finite(const Vector& v) {
+  return (v.array() * 0.0).sum();
+}
+
 }  // namespace
 
 double ConnectorOutput::history_value(std::string_view output, int component) const {
@@ -163,8 +170,8 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
   for (std::size_t s = 0; s < plan_.springs.size(); ++s) {
     const SpringRecord& spring = plan_.springs[s];
     evaluate_spring(plan_, spring, state_.x, context_.nlgeom, want_tangent, local, springs_[s]);
-    if (!std::isfinite(local.r.head(spring.local.count).sum() + springs_[s].force +
-                       springs_[s].delta)) {
+    if (zero_unless_non_finite(local.r.head(spring.local.count)) +
+            springs_[s].force * 0.0 + springs_[s].delta * 0.0 != 0.0) {
       const Element& e = model_.elements[static_cast<std::size_t>(spring.element)];
       return {false, fmt::format("spring element {}: a force or output is not finite",
                                  qualified_label(model_, e.instance, e.label))};
@@ -188,22 +195,22 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
 
 // An overflow in a law or in the kinematics fails the evaluation, which the step driver treats as
 // a failed attempt; the element's forces, outputs and trial history are checked, so that none of
-// them reaches a converged row (ARCHITECTURE.md principle 7). One sum carries any NaN or infinity
-// of its terms at a fraction of the cost of testing each on the hot path (a sum that overflows
-// from finite terms of 1e308 is called an overflow too). The stiffness is left to Newton: a
+// them reaches a converged row (ARCHITECTURE.md principle 7). The stiffness is left to Newton: a
 // non-finite one makes the correction non-finite, which Newton reports at its DOF.
 bool ConnectorSystem::connector_finite(std::size_t c, const LocalSystem& local) const {
   const ConnectorRecord& r = plan_.connectors[c];
   const ConnectorResult& out = state_.results[c];
-  double sum = local.r.head(r.local.count).sum() + out.position.sum() + out.change.sum() +
-               out.constitutive.sum() + out.elastic.sum() + out.multiplier.sum() +
-               out.applied.sum() + out.total.sum();
+  double sum = zero_unless_non_finite(local.r.head(r.local.count));
+  for (const Vector6* v : {&out.position, &out.change, &out.constitutive, &out.elastic,
+                           &out.multiplier, &out.applied, &out.total}) {
+    sum += zero_unless_non_finite(*v);
+  }
   for (const LawSlot& slot : r.laws) {
     const auto first = state_.history.begin() + static_cast<std::ptrdiff_t>(slot.history);
     sum = std::accumulate(first, first + static_cast<std::ptrdiff_t>(slot.law->history_size()),
-                          sum);
+                          sum, [](double s, double v) { return s + v * 0.0; });
   }
-  return std::isfinite(sum);
+  return sum == 0.0;
 }
 
 void ConnectorSystem::scatter(const LocalEquations& l, std::size_t offset,
