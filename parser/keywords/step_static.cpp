@@ -207,12 +207,14 @@ class StaticHandler : public KeywordHandler {
     for (std::size_t i = 0; i < 4 && i < fields.size(); ++i) {
       auto value = ctx.real(fields[i], kWhat[i]);
       if (!value) continue;
-      if (*value < 0) {
+      // A step of no time has nothing to increment: a zero period is an error at its field, not
+      // the default (§15: T > 0).
+      if (*value < 0 || (i == 1 && *value == 0)) {
         ctx.report(DiagCode::value_out_of_range, fields[i],
                    fmt::format("{} must be positive, got {}", kWhat[i], fields[i].text));
         continue;
       }
-      // Zero takes the default, like a blank field (§15).
+      // Any other zero takes the default, like a blank field (§15).
       if (*value == 0) continue;
       values_[i] = *value;
       procedure_.field_loc[i] = fields[i].loc;

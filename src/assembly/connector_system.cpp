@@ -1,8 +1,11 @@
 #include "src/assembly/connector_system.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <numeric>
 
 #include "src/assembly/active_set_updates.hpp"
 #include "src/kinematics/rotation_math.hpp"
@@ -11,6 +14,16 @@ namespace clinch {
 namespace {
 
 constexpr DofMask kRotationDofs = 0b111000;
+
+// std::max(a, NaN) is a: the norms keep a NaN, so that the log shows it instead of a zero.
+double max_keeping_nan(double a, double b) { return std::isnan(b) ? b : std::max(a, b); }
+
+// v·0 is 0 for a finite v and NaN for an infinite or NaN one: one sum tests every value at once,
+// cheaply enough for the hot path, and without the overflow a sum of the values could make.
+template <typename Vector>
+double zero_unless_non_finite(const Vector& v) {
+  return (v.array() * 0.0).sum();
+}
 
 }  // namespace
 
@@ -142,6 +155,10 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
   for (std::size_t c = 0; c < plan_.connectors.size(); ++c) {
     const EvalStatus status = elements_.evaluate(c, context_, state_, want_tangent, local);
     if (!status.ok) return status;
+    if (!connector_finite(c, local)) {
+      return {false, fmt::format("connector element {}: a force or output is not finite",
+                                 elements_.label(c))};
+    }
     const ConnectorRecord& r = plan_.connectors[c];
     for (int j = 0; j < r.multiplier_count; ++j) {
       multiplier_active_[static_cast<std::size_t>(
@@ -153,13 +170,21 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
   for (std::size_t s = 0; s < plan_.springs.size(); ++s) {
     const SpringRecord& spring = plan_.springs[s];
     evaluate_spring(plan_, spring, state_.x, context_.nlgeom, want_tangent, local, springs_[s]);
+    if (zero_unless_non_finite(local.r.head(spring.local.count)) +
+            springs_[s].force * 0.0 + springs_[s].delta * 0.0 != 0.0) {
+      const Element& e = model_.elements[static_cast<std::size_t>(spring.element)];
+      return {false, fmt::format("spring element {}: a force or output is not finite",
+                                 qualified_label(model_, e.instance, e.label))};
+    }
     scatter(spring.local, pattern_->spring_offset[s], local, false, tangent);
   }
   residual = internal_ - conditions_.external();
   if (predicting_ && tangent) residual += predictor_;
   for (int eq : conditions_.prescribed()) {
-    // Newton's row of a prescribed DOF is Δu = target − u.
-    residual[eq] = state_.x[eq] - conditions_.target(eq);
+    // Newton's row of a prescribed DOF is Δu = target − u. A reaction that overflows takes the
+    // row's place, so that Newton stops on it rather than report it (principle 7).
+    residual[eq] = std::isfinite(internal_[eq]) ? state_.x[eq] - conditions_.target(eq)
+                                                : internal_[eq];
     if (tangent) {
       tangent->values[static_cast<std::size_t>(pattern_->diagonal[static_cast<std::size_t>(eq)])] =
           1.0;
@@ -168,8 +193,28 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
   return {};
 }
 
-void ConnectorSystem::scatter(const LocalEquations& l, std::size_t offset, const LocalSystem& local,
-                              bool symmetrize, SparseMatrix* tangent) {
+// An overflow in a law or in the kinematics fails the evaluation, which the step driver treats as
+// a failed attempt; the element's forces, outputs and trial history are checked, so that none of
+// them reaches a converged row (ARCHITECTURE.md principle 7). The stiffness is left to Newton: a
+// non-finite one makes the correction non-finite, which Newton reports at its DOF.
+bool ConnectorSystem::connector_finite(std::size_t c, const LocalSystem& local) const {
+  const ConnectorRecord& r = plan_.connectors[c];
+  const ConnectorResult& out = state_.results[c];
+  double sum = zero_unless_non_finite(local.r.head(r.local.count));
+  for (const Vector6* v : {&out.position, &out.change, &out.constitutive, &out.elastic,
+                           &out.multiplier, &out.applied, &out.total}) {
+    sum += zero_unless_non_finite(*v);
+  }
+  for (const LawSlot& slot : r.laws) {
+    const auto first = state_.history.begin() + static_cast<std::ptrdiff_t>(slot.history);
+    sum = std::accumulate(first, first + static_cast<std::ptrdiff_t>(slot.law->history_size()),
+                          sum, [](double s, double v) { return s + v * 0.0; });
+  }
+  return sum == 0.0;
+}
+
+void ConnectorSystem::scatter(const LocalEquations& l, std::size_t offset,
+                              const LocalSystem& local, bool symmetrize, SparseMatrix* tangent) {
   for (int a = 0; a < l.count; ++a) {
     internal_[l.equation[static_cast<std::size_t>(a)]] += local.r[a];
   }
@@ -267,13 +312,13 @@ void ConnectorSystem::measure(const Eigen::VectorXd& residual, const Eigen::Vect
       ++flux_count[f];
     }
     if (conditions_.is_prescribed(eq)) continue;
-    norms.largest_residual[f] = std::max(norms.largest_residual[f], std::abs(residual[eq]));
+    norms.largest_residual[f] = max_keeping_nan(norms.largest_residual[f], std::abs(residual[eq]));
     residual_sq += residual[eq] * residual[eq];
     norms.largest_increment[f] =
-        std::max(norms.largest_increment[f], std::abs(state_.x[eq] - state_.x_n[eq]));
+        max_keeping_nan(norms.largest_increment[f], std::abs(state_.x[eq] - state_.x_n[eq]));
     if (correction) {
       const double dx = (*correction)[eq];
-      norms.largest_correction[f] = std::max(norms.largest_correction[f], std::abs(dx));
+      norms.largest_correction[f] = max_keeping_nan(norms.largest_correction[f], std::abs(dx));
       correction_sq += dx * dx;
     }
   }

@@ -85,6 +85,7 @@ class ConnectorSystem final : public NonlinearProblem {
  private:
   void scatter(const LocalEquations& l, std::size_t offset, const LocalSystem& local,
                bool symmetrize, SparseMatrix* tangent);
+  bool connector_finite(std::size_t c, const LocalSystem& local) const;
   bool is_finite_rotation(int equation) const;
   void snap_to_target(int equation, double before);
   void update_prescribed_predictor();

@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 
 namespace clinch {
 namespace {
@@ -15,6 +17,22 @@ bool diverging(const std::vector<IterationNorms>& history, int check_from) {
     return std::max(history[i].largest_residual[0], history[i].largest_residual[1]);
   };
   return r(n - 1) > r(n - 2) && r(n - 2) > r(n - 3);
+}
+
+// A NaN passes every "r > tolerance" test and an overflow can pass "r ≤ ε·q̄" against an infinite
+// flux, so a value that is not finite ends the attempt before the convergence tests see it
+// (ARCHITECTURE.md principle 7). Returns false and fills `report` for the entry to blame: the
+// first overflow, else the first NaN (often 0·∞ in the substitutions, far from the overflow).
+bool finite(const Eigen::VectorXd& values, const char* what, NewtonReport& report) {
+  if (values.allFinite()) return true;
+  const double* begin = values.data();
+  const double* end = begin + values.size();
+  const double* at = std::find_if(begin, end, [](double v) { return std::isinf(v); });
+  if (at == end) at = std::find_if(begin, end, [](double v) { return std::isnan(v); });
+  report.outcome = NewtonOutcome::NonFinite;
+  report.failed_equation = static_cast<int>(at - begin);
+  report.message = fmt::format("the {} is {}", what, *at);
+  return false;
 }
 
 }  // namespace
@@ -32,6 +50,7 @@ NewtonReport solve_increment(NonlinearProblem& problem, LinearSolver& solver,
       report.message = status.message;
       return report;
     }
+    if (!finite(residual, "residual", report)) return report;
     IterationNorms& norms = report.iterations.emplace_back();
     problem.measure(residual, last_correction, norms);
     const bool predictor = problem.moving_prescribed();
@@ -65,10 +84,11 @@ NewtonReport solve_increment(NonlinearProblem& problem, LinearSolver& solver,
     ++report.factorizations;
     if (linear != LinearStatus::Ok) {
       report.outcome = NewtonOutcome::SolverFailed;
-      report.failed_pivot = solver.failed_pivot();
+      report.failed_equation = solver.failed_pivot();
       report.message = message;
       return report;
     }
+    if (!finite(correction, "correction", report)) return report;
     problem.apply_correction(correction);
     if (options.line_search.max_iterations > 0 && !predictor) {
       const EvalStatus searched = search_line(problem, correction, residual, options.line_search);

@@ -29,13 +29,14 @@ enum class NewtonOutcome {
   EvaluationFailed,
   SolverFailed,
   Interrupted,  // stop_requested asked to stop; the increment is unfinished
+  NonFinite,  // a residual or correction entry is NaN or infinite
 };
 
 struct NewtonReport {
   NewtonOutcome outcome = NewtonOutcome::TooManyIterations;
   std::vector<IterationNorms> iterations;  // one record per evaluated state
   std::string message;                     // why it failed
-  int failed_pivot = -1;                   // SolverFailed: equation of the zero pivot
+  int failed_equation = -1;  // SolverFailed: the zero pivot; NonFinite: the first such entry
   double linear_seconds = 0;               // wall time in factorize + solve
   int factorizations = 0;
   bool converged() const { return outcome == NewtonOutcome::Converged; }

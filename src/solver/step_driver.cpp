@@ -15,27 +15,41 @@ namespace {
 
 constexpr const char* kDofNames[] = {"", "u1", "u2", "u3", "ur1", "ur2", "ur3"};
 
-// The name of the equation behind a zero pivot (connection-types.md §1.1, §3.8).
-std::string describe_equation(const Model& model, const AnalysisPlan& plan, int equation) {
-  if (equation < 0 || equation >= plan.dofs.equations()) return "the system is singular";
+// The DOF or the multiplier behind an equation (connection-types.md §1.1, §3.8); empty when the
+// equation is not one of the plan's.
+std::string name_equation(const Model& model, const AnalysisPlan& plan, int equation) {
+  if (equation < 0 || equation >= plan.dofs.equations()) return {};
   const std::int32_t node = plan.dofs.node_of(equation);
   if (node >= 0) {
     const Node& n = model.nodes[static_cast<std::size_t>(node)];
-    return fmt::format(
-        "singular system: DOF {} of node {} has no stiffness (add a *BOUNDARY or "
-        "an element that restrains it)",
-        kDofNames[plan.dofs.dof_of(equation)], qualified_label(model, n.instance, n.label));
+    return fmt::format("DOF {} of node {}", kDofNames[plan.dofs.dof_of(equation)],
+                       qualified_label(model, n.instance, n.label));
   }
   for (const ConnectorRecord& r : plan.connectors) {
     for (int j = 0; j < r.multiplier_count; ++j) {
       if (r.local.equation[static_cast<std::size_t>(r.column_count + j)] != equation) continue;
       const Element& e = model.elements[static_cast<std::size_t>(r.element)];
-      return fmt::format("overconstrained connector {} component {}",
-                         qualified_label(model, e.instance, e.label),
+      return fmt::format("connector {} component {}", qualified_label(model, e.instance, e.label),
                          r.multiplier_components[static_cast<std::size_t>(j)]);
     }
   }
-  return "the system is singular";
+  return {};
+}
+
+// Why an attempt failed at an equation: a zero pivot, or a value that is not finite.
+std::string describe_failure(const Model& model, const AnalysisPlan& plan,
+                             const NewtonReport& report) {
+  const std::string name = name_equation(model, plan, report.failed_equation);
+  if (report.outcome == NewtonOutcome::NonFinite) {
+    return name.empty() ? report.message : fmt::format("{} at {}", report.message, name);
+  }
+  if (name.empty()) return "the system is singular";
+  if (plan.dofs.node_of(report.failed_equation) >= 0) {
+    return fmt::format("singular system: {} has no stiffness (add a *BOUNDARY or an element that "
+                       "restrains it)",
+                       name);
+  }
+  return "overconstrained " + name;
 }
 
 class Driver {
@@ -250,32 +264,34 @@ class Driver {
         }
         problem_.revert();
         std::string reason = smaller ? request.message : report.message;
-        if (!smaller && report.outcome == NewtonOutcome::SolverFailed) {
-          reason = describe_equation(model_, plan_, report.failed_pivot);
-          // A singular system does not get better with a smaller increment.
-          return fail(reason, step_number, increment + 1);
+        const bool singular = !smaller && report.outcome == NewtonOutcome::SolverFailed;
+        if (singular || (!smaller && report.outcome == NewtonOutcome::NonFinite)) {
+          reason = describe_failure(model_, plan_, report);
         }
+        // A tangent may be singular at one state and not at another (past the last point of a
+        // table with CONSTANT extrapolation): smaller increments are tried as for any failed
+        // attempt (principle 7). When none helps, the singular DOF is the reason that stands.
+        const auto give_up = [&](std::string why) {
+          return fail(singular ? reason : std::move(why), step_number, increment + 1);
+        };
         if (!smaller && report.outcome == NewtonOutcome::EvaluationFailed && procedure.direct) {
           return fail(reason, step_number, increment + 1);
         }
         if (procedure.direct) {
-          return fail(smaller ? fmt::format("a law asks for a smaller increment than DIRECT "
-                                            "allows ({})",
-                                            reason)
-                              : fmt::format("no convergence with fixed increments ({})", reason),
-                      step_number, increment + 1);
+          return give_up(
+              smaller ? fmt::format("a law asks for a smaller increment than DIRECT allows ({})",
+                                    reason)
+                      : fmt::format("no convergence with fixed increments ({})", reason));
         }
         ++result_.cutbacks;
         if (++cutbacks > t.ia) {
-          return fail(fmt::format("too many cutbacks ({}; last: {})", t.ia, reason), step_number,
-                      increment + 1);
+          return give_up(fmt::format("too many cutbacks ({}; last: {})", t.ia, reason));
         }
         dt *= smaller ? request.dt_ratio : report.outcome == NewtonOutcome::Diverged ? t.df : t.dc;
         easy_in_a_row = 0;
         if (dt < procedure.min_increment * (1.0 - 1e-12)) {
-          return fail(fmt::format("time increment {} below the minimum {} ({})", dt,
-                                  procedure.min_increment, reason),
-                      step_number, increment + 1);
+          return give_up(fmt::format("time increment {} below the minimum {} ({})", dt,
+                                     procedure.min_increment, reason));
         }
         out_.log.warning(fmt::format("step {} increment {}: {}; cutting back to {}", step_number,
                                      increment + 1, reason, dt));

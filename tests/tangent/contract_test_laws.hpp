@@ -1,9 +1,11 @@
 // Laws that exist only to exercise the behaviour contract (src/behavior/behavior.hpp) through the
 // connector element and the step driver: one whose force depends on a constraint force of its
-// connector (as friction's contact force does), one that asks for smaller time increments.
+// connector (as friction's contact force does), one that asks for smaller time increments, one
+// whose force overflows.
 #pragma once
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "src/behavior/behavior.hpp"
@@ -88,6 +90,22 @@ class GrowthHoldingSpring final : public ComponentOneSpring {
 
  private:
   bool unreliable_;
+};
+
+// A linear spring k on component 1 whose force is infinite beyond |u₁| = `limit`, as a law
+// that overflows would return it (reported as a Success, which the assembly must not trust).
+class OverflowingSpring final : public ComponentOneSpring {
+ public:
+  OverflowingSpring(double k, double limit) : ComponentOneSpring(k), limit_(limit) {}
+  IntegrationStatus integrate(const BehaviorInput& in, BehaviorOutput& out) const override {
+    if (std::abs(spring(in, out)) > limit_) {
+      out.force[0] = std::numeric_limits<double>::infinity();
+    }
+    return IntegrationStatus::Success;
+  }
+
+ private:
+  double limit_;
 };
 
 }  // namespace clinch

@@ -165,5 +165,23 @@ TEST(StepDriver, AStopAskedFromOutsideEndsTheRunWithEveryConvergedIncrement) {
   }
 }
 
+// A force that overflows beyond U1 = 0.05 fails the attempt (ARCHITECTURE.md principle 7): the
+// driver cuts back until it can cut back no further, then stops naming the element; every row of
+// the history holds a finite U1 no further than the limit.
+TEST(StepDriver, ANonFiniteForceCutsBackAndNeverReachesTheHistory) {
+  const OverflowingSpring law(1000.0, 0.05);
+  const DriverRun run = run_with_law(axial_deck("*STATIC\n1., 1., 1e-3"), law, "overflow");
+  EXPECT_FALSE(run.result.completed);
+  EXPECT_GE(run.result.cutbacks, 1);
+  EXPECT_NE(run.result.reason.find("connector element 1: a force or output is not finite"),
+            std::string::npos)
+      << run.result.reason;
+  ASSERT_GE(run.u1.size(), 2u);  // the initial row and at least one converged increment
+  for (double u : run.u1) {
+    EXPECT_TRUE(std::isfinite(u));
+    EXPECT_LE(u, 0.05);
+  }
+}
+
 }  // namespace
 }  // namespace clinch
