@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   compare->add_option("--columns", compare_arguments.columns,
                       "compare only the golden columns whose whole name matches this "
-                      "ECMAScript regular expression (default: all)");
+                      "regular expression (RE2 syntax; default: all)");
 
   try {
     app.parse(argc, argv);
