@@ -21,10 +21,12 @@ int main(int argc, char** argv) {
       "run", "Run every step of a deck; writes <job>.history.csv, <job>.sta and <job>.log; exit "
              "0 = completed, 1 = deck errors (nothing run), 2 = stopped early, 3 = usage or I/O "
              "error");
-  run->add_option("DECK", run_options.deck, "the deck (.inp)")->required();
+  run->add_option("DECK", run_options.deck, "the deck (.inp), or - for standard input")
+      ->required();
   run->add_option("--out", run_options.out_dir, "output directory (created if missing)")
       ->capture_default_str();
-  run->add_option("--job", run_options.job, "job name (default: the deck's name without .inp)");
+  run->add_option("--job", run_options.job,
+                  "job name (default: the deck's name without .inp; stdin for -)");
   run->add_flag("--quiet", run_options.quiet, "print nothing but warnings and errors");
   run->add_flag("--check-tangent", run_options.check_tangent,
                 "compare the assembled tangent with finite differences of the residual at the "
@@ -40,7 +42,7 @@ int main(int argc, char** argv) {
   CLI::App* check = app.add_subcommand(
       "check", "Parse and validate a deck (syntax, parameters, references, connector rules, "
                "steps) without solving; exit 0 = no errors, 1 = errors, 3 = usage or I/O error");
-  check->add_option("DECK", deck, "the deck (.inp)")->required();
+  check->add_option("DECK", deck, "the deck (.inp), or - for standard input")->required();
   check->add_option("--format", format, "diagnostic format: text (stderr) or json (stdout)")
       ->check(CLI::IsMember({"text", "json"}));
 

@@ -42,8 +42,12 @@ int run_deck(const RunCommandOptions& options) {
     std::cerr << "clinch: error: " << io_error << "\n";
     return kExitUsage;
   }
-  const std::string job =
-      options.job.empty() ? fs::path(options.deck).stem().string() : options.job;
+  // The deck is the first file registered: its name as diagnostics show it ("<stdin>" for -).
+  const std::string& deck_name = sources.file(0).display_name;
+  // Standard input has no file name to take the job name from.
+  const std::string job = !options.job.empty()  ? options.job
+                          : options.deck == "-" ? "stdin"
+                                                : fs::path(options.deck).stem().string();
   std::error_code ec;
   fs::create_directories(options.out_dir, ec);
   if (ec) {
@@ -66,7 +70,7 @@ int run_deck(const RunCommandOptions& options) {
   }
   sources.release_texts();  // the lines a warning showed are not held through the analysis
   if (sink.has_errors()) {
-    log.error(fmt::format("{}: {}, {}; nothing was run", options.deck,
+    log.error(fmt::format("{}: {}, {}; nothing was run", deck_name,
                           count_of(sink.error_count(), "error"),
                           count_of(sink.warning_count(), "warning")));
     return kExitDeckErrors;
@@ -75,13 +79,13 @@ int run_deck(const RunCommandOptions& options) {
   const auto plan_start = std::chrono::steady_clock::now();
   std::optional<AnalysisPlan> plan = build_analysis_plan(model, &error);
   if (!plan) {
-    log.error(fmt::format("{}: error: {}", options.deck, error));
+    log.error(fmt::format("{}: error: {}", deck_name, error));
     return kExitDeckErrors;
   }
   const int node_equations = plan->dofs.node_equations();
   log.info(fmt::format("{}: {} nodes, {} connectors, {} springs; {} active DOFs ({:.3g} per node), "
                        "{} multipliers",
-                       options.deck, model.nodes.size(), plan->connectors.size(),
+                       deck_name, model.nodes.size(), plan->connectors.size(),
                        plan->springs.size(), node_equations,
                        model.nodes.empty() ? 0.0 : double(node_equations) / model.nodes.size(),
                        plan->dofs.equations() - node_equations));
