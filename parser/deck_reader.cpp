@@ -874,9 +874,9 @@ class Reader {
 ReadStatus read_deck_file(const std::string& path, SourceManager& sources, Model& model,
                           DiagnosticSink& sink, std::string* io_error) {
   std::string error;
-  auto idx = sources.load(path, {}, &error);
+  auto idx = sources.load_deck(path, &error);
   if (!idx) {
-    if (io_error) *io_error = fmt::format("cannot open '{}': {}", path, error);
+    if (io_error) *io_error = fmt::format("cannot read '{}': {}", path, error);
     return ReadStatus::IoError;
   }
   Reader(sources, model, sink).run(*idx);

@@ -14,8 +14,9 @@ namespace clinch {
 
 enum class ReadStatus { Ok, IoError };
 
-// Reads a deck file into `model`. IoError means the deck itself could not be opened (exit 3);
-// every other problem is a diagnostic in `sink`. Runs whole-model validation too.
+// Reads a deck file into `model` (a path, or "-" for standard input: SourceManager::load_deck).
+// IoError means the deck itself could not be opened or read (exit 3); every other problem is a
+// diagnostic in `sink`. Runs whole-model validation too.
 ReadStatus read_deck_file(const std::string& path, SourceManager& sources, Model& model,
                           DiagnosticSink& sink, std::string* io_error);
 // The same for in-memory text (tests, fuzzers). `display_name` is used in diagnostics and to

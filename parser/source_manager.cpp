@@ -7,6 +7,11 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <limits>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace clinch {
 
@@ -41,7 +46,73 @@ bool read_file_of_size(const std::string& path, std::size_t size, std::unique_pt
   return whole;
 }
 
+// Line starts are 32-bit offsets: the largest deck that can be held in memory.
+constexpr std::size_t kMaxInMemoryBytes = std::numeric_limits<std::uint32_t>::max();
+
+// A deck path that is not simply a file on disk: the reader must take its bytes once, as they
+// come, rather than open it again for each pass and for each line a diagnostic shows.
+bool is_stream_path(const std::string& path) {
+  if (path == "-" || path.starts_with("/dev/") || path.starts_with("/proc/")) return true;
+  struct stat status {};
+  if (::stat(path.c_str(), &status) != 0 || S_ISDIR(status.st_mode)) {
+    return false;  // load() gives the reason
+  }
+  return !S_ISREG(status.st_mode) || status.st_size == 0;
+}
+
 }  // namespace
+
+std::optional<std::uint32_t> SourceManager::load_deck(const std::string& path, std::string* error) {
+  if (!is_stream_path(path)) return load(path, {}, error);
+  if (path == "-") return load_stream(STDIN_FILENO, "<stdin>", error);
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) {
+    *error = std::strerror(errno);
+    return std::nullopt;
+  }
+  std::optional<std::uint32_t> index = load_stream(fd, path, error);
+  ::close(fd);
+  return index;
+}
+
+std::optional<std::uint32_t> SourceManager::load_stream(int fd, std::string display_name,
+                                                        std::string* error) {
+  struct stat status {};
+  if (::fstat(fd, &status) != 0) {
+    *error = std::strerror(errno);
+    return std::nullopt;
+  }
+  if (S_ISDIR(status.st_mode)) {
+    *error = "Is a directory";
+    return std::nullopt;
+  }
+  // A device other than a terminal may never end (/dev/zero, /dev/urandom).
+  if (!S_ISREG(status.st_mode) && !S_ISFIFO(status.st_mode) && !S_ISSOCK(status.st_mode) &&
+      !::isatty(fd)) {
+    *error = "not a regular file, pipe or terminal";
+    return std::nullopt;
+  }
+  std::string text;
+  char chunk[64 * 1024];
+  while (true) {
+    const ssize_t got = ::read(fd, chunk, sizeof chunk);
+    if (got == 0) break;
+    if (got < 0) {
+      if (errno == EINTR) continue;
+      *error = std::strerror(errno);
+      return std::nullopt;
+    }
+    if (text.size() + static_cast<std::size_t>(got) > kMaxInMemoryBytes) {
+      *error = fmt::format("more than {} bytes", kMaxInMemoryBytes);
+      return std::nullopt;
+    }
+    text.append(chunk, static_cast<std::size_t>(got));
+  }
+  // No path: relative includes resolve against the current directory (directory_of).
+  const std::uint32_t index = add_buffer(std::move(display_name), std::move(text));
+  files_[index].path.clear();
+  return index;
+}
 
 std::optional<std::uint32_t> SourceManager::load(const std::string& path, SourceLoc included_from,
                                                  std::string* error) {

@@ -44,6 +44,14 @@ class SourceManager {
   // contents are not read. On failure returns nullopt and sets *error to the system's reason.
   std::optional<std::uint32_t> load(const std::string& path, SourceLoc included_from,
                                     std::string* error);
+  // Registers the deck named on the command line. A regular file with a size is registered like
+  // any other file (load). Anything else cannot be read twice, as the reader and its diagnostics
+  // do, and is read whole into memory now: "-" (standard input, shown as "<stdin>"), a pipe, a
+  // socket, a terminal, any path under /dev/ or /proc/ (/dev/stdin, /proc/self/fd/N) and a
+  // pseudo-file whose size stat does not tell. Such a deck resolves relative *INCLUDE and INPUT=
+  // paths against the current directory. Other devices (/dev/zero never ends) are refused. On
+  // failure, open or read, returns nullopt and sets *error to the system's reason.
+  std::optional<std::uint32_t> load_deck(const std::string& path, std::string* error);
   // Adds in-memory text (tests, fuzzers).
   std::uint32_t add_buffer(std::string display_name, std::string text,
                            SourceLoc included_from = {});
@@ -74,6 +82,8 @@ class SourceManager {
  private:
   std::uint32_t add(std::string path, std::string display_name, std::unique_ptr<char[]> bytes,
                     std::size_t size, SourceLoc included_from);
+  // Reads `fd` to its end into an in-memory file shown as `display_name` (load_deck).
+  std::optional<std::uint32_t> load_stream(int fd, std::string display_name, std::string* error);
   void index_lines(SourceFile& file) const;
   // Reads a released file back (text() and line_text()).
   void restore(SourceFile& file) const;

@@ -22,11 +22,13 @@ int main(int argc, char** argv) {
              "0 = completed, 1 = deck errors (nothing run), 2 = stopped early (also by SIGINT or "
              "SIGTERM, which keep every converged increment), 3 = usage or I/O error (an output "
              "that cannot be written stops the run)");
-  run->add_option("DECK", run_options.deck, "the deck (.inp)")->required();
+  run->add_option("DECK", run_options.deck, "the deck (.inp), or - for standard input")
+      ->required();
   run->add_option("--out", run_options.out_dir, "output directory (created if missing)")
       ->capture_default_str();
   run->add_option("--job", run_options.job,
-                  "job name, a file name without '/' (default: the deck's name without .inp)");
+                  "job name, a file name without '/' (default: the deck's name without .inp; "
+                  "stdin for -)");
   run->add_flag("--quiet", run_options.quiet, "print nothing but warnings and errors");
   run->add_flag("--check-tangent", run_options.check_tangent,
                 "compare the assembled tangent with finite differences of the residual at the "
@@ -42,7 +44,7 @@ int main(int argc, char** argv) {
   CLI::App* check = app.add_subcommand(
       "check", "Parse and validate a deck (syntax, parameters, references, connector rules, "
                "steps) without solving; exit 0 = no errors, 1 = errors, 3 = usage or I/O error");
-  check->add_option("DECK", deck, "the deck (.inp)")->required();
+  check->add_option("DECK", deck, "the deck (.inp), or - for standard input")->required();
   check->add_option("--format", format, "diagnostic format: text (stderr) or json (stdout)")
       ->check(CLI::IsMember({"text", "json"}));
 
@@ -67,7 +69,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   compare->add_option("--columns", compare_arguments.columns,
                       "compare only the golden columns whose whole name matches this "
-                      "ECMAScript regular expression (default: all)");
+                      "regular expression (RE2 syntax; default: all)");
 
   try {
     app.parse(argc, argv);

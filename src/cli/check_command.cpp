@@ -37,9 +37,10 @@ int run_check(const std::string& deck_path, DiagnosticFormat format) {
       std::cerr << fmt::format("clinch: note: {} more diagnostics were not shown\n",
                                sink.dropped_count());
     }
-    std::cerr << fmt::format("{}: {} error{}, {} warning{}\n", deck_path, sink.error_count(),
-                             sink.error_count() == 1 ? "" : "s", sink.warning_count(),
-                             sink.warning_count() == 1 ? "" : "s");
+    // The deck is the first file registered: its name as diagnostics show it ("<stdin>" for -).
+    std::cerr << fmt::format("{}: {} error{}, {} warning{}\n", sources.file(0).display_name,
+                             sink.error_count(), sink.error_count() == 1 ? "" : "s",
+                             sink.warning_count(), sink.warning_count() == 1 ? "" : "s");
   }
   return sink.has_errors() ? 1 : 0;
 }

@@ -3,7 +3,6 @@
 #include <charconv>
 #include <cmath>
 #include <iostream>
-#include <regex>
 
 #include <fmt/format.h>
 
@@ -26,17 +25,16 @@ int run_compare(const CompareArguments& arguments) {
   CompareOptions options;
   options.rtol = arguments.rtol;
   options.atol = arguments.atol;
+  std::string error;
   if (arguments.columns) {
-    try {
-      options.columns.emplace(*arguments.columns, std::regex::ECMAScript);
-    } catch (const std::regex_error& e) {
+    options.columns = compile_column_pattern(*arguments.columns, &error);
+    if (!options.columns) {
       std::cerr << fmt::format(
           "clinch: error: --columns '{}' is not a valid regular expression: {}\n",
-          *arguments.columns, e.what());
+          *arguments.columns, error);
       return 3;
     }
   }
-  std::string error;
   const std::optional<CsvTable> result = read_csv_table(arguments.result_path, &error);
   if (!result) {
     std::cerr << fmt::format("clinch: error: {}\n", error);

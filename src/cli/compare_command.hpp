@@ -15,7 +15,7 @@ struct CompareArguments {
   std::string golden_path;
   double rtol = kDefaultRtol;
   double atol = kDefaultAtol;
-  std::optional<std::string> columns;  // ECMAScript regex, matched against the whole column name
+  std::optional<std::string> columns;  // RE2 pattern, matched against the whole column name
 };
 
 // Checks a --rtol/--atol value: a finite number >= 0. Returns an empty string when it is one, else

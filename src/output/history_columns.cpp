@@ -44,11 +44,13 @@ HistoryColumns::HistoryColumns(const Model& model, const AnalysisPlan& plan)
 }
 
 std::size_t HistoryColumns::column(const std::string& name, Column c) {
-  const auto it = std::find(names_.begin(), names_.end(), name);
-  if (it != names_.end()) return static_cast<std::size_t>(it - names_.begin());
+  if (const auto it = column_of_name_.find(std::string_view(name)); it != column_of_name_.end()) {
+    return *it;
+  }
   names_.push_back(name);
   columns_.push_back(std::move(c));
-  return columns_.size() - 1;
+  column_of_name_.insert(names_.size() - 1);
+  return names_.size() - 1;
 }
 
 void HistoryColumns::expand_steps() {

@@ -7,8 +7,10 @@
 
 #include <array>
 #include <map>
-#include <unordered_map>
 #include <string>
+#include <string_view>
+#include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -21,6 +23,9 @@ namespace clinch {
 class HistoryColumns {
  public:
   HistoryColumns(const Model& model, const AnalysisPlan& plan);
+  // Not copyable or movable: the name index points at names_.
+  HistoryColumns(const HistoryColumns&) = delete;
+  HistoryColumns& operator=(const HistoryColumns&) = delete;
 
   const std::vector<std::string>& names() const { return names_; }
   // Makes the requests of step `step` (0-based) current.
@@ -47,6 +52,27 @@ class HistoryColumns {
     int frequency = 1;
     std::vector<std::size_t> columns;
   };
+  // Hash and equality of column indices by their names in names_, and of a name with an index:
+  // the set of columns can be searched by name without holding a second copy of every name.
+  struct NameHash {
+    using is_transparent = void;
+    const std::vector<std::string>* names;
+    std::size_t operator()(std::string_view name) const {
+      return std::hash<std::string_view>{}(name);
+    }
+    std::size_t operator()(std::size_t index) const { return (*this)((*names)[index]); }
+  };
+  struct NameEqual {
+    using is_transparent = void;
+    const std::vector<std::string>* names;
+    std::string_view name(std::string_view text) const { return text; }
+    std::string_view name(std::size_t index) const { return (*names)[index]; }
+    template <typename A, typename B>
+    bool operator()(const A& a, const B& b) const {
+      return name(a) == name(b);
+    }
+  };
+  // The index of the column called `name`, added with `column` when there is none yet.
   std::size_t column(const std::string& name, Column column);
   void expand_steps();
   std::vector<Request> expand_step(const std::vector<const OutputRequest*>& outputs,
@@ -68,6 +94,8 @@ class HistoryColumns {
   const AnalysisPlan& plan_;
   std::vector<DofMask> active_;
   std::vector<std::string> names_;
+  std::unordered_set<std::size_t, NameHash, NameEqual> column_of_name_{0, NameHash{&names_},
+                                                                       NameEqual{&names_}};
   std::vector<Column> columns_;
   std::vector<std::vector<Request>> step_requests_;
   std::size_t step_ = 0;

@@ -7,6 +7,7 @@
 #include <set>
 
 #include <fmt/format.h>
+#include <re2/re2.h>
 
 #include "src/output/history_table.hpp"
 
@@ -146,6 +147,18 @@ bool TableComparison::passed() const {
                      [](const ColumnComparison& c) { return c.verdict == ColumnVerdict::Pass; });
 }
 
+std::shared_ptr<const re2::RE2> compile_column_pattern(std::string_view pattern,
+                                                       std::string* error) {
+  re2::RE2::Options re2_options;
+  re2_options.set_log_errors(false);  // the caller reports the error its own way
+  auto compiled = std::make_shared<const re2::RE2>(pattern, re2_options);
+  if (!compiled->ok()) {
+    *error = compiled->error();
+    return nullptr;
+  }
+  return compiled;
+}
+
 std::optional<TableComparison> compare_tables(const CsvTable& result, const CsvTable& golden,
                                               const CompareOptions& options, std::string* error) {
   if (!require_keys(result, error) || !require_keys(golden, error)) return std::nullopt;
@@ -165,7 +178,7 @@ std::optional<TableComparison> compare_tables(const CsvTable& result, const CsvT
   std::vector<std::string> names;
   for (const std::string& name : golden.columns) {
     if (is_key(name)) continue;
-    if (options.columns && !std::regex_match(name, *options.columns)) continue;
+    if (options.columns && !re2::RE2::FullMatch(name, *options.columns)) continue;
     names.push_back(name);
   }
   if (names.empty()) {

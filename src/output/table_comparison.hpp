@@ -4,12 +4,17 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <optional>
-#include <regex>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "src/output/csv_table.hpp"
+
+namespace re2 {
+class RE2;
+}
 
 namespace clinch {
 
@@ -21,8 +26,16 @@ inline constexpr double kDefaultAtol = 1e-12;
 struct CompareOptions {
   double rtol = kDefaultRtol;
   double atol = kDefaultAtol;
-  std::optional<std::regex> columns;  // golden columns to compare (full-name match); all if unset
+  // Golden columns to compare: those whose whole name `columns` matches; all when null.
+  std::shared_ptr<const re2::RE2> columns;
 };
+
+// Compiles a --columns pattern. RE2 rather than std::regex: the pattern and the column names come
+// from the user, and RE2 matches in time linear in the name with bounded memory, where a
+// backtracking engine can take exponential time or overflow the stack on a long name. Returns
+// null and sets `error` when RE2 rejects the pattern.
+std::shared_ptr<const re2::RE2> compile_column_pattern(std::string_view pattern,
+                                                       std::string* error);
 
 enum class ColumnVerdict { Pass, Fail, Missing };
 
