@@ -1120,6 +1120,24 @@ constexpr double kTwo63 = 9223372036854775808.0;  // 2**63
 
 bool fits_int64(double x) { return x >= -kTwo63 && x < kTwo63; }
 
+// a % b truncated toward zero, for b != 0. INT64_MIN % -1 is undefined behaviour (C++
+// [expr.mul]/4: the quotient is not representable) and traps on x86; the remainder by -1 is 0.
+std::int64_t truncated_remainder(std::int64_t a, std::int64_t b) { return b == -1 ? 0 : a % b; }
+
+// Python's a // b (rounded toward minus infinity) for b != 0 and (a, b) != (INT64_MIN, -1).
+std::int64_t floor_divide(std::int64_t a, std::int64_t b) {
+  std::int64_t q = a / b;
+  if (truncated_remainder(a, b) != 0 && ((a < 0) != (b < 0))) --q;
+  return q;
+}
+
+// Python's a % b (the sign of the divisor) for b != 0.
+std::int64_t floor_remainder(std::int64_t a, std::int64_t b) {
+  std::int64_t r = truncated_remainder(a, b);
+  if (r != 0 && ((r < 0) != (b < 0))) r += b;
+  return r;
+}
+
 // Exact comparison of an int and a float (Python compares them exactly, not via a double).
 int compare_int_float(std::int64_t i, double d) {
   if (d >= kTwo63) return -1;
@@ -1392,19 +1410,11 @@ class Evaluator {
           if (a.i == std::numeric_limits<std::int64_t>::min() && b.i == -1) {
             return int_overflow(at.pos, a.i, op, b.i);
           }
-          r = a.i / b.i;
-          if (a.i % b.i != 0 && ((a.i < 0) != (b.i < 0))) --r;  // floor, as in Python
-          out = ParamValue::make_int(r);
+          out = ParamValue::make_int(floor_divide(a.i, b.i));
           return true;
         case BinOp::Mod:
           if (b.i == 0) return fail(DiagCode::arithmetic_error, at.pos, "division by zero");
-          if (b.i == -1) {
-            out = ParamValue::make_int(0);
-            return true;
-          }
-          r = a.i % b.i;
-          if (r != 0 && ((r < 0) != (b.i < 0))) r += b.i;  // sign of the divisor, as in Python
-          out = ParamValue::make_int(r);
+          out = ParamValue::make_int(floor_remainder(a.i, b.i));
           return true;
         case BinOp::Div:
           break;  // true division, below
@@ -1423,7 +1433,7 @@ class Evaluator {
         if (y == 0.0) return fail(DiagCode::arithmetic_error, at.pos, "division by zero");
         // For ints up to 2**53 the double quotient is the correctly rounded one Python gives.
         if (!finite_or_fail(x / y, at.pos, op, out)) return false;
-        if (ints && a.i % b.i != 0)
+        if (ints && truncated_remainder(a.i, b.i) != 0)
           warn_integer_division(at, a, b, out, left_begin, left_end, right, left_is_digit_literal);
         return true;
       }
@@ -1459,8 +1469,7 @@ class Evaluator {
                              const ParamValue& quotient, std::uint32_t left_begin,
                              std::uint32_t left_end, const Node& right,
                              bool left_is_digit_literal) {
-    std::int64_t floored = a.i / b.i;
-    if (a.i % b.i != 0 && ((a.i < 0) != (b.i < 0))) --floored;
+    const std::int64_t floored = floor_divide(a.i, b.i);
     const std::string_view left = span(left_begin, left_end);
     const std::string fixed_left =
         left_is_digit_literal ? std::string(left) + ".0" : fmt::format("float({})", left);

@@ -1,30 +1,80 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets with clang and ASan/UBSan and runs each for a bounded time,
-# seeded from decks/ and tests/diagnostics/. Usage: scripts/fuzz.sh [seconds per target=600]
-# Crashing inputs are kept in fuzz-out/<target>/ (artifact files crash-*, leak-*, timeout-*).
+# Builds the libFuzzer targets with clang and ASan/UBSan and runs each for a bounded time.
+# Usage: scripts/fuzz.sh [SECONDS] [TARGET[=SECONDS]...]
+#   SECONDS          time per target unless a target gives its own (default 600)
+#   TARGET=SECONDS   run only the named targets (deck_reader, expression, compare), each for its
+#                    own time; e.g. scripts/fuzz.sh deck_reader=1800 compare=600
+# Seeds: decks/ and tests/diagnostics/ (deck_reader, expression), the golden tables of
+# decks/verification/ and tests/compare/ (compare). The corpus grows in fuzz-out/<target>/corpus;
+# crashing inputs are kept in fuzz-out/<target>/ (crash-*, leak-*, timeout-*) and the whole
+# libFuzzer log in fuzz-out/<target>/fuzz.log.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-seconds=${1:-600}
+default_seconds=600
+declare -a targets=()
+declare -A seconds=()
+for arg in "$@"; do
+  case "$arg" in
+    [0-9]*) default_seconds=$arg ;;
+    deck_reader* | expression* | compare*)
+      name=${arg%%=*}
+      targets+=("$name")
+      [ "$name" = "$arg" ] || seconds[$name]=${arg#*=}
+      ;;
+    *) echo "fuzz.sh: unknown argument '$arg'" >&2; exit 2 ;;
+  esac
+done
+[ ${#targets[@]} -gt 0 ] || targets=(deck_reader expression compare)
+
 command -v clang++ >/dev/null || { apt-get install -y -qq clang >/dev/null; }
 # libFuzzer's runtime comes with Debian's libclang-rt-dev.
 dpkg-query -W libclang-rt-14-dev >/dev/null 2>&1 || apt-get install -y -qq libclang-rt-14-dev >/dev/null
 CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCLINCH_BUILD_FUZZERS=ON -DCLINCH_BUILD_TESTS=OFF -DCLINCH_BUILD_BENCHMARKS=OFF \
   -DCLINCH_SANITIZE=ON >/dev/null
-cmake --build build-fuzz -j"$(nproc)" --target fuzz_deck_reader fuzz_expression
-for target in deck_reader expression; do
+cmake --build build-fuzz -j"$(nproc)" --target "${targets[@]/#/fuzz_}"
+
+seed() {
+  local target=$1 corpus=$2
+  case "$target" in
+    deck_reader)
+      find decks tests/diagnostics ../shared/external-decks -name '*.inp' -exec cp {} "$corpus"/ \; \
+        2>/dev/null || true
+      ;;
+    expression)
+      for f in $(find decks tests/diagnostics -name '*.inp'); do
+        awk '/^\*PARAMETER/{p=1;next} /^\*/{p=0} p' "$f" > "$corpus/$(basename "$f").par"
+      done
+      printf 'a = 1\nb = -2**2 + a//3 %% 2\nc = sqrt(a)*pi\ns = "x" + "y"\n' > "$corpus/basic.par"
+      ;;
+    compare)
+      # fuzz_compare.cpp's input: the --columns pattern, the result table, '%%', the golden one.
+      for golden in tests/compare/*.csv; do
+        { echo; cat tests/compare/result.csv; echo '%%'; cat "$golden"; } \
+          > "$corpus/$(basename "$golden" .csv).cmp"
+      done
+      { echo 'CU.*'; cat tests/compare/result.csv; echo '%%'; cat tests/compare/golden_off.csv; } \
+        > "$corpus/columns.cmp"
+      for golden in decks/verification/*/golden.csv; do
+        { echo; cat "$golden"; echo '%%'; cat "$golden"; } \
+          > "$corpus/$(basename "$(dirname "$golden")").cmp"
+      done
+      ;;
+  esac
+}
+
+status=0
+for target in "${targets[@]}"; do
   corpus=fuzz-out/${target}/corpus
   mkdir -p "$corpus"
-  if [ "$target" = deck_reader ]; then
-    find decks tests/diagnostics ../shared/external-decks -name '*.inp' -exec cp {} "$corpus"/ \; 2>/dev/null || true
-  else
-    for f in $(find decks tests/diagnostics -name '*.inp'); do
-      awk '/^\*PARAMETER/{p=1;next} /^\*/{p=0} p' "$f" > "$corpus/$(basename "$f").par"
-    done
-    printf 'a = 1\nb = -2**2 + a//3 %% 2\nc = sqrt(a)*pi\ns = "x" + "y"\n' > "$corpus/basic.par"
+  seed "$target" "$corpus"
+  time=${seconds[$target]:-$default_seconds}
+  echo "fuzz: ${target} for ${time}s"
+  if ! (cd fuzz-out/${target} && UBSAN_OPTIONS=halt_on_error=1 \
+    ../../build-fuzz/tests/fuzz/fuzz_${target} -max_total_time="$time" -max_len=65536 \
+      -timeout=10 -rss_limit_mb=4096 -print_final_stats=1 corpus > fuzz.log 2>&1); then
+    status=1
   fi
-  echo "fuzz: ${target} for ${seconds}s"
-  (cd fuzz-out/${target} && UBSAN_OPTIONS=halt_on_error=1 \
-    ../../build-fuzz/tests/fuzz/fuzz_${target} -max_total_time="$seconds" -max_len=65536 \
-      -timeout=10 -rss_limit_mb=4096 -print_final_stats=1 corpus 2>&1 | tail -n 25)
+  tail -n 25 fuzz-out/${target}/fuzz.log
 done
+exit $status

@@ -180,6 +180,26 @@ TEST(Expression, IntegerOverflowIsAnError) {
   expect_error("0xFFFFFFFFFFFFFFFFFF", DiagCode::arithmetic_error, 0);
 }
 
+// INT64_MIN by -1 is the one int64 quotient that does not fit (its C++ remainder is undefined and
+// traps on x86). Python 3 gives a float for '/', exact here so without W0403, and 0 for '%';
+// '//' overflows 64 bits (E0406, tested above). The other divisors behave as in Python.
+TEST(Expression, MostNegativeIntegerDividedByMinusOne) {
+  const std::int64_t min = std::numeric_limits<std::int64_t>::min();
+  EXPECT_EQ(float_value("(-9223372036854775807-1)/-1"), 9223372036854775808.0);
+  EXPECT_EQ(int_value("(-9223372036854775807-1)%-1"), 0);
+  EXPECT_EQ(float_value("(-9223372036854775807-1)%-1.0"), 0.0);
+  EXPECT_EQ(int_value("(-9223372036854775807-1)//1"), min);
+  EXPECT_EQ(int_value("(-9223372036854775807-1)//7"), -1317624576693539402);
+  EXPECT_EQ(int_value("(-9223372036854775807-1)%7"), 6);
+  EXPECT_EQ(int_value("(-2)**63"), min);
+  // A floored quotient in the W0403 text goes through the same guarded division.
+  const Result r = run("(-9223372036854775807-1)/7");
+  ASSERT_EQ(r.sink.diagnostics().size(), 1u);
+  EXPECT_EQ(r.sink.diagnostics()[0].code, DiagCode::integer_division);
+  EXPECT_NE(r.sink.diagnostics()[0].message.find("but -1317624576693539402 in"), std::string::npos)
+      << r.sink.diagnostics()[0].message;
+}
+
 TEST(Expression, NonFiniteAndDivisionByZero) {
   expect_error("1e999", DiagCode::arithmetic_error, 0, "not finite");
   expect_error("2 * 1e999", DiagCode::arithmetic_error, 4);

@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# The whole test suite under AddressSanitizer and UndefinedBehaviorSanitizer (ARCHITECTURE.md,
+# conventions): builds with -DCLINCH_SANITIZE=ON into build-asan/ and runs ctest there. Any
+# sanitizer report fails the test that produced it (UBSan halts instead of printing and going on).
+# Not part of CI: the build and the run take several times the plain ones.
+# Usage: scripts/sanitize.sh [ctest arguments...]   (e.g. -R Expression); JOBS (default 2).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+jobs=${JOBS:-2}
+cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCLINCH_SANITIZE=ON \
+  -DCLINCH_BUILD_TESTS=ON -DCLINCH_BUILD_BENCHMARKS=OFF -DCLINCH_BUILD_FUZZERS=OFF >/dev/null
+cmake --build build-asan -j"$jobs"
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:strict_string_checks=1}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
+start=$(date +%s)
+status=0
+ctest --test-dir build-asan -j"$jobs" --output-on-failure "$@" || status=$?
+echo "sanitize: ctest took $(($(date +%s) - start)) s"
+exit $status
