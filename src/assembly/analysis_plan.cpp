@@ -7,7 +7,7 @@
 
 #include "base/diagnostic.hpp"
 #include "src/behavior/elastic/elastic_behavior.hpp"
-#include "src/behavior/plastic/elastic_plastic_behavior.hpp"
+#include "src/behavior/connector_laws.hpp"
 #include "src/model/orientation_triad.hpp"
 
 namespace clinch {
@@ -27,7 +27,6 @@ Matrix3 to_matrix(const Triad& t) {
 // ignoring them.
 std::string unsupported_behavior(const ConnectorBehavior& b) {
   if (!b.damage_initiations.empty()) return "*CONNECTOR DAMAGE INITIATION";
-  if (!b.frictions.empty()) return "*CONNECTOR FRICTION";
   if (!b.failures.empty()) return "*CONNECTOR FAILURE";
   return {};
 }
@@ -73,8 +72,8 @@ class PlanBuilder {
     const auto& steps = model_.history.steps;
     plan_.small_displacement = steps.empty() || std::any_of(steps.begin(), steps.end(),
                                                        [](const Step& s) { return !s.nlgeom; });
-    section_behavior_.assign(model_.sections.connector_sections.size(), nullptr);
-    section_behavior_built_.assign(model_.sections.connector_sections.size(), false);
+    section_laws_.assign(model_.sections.connector_sections.size(), {});
+    section_laws_built_.assign(model_.sections.connector_sections.size(), false);
     for (const SpringProperty& spring : model_.sections.springs) {
       plan_.spring_laws.push_back(spring.valid ? std::optional<SpringLaw>(SpringLaw(spring))
                                                : std::nullopt);
@@ -97,19 +96,22 @@ class PlanBuilder {
   }
 
  private:
-  const Behavior* behavior_of_section(std::int32_t s) {
+  // The laws of a section's behaviour, built once per section and shared by its connectors.
+  const std::vector<const Behavior*>& laws_of_section(std::int32_t s) {
     const auto index = static_cast<std::size_t>(s);
-    if (!section_behavior_built_[index]) {
-      section_behavior_built_[index] = true;
+    if (!section_laws_built_[index]) {
+      section_laws_built_[index] = true;
       const ConnectorSection& section = model_.sections.connector_sections[index];
       if (section.behavior_index >= 0) {
         const ConnectorBehavior& b =
             model_.behaviors.behaviors[static_cast<std::size_t>(section.behavior_index)];
-        plan_.behaviors.push_back(make_connector_behavior(b, section.available));
-        section_behavior_[index] = plan_.behaviors.back().get();
+        for (auto& law : make_connector_laws(b, section.available, section.constrained)) {
+          section_laws_[index].push_back(law.get());
+          plan_.behaviors.push_back(std::move(law));
+        }
       }
     }
-    return section_behavior_[index];
+    return section_laws_[index];
   }
 
   bool add_connector(std::int32_t e, std::string* error) {
@@ -207,7 +209,7 @@ class PlanBuilder {
     plan_.connector_of_element[static_cast<std::size_t>(e)] =
         static_cast<std::int32_t>(plan_.connectors.size());
     plan_.connectors.push_back(std::move(r));
-    if (const Behavior* law = behavior_of_section(s)) plan_.add_law(plan_.connectors.size() - 1, *law);
+    for (const Behavior* law : laws_of_section(s)) plan_.add_law(plan_.connectors.size() - 1, *law);
     return true;
   }
 
@@ -256,8 +258,8 @@ class PlanBuilder {
   const Model& model_;
   AnalysisPlan& plan_;
   std::vector<ComponentMask> motions_;
-  std::vector<const Behavior*> section_behavior_;
-  std::vector<bool> section_behavior_built_;
+  std::vector<std::vector<const Behavior*>> section_laws_;
+  std::vector<bool> section_laws_built_;
   double length_tolerance_ = 1e-8;
 };
 

@@ -36,7 +36,7 @@ struct LawSlot {
   std::size_t history = 0;
 };
 struct LawStack {
-  static constexpr int kMaxLaws = 4;
+  static constexpr int kMaxLaws = 6;  // the elastic-plastic law and friction definitions
   std::array<LawSlot, kMaxLaws> slots{};
   int count = 0;
   bool needs_connector_forces = false;  // some law reads the constraint forces
@@ -96,7 +96,7 @@ struct AnalysisPlan {
   bool small_displacement = true;
   DofMap dofs;
   std::vector<ConnectorKinematics> kinematics;
-  std::vector<std::unique_ptr<Behavior>> behaviors;  // one per section that has elasticity
+  std::vector<std::unique_ptr<Behavior>> behaviors;  // the laws of each section's behaviour
   std::vector<ConnectorRecord> connectors;
   std::vector<std::int32_t> connector_of_element;  // global element → connector record (−1)
   std::vector<std::optional<SpringLaw>> spring_laws;  // per *SPRING (empty when invalid)

@@ -42,6 +42,7 @@ struct BehaviorInput {
   // The force and tangent of the laws before this one in the stack (nullptr for the first).
   const Vector6* force_below = nullptr;
   const Matrix6* tangent_below = nullptr;
+  const Matrix6* force_tangent_below = nullptr;  // their force against the constraint forces
   // The connector's constraint forces at the current iterate, per component: the multipliers of
   // its active constraints (constrained and RIGID components, stops, locks, connector motions),
   // 0 elsewhere. Set only for a law that needs_connector_forces().
@@ -62,6 +63,9 @@ struct BehaviorOutput {
   std::string message;  // why it failed, is unreliable, or asks for a smaller step
 };
 
+// The connector force a law's force is reported as (output-variables.md §2): CEF or CSF.
+enum class ForceKind { Elastic, Friction };
+
 // A force–motion law in component space. `integrate` is const and never touches history_old, so
 // one instance serves every element that shares the behaviour (ARCHITECTURE.md principle 2).
 class Behavior {
@@ -74,10 +78,18 @@ class Behavior {
   // True when its force depends on the connector's constraint forces; it then fills
   // force_tangent, and the element's tangent is unsymmetric.
   virtual bool needs_connector_forces() const { return false; }
+  virtual ForceKind force_kind() const { return ForceKind::Elastic; }
   virtual IntegrationStatus integrate(const BehaviorInput& in, BehaviorOutput& out) const = 0;
 
   std::size_t history_size() const { return history_layout().size(); }
 };
+
+// 1 on the components of `mask`, 0 elsewhere.
+inline Vector6 mask_vector(ComponentMask mask) {
+  Vector6 v;
+  for (int i = 0; i < 6; ++i) v[i] = (mask >> i) & 1u ? 1.0 : 0.0;
+  return v;
+}
 
 // Index of the slot that holds `output` of `component` in `layout`, −1 if none does.
 int history_slot(std::span<const HistoryVariable> layout, std::string_view output, int component);

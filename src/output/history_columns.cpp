@@ -15,10 +15,13 @@ std::string set_label(const TargetRef& set, bool element) {
 }
 
 // Connector quantities of output-variables.md §2 that clinch run produces; every other connector
-// identifier (damage, friction, damping, velocities) is 0 for the behaviours a run accepts.
+// identifier (damage, damping, velocities) is 0 for the behaviours a run accepts.
 double connector_value(const ConnectorOutput& out, const std::string& variable, int component) {
   if (variable == "CUPEQ" && component == 0) return out.scalar_equivalent_plastic();
-  if (variable == "CUPEQC") return out.history_value("CUPEQC", 0);
+  // friction.md §6: the scalar outputs of a coupled friction definition.
+  if (variable == "CUPEQC" || variable == "CSFC" || variable == "CNFC" || variable == "CASUC") {
+    return out.history_value(variable, 0);
+  }
   if (component < 1) return 0.0;
   const int i = component - 1;
   if (variable == "CTF") return out.total[i];
@@ -28,7 +31,9 @@ double connector_value(const ConnectorOutput& out, const std::string& variable, 
   if (variable == "CU") return out.change[i];
   if (variable == "CCU") return out.constitutive[i];
   if (variable == "CUE") return out.constitutive[i] - out.history_value("CUP", component);
-  if (variable == "CUP" || variable == "CUPEQ" || variable == "CALPHAF") {
+  if (variable == "CSF") return out.friction[i];
+  if (variable == "CUP" || variable == "CUPEQ" || variable == "CALPHAF" || variable == "CNF" ||
+      variable == "CSLIPST" || variable == "CASU") {
     return out.history_value(variable, component);
   }
   if (variable == "CP") return out.position[i];
@@ -114,6 +119,7 @@ std::vector<HistoryColumns::Request> HistoryColumns::expand_step(
       bool stops = !r.locks.empty();
       for (const ConnectorStopLimits& s : r.stops) stops |= s.lower || s.upper;
       if (stops) variables.insert(variables.end(), {"CRF", "CSLST"});
+      if (features.friction) variables.insert(variables.end(), {"CSF", "CNF", "CASU"});
       if (features.kinematic_hardening) variables.push_back("CALPHAF");
       for (const std::string& v : variables) {
         OutputIdentifier id;
@@ -249,6 +255,15 @@ void HistoryColumns::derived_columns(const OutputIdentifier& id,
       const Name& name = behavior.derived_terms[static_cast<std::size_t>(t)].name;
       Column column_data{id.variable, 0, {{Source::Connector, c}}};
       column_data.derived = derived_component(b, behavior, name.key);
+      if (const auto use = first_derived_context(behavior, name.key, true); force && use) {
+        // A friction potential acts on the friction force, a CONTACT FORCE on the connector
+        // force the contact measure reads (friction.md §2.2; with the friction force included).
+        if (use->kind == DerivedContextKind::FrictionPotential) {
+          column_data.derived_force = Column::DerivedForce::Friction;
+        } else if (use->kind == DerivedContextKind::ContactForce) {
+          column_data.derived_force = Column::DerivedForce::Connector;
+        }
+      }
       request.columns.push_back(
           column(output_column_label(id.variable, 0, name.display) + "@" + where, column_data));
     }
@@ -313,7 +328,15 @@ double HistoryColumns::value(const Column& c, ConnectorSystem& system) {
           // §4: CDERF on the force of the context (plasticity: the elastic-plastic force),
           // CDERU on the constitutive motions.
           const DerivedComponent& g = derived_[static_cast<std::size_t>(c.derived)];
-          sum += g.value(c.variable == "CDERF" ? out.elastic : out.constitutive);
+          if (c.variable != "CDERF") {
+            sum += g.value(out.constitutive);
+          } else if (c.derived_force == Column::DerivedForce::Friction) {
+            sum += g.value(out.friction);
+          } else if (c.derived_force == Column::DerivedForce::Connector) {
+            sum += g.value(out.elastic + out.friction + out.multiplier);
+          } else {
+            sum += g.value(out.elastic);
+          }
         } else {
           sum += connector_value(out, c.variable, c.component);
         }

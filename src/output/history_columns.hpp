@@ -47,6 +47,9 @@ class HistoryColumns {
     int component = 0;     // 1…6, 0 for scalars
     std::vector<Term> terms;
     std::int32_t derived = -1;  // CDERF/CDERU: index into derived_
+    // CDERF: the force of its first context (derived-components-and-potentials.md §4).
+    enum class DerivedForce : std::uint8_t { Elastic, Friction, Connector };
+    DerivedForce derived_force = DerivedForce::Elastic;
   };
   struct Request {
     int frequency = 1;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "src/behavior/behavior.hpp"
 #include "src/linalg/small_cholesky.hpp"
 
 namespace clinch {
@@ -37,14 +38,8 @@ struct Scales {
   double force;   // F_y(ū_n)
 };
 
-Vector6 mask_vector(ComponentMask mask) {
-  Vector6 v;
-  for (int i = 0; i < 6; ++i) v[i] = (mask >> i) & 1u ? 1.0 : 0.0;
-  return v;
-}
-
 void evaluate(const ElasticSpace& space, const ConnectorPotential& potential,
-              const IsotropicHardeningLaw& yield, const Vector6& trial, double equivalent_old,
+              YieldFunction yield, const Vector6& trial, double equivalent_old,
               const Scales& scales, bool hessian, ComponentMask held, Iterate& it) {
   potential.evaluate(it.force, it.potential, hessian);
   it.yield = yield.at(equivalent_old + it.multiplier);
@@ -124,9 +119,9 @@ double hold_violation(const KinkGroup& g, const ElasticSpace& space, const Vecto
 
 }  // namespace
 
-Matrix6 closest_point_tangent(const ElasticSpace& space, const Vector6& normal,
-                              const Matrix6& hessian, double multiplier, double hardening,
-                              ComponentMask held) {
+void closest_point_tangent(const ElasticSpace& space, const Vector6& normal,
+                           const Matrix6& hessian, double multiplier, double hardening,
+                           ComponentMask held, CoupledReturn& out) {
   Matrix6 a = SmallCholesky<6>(reduced_jacobian(space, hessian, multiplier, held)).inverse();
   Vector6 n = normal;
   if (held) {
@@ -141,11 +136,12 @@ Matrix6 closest_point_tangent(const ElasticSpace& space, const Vector6& normal,
   Matrix6 d = a;
   d.noalias() -= (an / denominator) * an.transpose();
   // Symmetric by construction; symmetrising removes the round-off of the solve.
-  return 0.5 * (d + d.transpose());
+  out.tangent = 0.5 * (d + d.transpose());
+  out.yield_sensitivity = an / denominator;
 }
 
 CoupledReturn closest_point_return(const ElasticSpace& space, const ConnectorPotential& potential,
-                                   const IsotropicHardeningLaw& yield, const Vector6& trial,
+                                   YieldFunction yield, const Vector6& trial,
                                    double equivalent_old, bool want_tangent) {
   CoupledReturn out;
   out.force = trial;
@@ -257,14 +253,14 @@ CoupledReturn closest_point_return(const ElasticSpace& space, const ConnectorPot
     // The first iterate was evaluated without the Hessian; it is the answer only when the trial
     // lay on the surface to round-off, and then Δλ = 0 and the Hessian is not used.
     if (it.multiplier == 0) hessian.setZero();
-    out.tangent = closest_point_tangent(space, it.potential.gradient, hessian, it.multiplier,
-                                        it.yield.slope, held);
+    closest_point_tangent(space, it.potential.gradient, hessian, it.multiplier, it.yield.slope,
+                          held, out);
   }
   return out;
 }
 
 CoupledReturn cutting_plane_return(const ElasticSpace& space, const ConnectorPotential& potential,
-                                   const IsotropicHardeningLaw& yield, const Vector6& trial,
+                                   YieldFunction yield, const Vector6& trial,
                                    double equivalent_old, bool want_tangent) {
   CoupledReturn out;
   out.plastic = true;
@@ -293,8 +289,8 @@ CoupledReturn cutting_plane_return(const ElasticSpace& space, const ConnectorPot
   if (!out.converged) return out;
   if (want_tangent) {
     potential.evaluate(force, pv, true);
-    out.tangent = closest_point_tangent(space, pv.gradient, pv.hessian, multiplier,
-                                        yield.at(equivalent_old + multiplier).slope, 0);
+    closest_point_tangent(space, pv.gradient, pv.hessian, multiplier,
+                          yield.at(equivalent_old + multiplier).slope, 0, out);
   }
   return out;
 }

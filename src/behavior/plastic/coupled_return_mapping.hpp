@@ -9,7 +9,7 @@
 #pragma once
 
 #include "src/behavior/potential/connector_potential.hpp"
-#include "src/behavior/plastic/isotropic_hardening.hpp"
+#include "src/behavior/yield_function.hpp"
 #include "src/behavior/plastic/plastic_return_types.hpp"
 
 namespace clinch {
@@ -17,20 +17,21 @@ namespace clinch {
 // `trial` = K (u − u^pl_n) (zero in padded slots), `equivalent_old` = ū_n. The plastic motion of
 // the increment is K⁻¹(F^tr − F) (§6.4 step 4), left to the caller.
 CoupledReturn closest_point_return(const ElasticSpace& space, const ConnectorPotential& potential,
-                                   const IsotropicHardeningLaw& yield, const Vector6& trial,
+                                   YieldFunction yield, const Vector6& trial,
                                    double equivalent_old, bool want_tangent);
 
 // The cutting-plane algorithm of §6.4 step 3 on its own (the fallback of closest_point_return):
 // δλ = φ/(nᵀ K n + h), F ← F − δλ K n, until |φ| ≤ 1e-12·F_y. With a MAX potential it follows the
 // maximising contribution, which is how the multi-surface return falls back at a corner.
 CoupledReturn cutting_plane_return(const ElasticSpace& space, const ConnectorPotential& potential,
-                                   const IsotropicHardeningLaw& yield, const Vector6& trial,
+                                   YieldFunction yield, const Vector6& trial,
                                    double equivalent_old, bool want_tangent);
 
 // §6.4 step 5 at a converged state: D = A − (A n)(A n)ᵀ/(nᵀ A n + h), A = (K⁻¹ + Δλ N2)⁻¹,
-// with A restricted to the components outside `held` (kink groups the return holds at zero).
-Matrix6 closest_point_tangent(const ElasticSpace& space, const Vector6& normal,
-                              const Matrix6& hessian, double multiplier, double hardening,
-                              ComponentMask held);
+// with A restricted to the components outside `held` (kink groups the return holds at zero);
+// writes D and the yield sensitivity A n/(nᵀ A n + h) into `out`.
+void closest_point_tangent(const ElasticSpace& space, const Vector6& normal,
+                           const Matrix6& hessian, double multiplier, double hardening,
+                           ComponentMask held, CoupledReturn& out);
 
 }  // namespace clinch

@@ -168,7 +168,7 @@ class ElasticPlasticBehavior final : public Behavior {
       ri.trial_force = out.force[i];
       ri.equivalent_old = h[kUncoupledEquivalent + i];
       ri.back_old = h[kBackForce + i];
-      ri.yield = &p.yield;
+      ri.yield = p.yield;
       ri.kinematic = p.kinematic ? &*p.kinematic : nullptr;
       const UncoupledReturn u = uncoupled_return(ri);
       if (!u.converged) {

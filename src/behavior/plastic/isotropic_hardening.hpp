@@ -7,14 +7,10 @@
 #include <optional>
 
 #include "src/behavior/piecewise_linear_table.hpp"
+#include "src/behavior/yield_function.hpp"
 #include "src/model/behavior_model.hpp"
 
 namespace clinch {
-
-struct YieldSample {
-  double value = 0;  // F_y
-  double slope = 0;  // h = dF_y/dū (the right-hand segment at a table breakpoint)
-};
 
 class IsotropicHardeningLaw {
  public:

@@ -46,7 +46,7 @@ struct Iterate {
 struct Context {
   const ElasticSpace& space;
   const ConnectorPotential& potential;
-  const IsotropicHardeningLaw& yield;
+  YieldFunction yield;
   const Vector6& trial;
   double equivalent_old;
   double motion_scale;  // ‖K⁻¹ F^tr‖
@@ -224,7 +224,7 @@ bool drop_parallel(const Context& c, ActiveSet& set, const Vector6& force) {
 }  // namespace
 
 CoupledReturn multi_surface_return(const ElasticSpace& space, const ConnectorPotential& potential,
-                                   const IsotropicHardeningLaw& yield, const Vector6& trial,
+                                   YieldFunction yield, const Vector6& trial,
                                    double equivalent_old, bool want_tangent) {
   CoupledReturn out;
   out.force = trial;
@@ -338,6 +338,10 @@ CoupledReturn multi_surface_return(const ElasticSpace& space, const ConnectorPot
   const Eigen::LDLT<Matrix6> ldlt(schur);
   Matrix6 d = a - an * ldlt.solve(an.transpose());
   out.tangent = 0.5 * (d + d.transpose());
+  // A shift δ of F_y at fixed u: Nᵀ dF − h 1 1ᵀ dΔλ = δ 1 with dF = −A N dΔλ.
+  Vector6 ones = Vector6::Zero();
+  ones.head(set.size).setOnes();
+  out.yield_sensitivity = an * ldlt.solve(ones);
   return out;
 }
 

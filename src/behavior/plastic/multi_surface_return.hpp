@@ -5,7 +5,7 @@
 #pragma once
 
 #include "src/behavior/potential/connector_potential.hpp"
-#include "src/behavior/plastic/isotropic_hardening.hpp"
+#include "src/behavior/yield_function.hpp"
 #include "src/behavior/plastic/plastic_return_types.hpp"
 
 namespace clinch {
@@ -13,7 +13,7 @@ namespace clinch {
 // `trial` = K (u − u^pl_n) (zero in padded slots), `equivalent_old` = ū_n; the result's
 // multiplier is Σ_j Δλ_j. The potential must be a MAX potential.
 CoupledReturn multi_surface_return(const ElasticSpace& space, const ConnectorPotential& potential,
-                                   const IsotropicHardeningLaw& yield, const Vector6& trial,
+                                   YieldFunction yield, const Vector6& trial,
                                    double equivalent_old, bool want_tangent);
 
 }  // namespace clinch

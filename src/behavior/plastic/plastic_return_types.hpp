@@ -21,6 +21,10 @@ struct CoupledReturn {
   Vector6 force = Vector6::Zero();  // F at the end of the increment
   double multiplier = 0;            // Δλ (MAX: Σ_j Δλ_j), the increment of ū (§6.2)
   Matrix6 tangent = Matrix6::Zero();  // ∂F/∂u, filled when plastic and asked for
+  // ∂F/∂F_y at fixed u: how the returned force follows a change of the yield size that does not
+  // come from ū (friction: the capacity through the contact force, friction.md §4.2). Filled
+  // with the tangent by closest_point_return, cutting_plane_return and multi_surface_return.
+  Vector6 yield_sensitivity = Vector6::Zero();
 };
 
 }  // namespace clinch

@@ -21,7 +21,7 @@ UncoupledReturn uncoupled_return(const UncoupledReturnInput& in) {
   UncoupledReturn out;
   const double k = in.stiffness;
   const double xi = in.trial_force - in.back_old;
-  const double phi = std::abs(xi) - in.yield->at(in.equivalent_old).value;
+  const double phi = std::abs(xi) - in.yield.at(in.equivalent_old).value;
   out.back = in.back_old;
   if (!(phi > 0)) return out;  // step 1: elastic (also NaN: the caller's checks catch it)
   out.plastic = true;
@@ -33,7 +33,7 @@ UncoupledReturn uncoupled_return(const UncoupledReturnInput& in) {
   // that contains the iterate, which is how Newton steps across table breakpoints (§6.3).
   auto residual = [&](double dl) {
     Residual res;
-    const YieldSample y = in.yield->at(in.equivalent_old + dl);
+    const YieldSample y = in.yield.at(in.equivalent_old + dl);
     double shift = 0, h_alpha = 0;
     if (in.kinematic != nullptr) {
       shift = s * (in.kinematic->back_force(in.back_old, s, dl) - in.back_old);

@@ -4,7 +4,7 @@
 // and the closed-form consistent modulus. The elastic-plastic behaviour calls it per component.
 #pragma once
 
-#include "src/behavior/plastic/isotropic_hardening.hpp"
+#include "src/behavior/yield_function.hpp"
 #include "src/behavior/plastic/kinematic_hardening.hpp"
 
 namespace clinch {
@@ -14,7 +14,7 @@ struct UncoupledReturnInput {
   double trial_force = 0;  // F^tr = k (u − u^pl_n), or (K (u − u^pl_n))_i
   double equivalent_old = 0;  // ū_n
   double back_old = 0;        // α_n
-  const IsotropicHardeningLaw* yield = nullptr;
+  YieldFunction yield;  // F_y(ū), or a friction capacity F_lim(γ)
   const KinematicHardeningLaw* kinematic = nullptr;  // null: no kinematic hardening
 };
 

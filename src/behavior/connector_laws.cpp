@@ -1,0 +1,21 @@
+#include "src/behavior/connector_laws.hpp"
+
+#include "src/behavior/friction/friction_behavior.hpp"
+#include "src/behavior/plastic/elastic_plastic_behavior.hpp"
+
+namespace clinch {
+
+std::vector<std::unique_ptr<Behavior>> make_connector_laws(const ConnectorBehavior& behavior,
+                                                           ComponentMask available,
+                                                           ComponentMask constrained) {
+  std::vector<std::unique_ptr<Behavior>> laws;
+  if (auto law = make_connector_behavior(behavior, available)) laws.push_back(std::move(law));
+  for (std::size_t f = 0; f < behavior.frictions.size(); ++f) {
+    if (auto law = make_friction_behavior(behavior, f, available, constrained)) {
+      laws.push_back(std::move(law));
+    }
+  }
+  return laws;
+}
+
+}  // namespace clinch
