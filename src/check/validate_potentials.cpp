@@ -582,7 +582,17 @@ class BehaviorChecker {
                    "coefficient");
     }
     if (!f.stick_stiffness && !f.stick_stiffness_loc.valid()) default_stick_stiffness(f, j);
+    // A connector's law stack holds the elastic-plastic law and at most kMaxFrictions friction
+    // laws (src/assembly/analysis_plan.hpp).
+    if (index == kMaxFrictions) {
+      sink_.report(DiagCode::unsupported_option, f.loc,
+                   fmt::format("behavior '{}' has more than {} *CONNECTOR FRICTION definitions, "
+                               "which this version does not support; combine them",
+                               b_.name.display, kMaxFrictions));
+    }
   }
+
+  static constexpr std::size_t kMaxFrictions = 5;
 
   void check_predefined(const FrictionDefinition& f, ComponentMask& j) {
     std::set<std::string> reported;

@@ -157,7 +157,7 @@ IntegrationStatus FrictionBehavior::integrate(const BehaviorInput& in, BehaviorO
   Vector6 slip_new = slip_old;
   if (!slipping) {
     slip.force = trial;
-    if (want_tangent) slip.tangent = stiffness_.cwiseProduct(mask_vector(components_)).asDiagonal();
+    if (want_tangent) slip.tangent = mask_vector(components_).asDiagonal() * space_.stiffness;
   } else if (stick_capacity.value <= 0 && stick_capacity.slope <= 0) {
     // §4.1 step 5: no capacity, no force; the motion is all slip.
     slip_new = u.cwiseProduct(mask_vector(components_));
@@ -181,9 +181,10 @@ IntegrationStatus FrictionBehavior::integrate(const BehaviorInput& in, BehaviorO
     }
     slipping = r.plastic;
     slip.force = r.force;
-    slip.tangent = r.plastic ? r.tangent
-                             : Matrix6(stiffness_.cwiseProduct(mask_vector(components_)).asDiagonal());
-    slip.sensitivity = r.yield_sensitivity;
+    // The padded slots of the elastic space are not friction components (plastic_return_types.hpp).
+    const Matrix6 on_j = mask_vector(components_).asDiagonal();
+    slip.tangent = on_j * (r.plastic ? r.tangent : space_.stiffness) * on_j;
+    slip.sensitivity = on_j * r.yield_sensitivity;
     gamma = gamma_old + r.multiplier;
     slip_new = slip_old + space_.compliance * (trial - slip.force);
   }

@@ -1,0 +1,227 @@
+// Finite-difference checks of the friction law's consistent tangent (friction.md §4.2) through
+// the shared checker (behaviors.md §1.4): against the motion u and against the connector's
+// constraint forces λ, with a linear elastic law below it in the stack, so that a contact force
+// read from an elastic component or from a multiplier is checked through the chain rule too.
+// States: sticking, slipping, just past the stick–slip transition (both sides of the check stay
+// on the slip side: one-sided at the kink), reversed, rate-dependent, with F_int(γ), with the
+// TAUMAX cap, and with coupled (SUM and MAX) potentials.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "base/jacobian_check.hpp"
+#include "parser/deck_reader.hpp"
+#include "src/behavior/friction/friction_behavior.hpp"
+#include "tests/unit/checked_deck.hpp"
+
+namespace clinch {
+namespace {
+
+constexpr ComponentMask kAll = 0b111111;
+
+Vector6 vec(double a, double b = 0, double c = 0, double d = 0, double e = 0, double f = 0) {
+  Vector6 v;
+  v << a, b, c, d, e, f;
+  return v;
+}
+
+// One friction definition read from a behaviour block, integrated on its own with an elastic law
+// `below` (force K_e u) under it and constraint forces λ; commit() makes a trial state the
+// converged one.
+class FrictionDriver {
+ public:
+  FrictionDriver(const std::string& body, ComponentMask available, ComponentMask constrained,
+                 const Vector6& below, double dt = 1.0)
+      : below_(below.asDiagonal()), dt_(dt) {
+    read_deck_text("b.inp", "*CONNECTOR BEHAVIOR, NAME=B\n" + body, deck_.sources, deck_.model,
+                   deck_.sink);
+    for (const Diagnostic& d : deck_.sink.diagnostics()) {
+      if (d.code != DiagCode::no_step) EXPECT_NE(d.severity, Severity::Error) << deck_.dump();
+    }
+    ConnectorBehavior& b = deck_.model.behaviors.behaviors.at(0);
+    // A predefined definition takes J from the connection type of a section (friction.md
+    // §2.3), which a behaviour block alone does not have: the free translations here.
+    FrictionDefinition& f = b.frictions.at(0);
+    if (f.predefined) {
+      f.friction_components = static_cast<ComponentMask>(available & ~constrained & 0b111);
+    }
+    law_ = make_friction_behavior(b, 0, available, constrained);
+    committed_.assign(law_->history_size(), 0.0);
+  }
+  struct Result {
+    IntegrationStatus status = IntegrationStatus::Failure;
+    BehaviorOutput out;
+    std::vector<double> history;
+  };
+
+  Result evaluate(const Vector6& u, const Vector6& lambda,
+                  TangentRequest t = TangentRequest::Consistent) const {
+    Result r;
+    r.history.assign(committed_.size(), std::nan(""));
+    r.out.history_new = r.history;
+    const Vector6 force_below = below_ * u;
+    const Matrix6 force_tangent_below = Matrix6::Zero();
+    const Vector6 increment = u - motion_;
+    const BehaviorInput in{motion_,      increment, 0.0,         dt_, committed_, t,
+                           &force_below, &below_,   &force_tangent_below, &lambda};
+    r.status = law_->integrate(in, r.out);
+    return r;
+  }
+  void commit(const Vector6& u, const Vector6& lambda) {
+    const Result r = evaluate(u, lambda);
+    ASSERT_EQ(r.status, IntegrationStatus::Success) << r.out.message;
+    committed_ = r.history;
+    motion_ = u;
+  }
+  double history(const char* output, int component, const Result& r) const {
+    const int slot = history_slot(law_->history_layout(), output, component);
+    return slot >= 0 ? r.history[static_cast<std::size_t>(slot)] : std::nan("");
+  }
+
+  // behaviors.md §1.4 on x = (u, λ): the analytic [∂f/∂u | ∂f/∂λ] against central differences
+  // with h = 1e-6·max(|x|∞, 1e-3) (u) and 1e-6·max(|λ|∞, 1) (λ); passes when
+  // max|D − D_fd| ≤ 1e-5·max|D| + 1e-8·k_s with k_s the stick stiffness.
+  void expect_fd_tangent(const Vector6& u, const Vector6& lambda, double k_s,
+                         bool expect_slip) const {
+    const Result at = evaluate(u, lambda);
+    ASSERT_EQ(at.status, IntegrationStatus::Success) << at.out.message;
+    int slot = -1;
+    for (int i = 1; i <= 6 && slot < 0; ++i) slot = history_slot(law_->history_layout(), "CSLIPST", i);
+    ASSERT_GE(slot, 0);
+    EXPECT_EQ(at.history[static_cast<std::size_t>(slot)], expect_slip ? 1.0 : 0.0);
+    Eigen::VectorXd x(12);
+    x << u, lambda;
+    const auto force = [this](const Eigen::VectorXd& y, Eigen::VectorXd& f) {
+      const Result r = evaluate(Vector6(y.head<6>()), Vector6(y.tail<6>()), TangentRequest::None);
+      f = r.out.force;
+      return r.status == IntegrationStatus::Success;
+    };
+    Eigen::VectorXd steps(12);
+    for (int j = 0; j < 6; ++j) {
+      steps[j] = tangent_check_step(u.cwiseAbs().maxCoeff(), 1e-3);
+      steps[6 + j] = 1e-6 * std::max(lambda.cwiseAbs().maxCoeff(), 1.0);
+    }
+    Eigen::MatrixXd analytic(6, 12);
+    analytic << at.out.tangent, at.out.force_tangent;
+    const JacobianReport report = check_jacobian(perturb_additively(force, x), steps, analytic);
+    EXPECT_TRUE(report.meets_tangent_rule(k_s)) << "u = " << u.transpose()
+                                                << ", λ = " << lambda.transpose() << "\n"
+                                                << report;
+  }
+  const Behavior& law() const { return *law_; }
+
+ private:
+  CheckedDeck deck_;
+  std::unique_ptr<Behavior> law_;
+  Matrix6 below_;
+  double dt_;
+  std::vector<double> committed_;
+  Vector6 motion_ = Vector6::Zero();
+};
+
+constexpr double kStick = 1.0e4;
+// SLOT on CONN3D2: J = {1}, F_N = sqrt(f2² + f3²) from the multipliers of 2 and 3 (§2.3).
+constexpr ComponentMask kSlotAvailable = 0b111001, kSlotConstrained = 0b000110;
+const std::string kSlot =
+    "*CONNECTOR FRICTION, PREDEFINED, STICK STIFFNESS=1.0e4\n*FRICTION\n0.3\n";
+
+TEST(FrictionTangent, SlotStickingAndSlippingAgainstMotionAndMultipliers) {
+  FrictionDriver d(kSlot, kSlotAvailable, kSlotConstrained, Vector6::Zero());
+  const Vector6 lambda = vec(0, -800, 300);  // F_N = 854.4, F_lim = 256.3: slip at u1 = 0.0256
+  d.expect_fd_tangent(vec(0.01), lambda, kStick, false);
+  d.expect_fd_tangent(vec(0.05), lambda, kStick, true);
+  d.expect_fd_tangent(vec(-0.05), lambda, kStick, true);
+  const FrictionDriver::Result r = d.evaluate(vec(0.05), lambda);
+  // Slipping: ∂f1/∂λ2 = μ·sgn(f1)·λ2/F_N (the unsymmetric entry of §7.1), f1 = μ F_N.
+  const double fn = std::hypot(800.0, 300.0);
+  EXPECT_NEAR(r.out.force[0], 0.3 * fn, 1e-9 * fn);
+  EXPECT_NEAR(r.out.force_tangent(0, 1), 0.3 * -800.0 / fn, 1e-12);
+  EXPECT_NEAR(r.out.tangent(0, 0), 0.0, 1e-9);
+}
+
+TEST(FrictionTangent, SlotJustPastTheTransitionAndAfterAReversal) {
+  FrictionDriver d(kSlot, kSlotAvailable, kSlotConstrained, Vector6::Zero());
+  const Vector6 lambda = vec(0, -1000);  // F_lim = 300, onset at u1 = 0.03
+  // Φ_tr = ±1e-3 F_lim: the central differences (h ≈ 3e-8, 3e-4 of F_lim) stay on one side.
+  d.expect_fd_tangent(vec(0.03 * (1 + 1e-3)), lambda, kStick, true);
+  d.expect_fd_tangent(vec(0.03 * (1 - 1e-3)), lambda, kStick, false);
+  d.commit(vec(0.1), lambda);                       // slipped to u_s = 0.07
+  d.expect_fd_tangent(vec(0.09), lambda, kStick, false);   // reversal: stick again
+  d.expect_fd_tangent(vec(0.0), lambda, kStick, true);     // and slip the other way
+  const FrictionDriver::Result r = d.evaluate(vec(0.0), lambda);
+  EXPECT_NEAR(r.out.force[0], -300.0, 1e-9);
+  EXPECT_NEAR(d.history("CASU", 1, r), 0.07 + 0.04, 1e-12);
+}
+
+// CONTACT FORCE=1 on an elastic component (k_e = 2000 below the friction): F_N = k_e·u1, so the
+// friction force depends on u1 through the law below (the chain rule through tangent_below).
+TEST(FrictionTangent, ContactForceFromAnElasticComponent) {
+  FrictionDriver d("*CONNECTOR FRICTION, COMPONENT=2, CONTACT FORCE=1, STICK STIFFNESS=1.0e4\n"
+                   "*FRICTION\n0.25\n",
+                   kAll, 0, vec(2000.0));
+  d.expect_fd_tangent(vec(-0.3, 0.004), Vector6::Zero(), kStick, false);
+  d.expect_fd_tangent(vec(-0.3, 0.04), Vector6::Zero(), kStick, true);
+  const FrictionDriver::Result r = d.evaluate(vec(-0.3, 0.04), Vector6::Zero());
+  EXPECT_NEAR(r.out.force[1], 0.25 * 600.0, 1e-9);
+  EXPECT_NEAR(r.out.tangent(1, 0), 0.25 * -2000.0, 1e-9);  // ∂(μ|k_e u1|)/∂u1, u1 < 0
+  EXPECT_EQ(r.out.tangent(0, 1), 0.0);                      // no reverse coupling
+}
+
+TEST(FrictionTangent, ExponentialDecayAtASlipRate) {
+  // §7.3 with Δt = 0.1: velocity weakening, the tangent k h/(k + h) < 0.
+  FrictionDriver d("*CONNECTOR FRICTION, COMPONENT=1, STICK STIFFNESS=1.0e5\n1000.0\n"
+                   "*FRICTION, EXPONENTIAL DECAY\n0.4, 0.2, 2.0\n",
+                   kAll, 0, Vector6::Zero(), 0.1);
+  d.expect_fd_tangent(vec(0.02), Vector6::Zero(), 1e5, true);
+  const FrictionDriver::Result r = d.evaluate(vec(0.02), Vector6::Zero());
+  EXPECT_NEAR(r.out.force[0], 343.601, 1e-3);
+  EXPECT_NEAR(r.out.tangent(0, 0), -2956.94, 1e-2);
+  d.commit(vec(0.02), Vector6::Zero());
+  d.expect_fd_tangent(vec(0.04), Vector6::Zero(), 1e5, true);
+  d.expect_fd_tangent(vec(0.015), Vector6::Zero(), 1e5, false);  // unloading: stick
+  d.expect_fd_tangent(vec(0.0), Vector6::Zero(), 1e5, true);     // reversed: slip back
+}
+
+// A press fit (§2.4): F_int(γ) from a table, crossed at its breakpoints, together with a contact
+// force from a multiplier; and the TAUMAX cap, under which the capacity ignores F_N.
+TEST(FrictionTangent, InternalForceTableAndCap) {
+  FrictionDriver d("*CONNECTOR FRICTION, COMPONENT=1, CONTACT FORCE=2, STICK STIFFNESS=1.0e4\n"
+                   "100., 0.\n300., 0.02\n350., 0.1\n*FRICTION\n0.5\n",
+                   kAll, 0, Vector6::Zero());
+  d.expect_fd_tangent(vec(0.03), vec(0, 50), kStick, true);
+  d.expect_fd_tangent(vec(0.1), vec(0, -50), kStick, true);
+  FrictionDriver capped("*CONNECTOR FRICTION, COMPONENT=1, CONTACT FORCE=2, STICK STIFFNESS=1.0e4\n"
+                        "*FRICTION, TAUMAX=120.\n0.5\n",
+                        kAll, 0, Vector6::Zero());
+  capped.expect_fd_tangent(vec(0.05), vec(0, 400), kStick, true);
+  const FrictionDriver::Result r = capped.evaluate(vec(0.05), vec(0, 400));
+  EXPECT_NEAR(r.out.force[0], 120.0, 1e-9);
+  EXPECT_EQ(r.out.force_tangent(0, 1), 0.0);
+}
+
+// Coupled friction through a potential (§2.1 form 3): an elliptic SUM potential (closest-point
+// return) with the contact force from a derived component of the multiplier and an elastic
+// component, and a MAX potential (multi-surface return) on one face.
+TEST(FrictionTangent, CoupledPotentialsWithADerivedContactForce) {
+  const std::string sum_body =
+      "*CONNECTOR FRICTION, CONTACT FORCE=press, STICK STIFFNESS=1.0e4\n*CONNECTOR POTENTIAL\n"
+      "2, 1.\n3, 2.\n*FRICTION\n0.2\n"
+      "*CONNECTOR DERIVED COMPONENT, NAME=press\n1, 4\n1.0, 0.5\n";
+  FrictionDriver sum(sum_body, kAll, 0, vec(0, 0, 0, 300.0));
+  const Vector6 lambda = vec(-500);
+  sum.expect_fd_tangent(vec(0, 0.001, 0.0005, 0.2), lambda, kStick, false);
+  sum.expect_fd_tangent(vec(0, 0.03, -0.02, 0.2), lambda, kStick, true);
+  sum.commit(vec(0, 0.03, -0.02, 0.2), lambda);
+  sum.expect_fd_tangent(vec(0, -0.02, 0.01, 0.1), lambda, kStick, true);
+  const std::string max_body =
+      "*CONNECTOR FRICTION, CONTACT FORCE=1, STICK STIFFNESS=1.0e4\n"
+      "*CONNECTOR POTENTIAL, OPERATOR=MAX\n2, 1.\n3, 2.\n*FRICTION\n0.2\n";
+  FrictionDriver max(max_body, kAll, 0, Vector6::Zero());
+  max.expect_fd_tangent(vec(0, 0.04, 0.001), lambda, kStick, true);
+}
+
+}  // namespace
+}  // namespace clinch
