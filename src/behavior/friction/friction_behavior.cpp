@@ -1,6 +1,9 @@
 #include "src/behavior/friction/friction_behavior.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
+#include <string>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -22,8 +25,9 @@ class FrictionBehavior final : public Behavior {
  public:
   FrictionBehavior(ComponentMask components, const Vector6& stiffness,
                    std::optional<ConnectorPotential> potential, ContactForceMeasure contact,
-                   FrictionCapacityLaw capacity)
-      : components_(components),
+                   FrictionCapacityLaw capacity, std::string name)
+      : name_(std::move(name)),
+        components_(components),
         stiffness_(stiffness),
         potential_(std::move(potential)),
         contact_(std::move(contact)),
@@ -75,6 +79,7 @@ class FrictionBehavior final : public Behavior {
     return potential_ ? potential_->value(force) : force.norm();
   }
 
+  std::string name_;  // for messages: "*CONNECTOR FRICTION 1 of behavior 'B'"
   ComponentMask components_;
   Vector6 stiffness_;
   std::optional<ConnectorPotential> potential_;  // none: P = |f_J| (COMPONENT=, predefined)
@@ -102,12 +107,12 @@ IntegrationStatus FrictionBehavior::radial_slip(const Vector6& trial,
   ri.yield = capacity;
   const UncoupledReturn r = uncoupled_return(ri);
   if (!r.converged) {
-    message = "friction return mapping did not converge";
+    message = name_ + ": friction return mapping did not converge";
     return IntegrationStatus::Failure;
   }
   if (!(r.tangent_denominator > 0)) {
-    message = "friction softening exceeds stick stiffness; increase STICK STIFFNESS or the "
-              "time increment";
+    message = name_ + ": friction softening exceeds stick stiffness; increase STICK STIFFNESS "
+                      "or the time increment";
     return IntegrationStatus::Failure;
   }
   const Vector6 e = trial / size;
@@ -176,7 +181,7 @@ IntegrationStatus FrictionBehavior::integrate(const BehaviorInput& in, BehaviorO
             ? multi_surface_return(space_, *potential_, capacity, trial, gamma_old, want_tangent)
             : closest_point_return(space_, *potential_, capacity, trial, gamma_old, want_tangent);
     if (!r.converged) {
-      out.message = "friction return mapping did not converge";
+      out.message = name_ + ": friction return mapping did not converge";
       return IntegrationStatus::Failure;
     }
     slipping = r.plastic;
@@ -265,8 +270,9 @@ std::unique_ptr<Behavior> make_friction_behavior(const ConnectorBehavior& behavi
         f.slip, f.internal_force,
         f.extrapolation == "LINEAR" ? Extrapolation::Linear : Extrapolation::Constant);
   }
-  return std::make_unique<FrictionBehavior>(components, stiffness, std::move(potential),
-                                            std::move(contact), std::move(capacity));
+  return std::make_unique<FrictionBehavior>(
+      components, stiffness, std::move(potential), std::move(contact), std::move(capacity),
+      fmt::format("*CONNECTOR FRICTION {} of behavior '{}'", index + 1, behavior.name.display));
 }
 
 }  // namespace clinch
