@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <random>
 #include <vector>
@@ -54,6 +55,24 @@ std::string connector_deck(const std::string& type, bool nlgeom) {
          std::string(nlgeom ? ", NLGEOM" : "") + "\n*STATIC\n*END STEP\n";
 }
 
+// The tangent at the current state against central differences of the residual, with step
+// `step_of(j)` for equation j (prescribed equations are left out); `largest` receives the largest
+// stored entry of the tangent.
+JacobianReport tangent_against_differences(ConnectorSystem& s,
+                                           const std::function<double(int)>& step_of,
+                                           bool symmetric_part, double& largest) {
+  SparseMatrix k = s.pattern();
+  Eigen::VectorXd r(s.size());
+  largest = 0;
+  if (!s.evaluate(r, &k).ok) return {};
+  for (double v : k.values) largest = std::max(largest, std::abs(v));
+  Eigen::VectorXd steps = Eigen::VectorXd::Zero(s.size());
+  for (int j = 0; j < s.size(); ++j) {
+    if (!s.is_prescribed(j)) steps[j] = step_of(j);
+  }
+  return check_assembled_tangent(s, k, steps, symmetric_part);
+}
+
 // At a random state (displacements, finite rotations, multipliers), the assembled tangent equals
 // the symmetric part of the finite-difference Jacobian of the residual. Only the symmetric part:
 // under the multiplicative rotation update the exact Jacobian adds −½ skew(moment) on each
@@ -83,16 +102,10 @@ void check_tangent_at_random_state(const std::string& type, bool nlgeom, unsigne
     // Activate the stops the random state violates, then solve the multipliers once.
     ASSERT_TRUE(s.update_active_set());
   }
-  SparseMatrix k = s.pattern();
-  Eigen::VectorXd r(s.size());
-  ASSERT_TRUE(s.evaluate(r, &k).ok);
   double largest = 0;
-  for (double v : k.values) largest = std::max(largest, std::abs(v));
-  Eigen::VectorXd steps = Eigen::VectorXd::Zero(s.size());
-  for (int j = 0; j < s.size(); ++j) {
-    if (!s.is_prescribed(j)) steps[j] = 1e-6;
-  }
-  const JacobianReport report = check_assembled_tangent(s, k, steps, true);
+  const JacobianReport report =
+      tangent_against_differences(s, [](int) { return 1e-6; }, true, largest);
+  ASSERT_GT(largest, 0);
   ASSERT_TRUE(report.evaluated()) << report;
   EXPECT_LE(report.max_error, 1e-5 * largest) << type << (nlgeom ? " NLGEOM" : "") << "\n"
                                               << report;
@@ -522,16 +535,11 @@ TEST(AssembledTangent, FrictionElementTangentWithTheMultiplierColumn) {
       move[i] = (multiplier ? 80.0 * (unit(rng) > 0 ? 1 : -1) : size * unit(rng)) - s.value(i);
     }
     s.apply_correction(move);
-    SparseMatrix k = s.pattern();
-    Eigen::VectorXd r(s.size());
-    ASSERT_TRUE(s.evaluate(r, &k).ok);
     double largest = 0;
-    for (double v : k.values) largest = std::max(largest, std::abs(v));
-    Eigen::VectorXd steps = Eigen::VectorXd::Zero(s.size());
-    for (int j = 0; j < s.size(); ++j) {
-      if (!s.is_prescribed(j)) steps[j] = j >= a->plan->dofs.node_equations() ? 1e-4 : 1e-8;
-    }
-    const JacobianReport report = check_assembled_tangent(s, k, steps);
+    const int nodal = a->plan->dofs.node_equations();
+    const JacobianReport report = tangent_against_differences(
+        s, [nodal](int j) { return j >= nodal ? 1e-4 : 1e-8; }, false, largest);
+    ASSERT_GT(largest, 0);
     ASSERT_TRUE(report.evaluated()) << report;
     EXPECT_LE(report.max_error, 1e-5 * largest) << "motions of " << size << "\n" << report;
     const ConnectorOutput out = s.connector_output(0);
