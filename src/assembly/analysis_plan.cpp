@@ -105,6 +105,10 @@ class PlanBuilder {
       if (section.behavior_index >= 0) {
         const ConnectorBehavior& b =
             model_.behaviors.behaviors[static_cast<std::size_t>(section.behavior_index)];
+        for (const FrictionDefinition& f : b.frictions) {
+          plan_.rate_dependent_friction |= f.law.exponential_decay ||
+                                           f.law.variable == FrictionLaw::Variable::SlipRate;
+        }
         for (auto& law : make_connector_laws(b, section.available, section.constrained)) {
           section_laws_[index].push_back(law.get());
           plan_.behaviors.push_back(std::move(law));

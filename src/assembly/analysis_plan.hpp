@@ -96,6 +96,8 @@ struct AnalysisPlan {
   bool small_displacement = true;
   DofMap dofs;
   std::vector<ConnectorKinematics> kinematics;
+  // Some connector's friction depends on the slip rate (friction.md §3.3: the log says so).
+  bool rate_dependent_friction = false;
   std::vector<std::unique_ptr<Behavior>> behaviors;  // the laws of each section's behaviour
   std::vector<ConnectorRecord> connectors;
   std::vector<std::int32_t> connector_of_element;  // global element → connector record (−1)

@@ -107,6 +107,10 @@ EvalStatus ConnectorElements::evaluate(std::size_t c, const ElementContext& cont
                          status == IntegrationStatus::Unreliable,
                          fmt::format("connector element {}: {}", label(c), out.message));
     }
+    if (!out.warning.empty()) {
+      state.request.warnings.push_back(
+          {c, fmt::format("connector element {}: {}", label(c), out.warning)});
+    }
     law_force += out.force;
     if (slot.law->force_kind() == ForceKind::Friction) friction += out.force;
     if (want_tangent) {

@@ -61,6 +61,7 @@ struct BehaviorOutput {
   // much. Infinity (the default): no request.
   double suggested_dt_ratio = std::numeric_limits<double>::infinity();
   std::string message;  // why it failed, is unreliable, or asks for a smaller step
+  std::string warning;  // a doubt about a valid result, for the run log (once per element and step)
 };
 
 // The connector force a law's force is reported as (output-variables.md §2): CEF or CSF.

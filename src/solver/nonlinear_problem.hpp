@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "src/linalg/sparse_matrix.hpp"
 
@@ -45,6 +46,12 @@ struct StepRequest {
   double dt_ratio = std::numeric_limits<double>::infinity();
   bool unreliable = false;
   std::string message;
+  // Conditions of the converged state that the log reports once per element and step.
+  struct Warning {
+    std::size_t element = 0;
+    std::string message;
+  };
+  std::vector<Warning> warnings;
 };
 
 class NonlinearProblem {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <set>
 
 #include "src/solver/convergence_criteria.hpp"
 #include "src/solver/step_conditions.hpp"
@@ -185,6 +186,13 @@ class Driver {
     system_.set_nlgeom(step.nlgeom);
     if (!choose_storage(step, step_number)) return false;
     conditions_.begin_step(s, system_);
+    warned_.clear();
+    if (plan_.rate_dependent_friction) {
+      out_.log.info(fmt::format("step {}: the friction is rate dependent; in a *STATIC step the "
+                                "slip rate is the slip of an increment over its step time "
+                                "(friction.md §3.3)",
+                                step_number));
+    }
     criteria_.start_step(step.controls);
     out_.columns.begin_step(s);
     const TimeIncrementationControls& t = step.controls.time;
@@ -231,6 +239,9 @@ class Driver {
         if (converged && !smaller) {
           problem_.commit();
           criteria_.accept_increment(report.iterations.back());
+          for (const StepRequest::Warning& w : request.warnings) {
+            if (warned_.insert(w.element).second) out_.log.warning(w.message);
+          }
           step_time = new_time;
           total_time_ += dt;
           ++increment;
@@ -361,6 +372,7 @@ class Driver {
   double total_time_ = 0.0;
   std::vector<double> values_;
   RunResult result_;
+  std::set<std::size_t> warned_;  // elements whose law warning this step's log already has
 };
 
 }  // namespace

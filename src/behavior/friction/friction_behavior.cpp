@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <optional>
 #include <utility>
@@ -75,6 +77,22 @@ class FrictionBehavior final : public Behavior {
   IntegrationStatus radial_slip(const Vector6& trial, const FrictionCapacity& capacity,
                                 double slip_old, bool want_tangent, Slip& slip,
                                 std::string& message) const;
+  // §7.3: with rate weakening the update is unique only while k > F_N·d_c·(μ_s − μ_k)/Δt.
+  void rate_stiffness_warning(double normal, double dt, BehaviorOutput& out) const {
+    const double weakening = capacity_.coefficient.steepest_weakening();
+    if (weakening <= 0 || !(dt > 0)) return;
+    const double bound = normal * weakening / dt;
+    double k = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < 6; ++i) {
+      if (has_component(components_, i + 1)) k = std::min(k, stiffness_[i]);
+    }
+    if (k > bound) return;
+    out.warning = fmt::format(
+        "{}: STICK STIFFNESS {} does not exceed F_N·d_c·(μ_s − μ_k)/Δt = {} "
+        "[friction-rate-stiffness]; the slip update may have several solutions and the answer "
+        "depends on the increment size (friction.md §7.3)",
+        name_, k, bound);
+  }
   double measure(const Vector6& force) const {
     return potential_ ? potential_->value(force) : force.norm();
   }
@@ -209,6 +227,8 @@ IntegrationStatus FrictionBehavior::integrate(const BehaviorInput& in, BehaviorO
       out.force_tangent = column * against_forces;
     }
   }
+
+  rate_stiffness_warning(capacity.contact_force(gamma), in.dt, out);
 
   std::span<double> h = out.history_new;
   for (int s = 0; s < count_; ++s) {

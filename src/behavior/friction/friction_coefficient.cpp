@@ -1,5 +1,6 @@
 #include "src/behavior/friction/friction_coefficient.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace clinch {
@@ -10,12 +11,17 @@ FrictionCoefficient::FrictionCoefficient(const FrictionLaw& law)
     mu_static_ = law.mu_static;
     mu_kinetic_ = law.mu_kinetic;
     decay_coefficient_ = law.decay;
+    steepest_weakening_ = std::max(0.0, decay_coefficient_ * (mu_static_ - mu_kinetic_));
     return;
   }
   constant_ = law.mu.empty() ? 0.0 : law.mu.front();
   // §3.2: a table depends on one column; beyond its ends μ is constant.
   if (variable_ == FrictionLaw::Variable::SlipRate) {
     table_.emplace(law.slip_rate, law.mu, Extrapolation::Constant);
+    for (std::size_t k = 0; k + 1 < law.mu.size(); ++k) {
+      const double slope = (law.mu[k + 1] - law.mu[k]) / (law.slip_rate[k + 1] - law.slip_rate[k]);
+      steepest_weakening_ = std::max(steepest_weakening_, -slope);
+    }
   } else if (variable_ == FrictionLaw::Variable::ContactForce) {
     table_.emplace(law.contact_force, law.mu, Extrapolation::Constant);
   }

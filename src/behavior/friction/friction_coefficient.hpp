@@ -23,6 +23,9 @@ class FrictionCoefficient {
 
   FrictionCoefficientSample at(double slip_rate, double contact_force) const;
   bool depends_on_rate() const { return decay_ || variable_ == FrictionLaw::Variable::SlipRate; }
+  // The steepest weakening max(0, −∂μ/∂γ̇) over every rate: d_c·(μ_s − μ_k) for the decay
+  // (friction.md §7.3), the steepest falling segment of a rate table.
+  double steepest_weakening() const { return steepest_weakening_; }
 
  private:
   FrictionLaw::Variable variable_ = FrictionLaw::Variable::None;
@@ -30,6 +33,7 @@ class FrictionCoefficient {
   std::optional<PiecewiseLinearTable> table_;
   bool decay_ = false;
   double mu_static_ = 0, mu_kinetic_ = 0, decay_coefficient_ = 0;
+  double steepest_weakening_ = 0;
 };
 
 }  // namespace clinch
