@@ -223,5 +223,28 @@ TEST(FrictionTangent, CoupledPotentialsWithADerivedContactForce) {
   max.expect_fd_tangent(vec(0, 0.04, 0.001), lambda, kStick, true);
 }
 
+// μ tabulated (§3.2) against the contact force, μ(F_N) = 0.4 − 0.1·(F_N − 100)/400 on
+// [100, 500], and against the slip rate, μ(γ̇) = 0.3 − 0.1·γ̇ on [0, 1] (Δt = 0.1): the slipping
+// force equals μ·F_N at the root, and the tangent carries ∂μ/∂F_N (through λ2) and ∂μ/∂γ̇.
+TEST(FrictionTangent, TabulatedCoefficients) {
+  FrictionDriver by_force("*CONNECTOR FRICTION, COMPONENT=1, CONTACT FORCE=2, "
+                          "STICK STIFFNESS=1.0e4\n*FRICTION\n0.4, , 100.\n0.3, , 500.\n",
+                          kAll, 0, Vector6::Zero());
+  by_force.expect_fd_tangent(vec(0.05), vec(0, -300), kStick, true);
+  const FrictionDriver::Result r = by_force.evaluate(vec(0.05), vec(0, -300));
+  EXPECT_NEAR(r.out.force[0], 0.35 * 300.0, 1e-9);
+  // ∂(μ F_N)/∂λ2 = −(μ + F_N ∂μ/∂F_N) = −(0.35 − 300/4000)
+  EXPECT_NEAR(r.out.force_tangent(0, 1), -(0.35 - 300.0 / 4000.0), 1e-12);
+  FrictionDriver by_rate("*CONNECTOR FRICTION, COMPONENT=1, CONTACT FORCE=2, "
+                         "STICK STIFFNESS=1.0e4\n*FRICTION\n0.3, 0.\n0.2, 1.\n",
+                         kAll, 0, Vector6::Zero(), 0.1);
+  by_rate.expect_fd_tangent(vec(0.05), vec(0, 1000), kStick, true);
+  const FrictionDriver::Result q = by_rate.evaluate(vec(0.05), vec(0, 1000));
+  // Slip: 1e4(0.05 − Δγ) = 1000(0.3 − 0.1·Δγ/0.1) ⇒ Δγ = 200/9000.
+  const double dg = 200.0 / 9000.0;
+  EXPECT_NEAR(q.out.force[0], 1e4 * (0.05 - dg), 1e-9);
+  EXPECT_NEAR(by_rate.history("CASU", 1, q), dg, 1e-15);
+}
+
 }  // namespace
 }  // namespace clinch
