@@ -90,7 +90,8 @@ class ReferenceHandler : public KeywordHandler {
   std::size_t rows_ = 0;
 };
 
-// §8: damping is read and checked like the other options, then ignored in *STATIC.
+// §8: viscous damping acts in *STATIC with velocities Δu/Δt; TYPE=STRUCTURAL has no effect
+// there, and the forms v1 does not support are refused at their parameter.
 class DampingHandler : public KeywordHandler {
  public:
   void begin(BlockContext& ctx) override {
@@ -98,17 +99,33 @@ class DampingHandler : public KeywordHandler {
     if (!behavior_) return;
     const ParamSet& params = ctx.params();
     warn_explicit_only(ctx, {"REGULARIZE", "RTOL"});
-    ctx.report(DiagCode::damping_ignored_static, ctx.keyword().loc,
-               "connector damping has no effect in *STATIC steps and is ignored");
     ConnectorDamping damping;
     damping.loc = ctx.keyword().loc;
     std::optional<int> component = component_param(ctx);
     damping.component = component.value_or(0);
     damping.component_loc = params.loc("COMPONENT", true);
+    damping.extrapolation = option_extrapolation(ctx, *behavior_);
     valid_ = component.has_value();
     const bool has_component = params.has("COMPONENT");
+    if (params.has("INDEPENDENT COMPONENTS")) {
+      // Its first data line lists components: not a table row (behaviors.md §8).
+      ctx.report(DiagCode::unsupported_option, params.loc("INDEPENDENT COMPONENTS"),
+                 "INDEPENDENT COMPONENTS on *CONNECTOR DAMPING is not supported in this "
+                 "version; give the damping against the component's own velocity");
+      valid_ = false;
+    }
+    if (params.enum_value("TYPE") == "STRUCTURAL") {
+      ctx.report(DiagCode::damping_structural_ignored, params.loc("TYPE"),
+                 "TYPE=STRUCTURAL connector damping acts only in steady-state dynamics; it has "
+                 "no effect in *STATIC steps and is ignored");
+      damping.structural = true;
+    }
     if (params.enum_value("TYPE") == "RAYLEIGH") {
       damping.kind = ConnectorDamping::Kind::Rayleigh;
+      ctx.report(DiagCode::unsupported_option, params.loc("TYPE"),
+                 "TYPE=RAYLEIGH connector damping is not supported in this version; give the "
+                 "damping coefficient with TYPE=VISCOUS");
+      valid_ = false;
     } else if (params.has("NONLINEAR")) {
       damping.kind = ConnectorDamping::Kind::Nonlinear;
       if (!has_component) {
@@ -120,19 +137,18 @@ class DampingHandler : public KeywordHandler {
       damping.kind =
           has_component ? ConnectorDamping::Kind::Linear : ConnectorDamping::Kind::Coupled;
     }
-    // DEPENDENCIES is accepted (the data are ignored anyway); the columns it adds are read.
-    if (params.value("DEPENDENCIES")) {
-      std::optional<std::int64_t> n = ctx.integer_param("DEPENDENCIES");
-      if (!n) {
-        valid_ = false;
-      } else if (*n < 0) {
-        ctx.report(DiagCode::value_out_of_range, *params.value("DEPENDENCIES"),
-                   fmt::format("DEPENDENCIES must be 0 or more, got {}", *n));
-        valid_ = false;
-      } else {
-        dependencies_ = static_cast<std::size_t>(std::min<std::int64_t>(*n, 1000));
-      }
+    // §0: v1 rejects these options; the rest of the block is then ignored.
+    if (params.has("UNSYMM")) {
+      ctx.report(DiagCode::unsupported_option, params.loc("UNSYMM"),
+                 "UNSYMM connector damping is not supported by clinch");
+      valid_ = false;
     }
+    if (params.enum_value("FREQUENCY DEPENDENCE") == "ON") {
+      ctx.report(DiagCode::unsupported_option, params.loc("FREQUENCY DEPENDENCE", true),
+                 "FREQUENCY DEPENDENCE=ON is not supported by clinch");
+      valid_ = false;
+    }
+    if (!check_dependencies(ctx, "connector damping")) valid_ = false;
     behavior_->dampings.push_back(damping);
     index_ = behavior_->dampings.size() - 1;
   }
@@ -142,18 +158,26 @@ class DampingHandler : public KeywordHandler {
     ConnectorDamping& damping = behavior_->dampings[index_];
     ++rows_;
     if (damping.kind == ConnectorDamping::Kind::Coupled) return coupled_line(ctx, line, fields);
-    // Numbers only; rows beyond the first carry dependence data, which is ignored with the rest.
+    // Numbers only.
     for (const Field& f : fields) {
       if (!f.empty() && !ctx.real(f, "damping data")) return;
     }
     switch (damping.kind) {
       case ConnectorDamping::Kind::Linear:
       case ConnectorDamping::Kind::Rayleigh: {
-        if (rows_ > 1 && dependencies_ == 0 && !(fields.size() > 2 && !fields[2].empty())) {
+        if (rows_ > 1 && !(fields.size() > 2 && !fields[2].empty())) {
           if (rows_ == 2) report_extra_line(ctx, line, "damping coefficient, ...");
           return;
         }
-        if (rows_ > 1) return;
+        if (rows_ > 1) {
+          // A second row with a temperature: the coefficient varies with it (§0: v1 rejects).
+          if (rows_ == 2) {
+            ctx.report(DiagCode::unsupported_dependencies, fields[2],
+                       "connector damping that varies with temperature is not supported in "
+                       "this version");
+          }
+          return;
+        }
         ctx.check_field_count(line, fields, 8, "c, frequency, temperature, field1..field5");
         std::optional<double> c = required_real(ctx, line, fields, 0, "damping coefficient");
         if (c) damping.coefficient = *c;
@@ -169,8 +193,7 @@ class DampingHandler : public KeywordHandler {
         std::optional<double> f = required_real(ctx, line, fields, 0, "force");
         std::optional<double> v = required_real(ctx, line, fields, 1, "velocity");
         if (!f || !v) return;
-        const bool dependent = dependencies_ > 0 || (fields.size() > 2 && !fields[2].empty());
-        if (!dependent && !damping.table.empty() && !(*v > damping.table.back().at)) {
+        if (!damping.table.empty() && !(*v > damping.table.back().at)) {
           if (!increasing_reported_) {
             ctx.report(DiagCode::table_not_increasing, fields[1],
                        fmt::format("relative velocities must increase ({} after {})",
@@ -208,7 +231,7 @@ class DampingHandler : public KeywordHandler {
     ConnectorDamping& damping = behavior_->dampings[index_];
     last_line_end_ = BlockContext::end_of_line(line);
     if (rows_ > 3) {
-      if (rows_ == 4 && dependencies_ == 0) {
+      if (rows_ == 4) {
         report_extra_line(ctx, line, "21 damping terms on three data lines");
       }
       return;
@@ -229,7 +252,6 @@ class DampingHandler : public KeywordHandler {
   ConnectorBehavior* behavior_ = nullptr;
   std::size_t index_ = 0;
   std::size_t rows_ = 0;
-  std::size_t dependencies_ = 0;
   bool valid_ = true;
   bool increasing_reported_ = false;
   std::string last_at_text_;
@@ -260,7 +282,7 @@ std::vector<KeywordSpec> behavior_keyword_specs() {
   std::vector<ParamSpec> damping_params = {
       component_param_spec(),
       ParamSpec{"NONLINEAR", ParamKind::Flag},
-      ParamSpec{"TYPE", ParamKind::Enum, false, {"VISCOUS", "RAYLEIGH"}},
+      ParamSpec{"TYPE", ParamKind::Enum, false, {"VISCOUS", "STRUCTURAL", "RAYLEIGH"}},
       ParamSpec{"DEPENDENCIES", ParamKind::Value},
       extrapolation_param_spec(),
       ParamSpec{"FREQUENCY DEPENDENCE", ParamKind::Enum, false, {"OFF", "ON"}},

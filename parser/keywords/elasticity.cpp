@@ -318,12 +318,7 @@ class ElasticityHandler : public KeywordHandler {
       el.valid = false;
       return;
     }
-    std::size_t t = 0;
-    for (int j = 0; j < 6; ++j) {
-      for (int i = 0; i <= j; ++i) {
-        el.coupled[i][j] = el.coupled[j][i] = el.coupled_terms[t++];
-      }
-    }
+    el.coupled = expand_coupled_terms(el.coupled_terms);
   }
 
   ConnectorBehavior* behavior_ = nullptr;

@@ -451,6 +451,7 @@ class ControlsHandler : public KeywordHandler {
       for (const Field& f : fields) ignored(ctx, f, "a second data line");
       return;
     }
+    ls.given = true;
     for (std::size_t i = 0; i < fields.size(); ++i) {
       switch (i) {
         case 0:

@@ -105,6 +105,7 @@ class PlanBuilder {
       if (section.behavior_index >= 0) {
         const ConnectorBehavior& b =
             model_.behaviors.behaviors[static_cast<std::size_t>(section.behavior_index)];
+        plan_.friction |= !b.frictions.empty();
         for (const FrictionDefinition& f : b.frictions) {
           plan_.rate_dependent_friction |= f.law.exponential_decay ||
                                            f.law.variable == FrictionLaw::Variable::SlipRate;

@@ -36,7 +36,7 @@ struct LawSlot {
   std::size_t history = 0;
 };
 struct LawStack {
-  static constexpr int kMaxLaws = 6;  // the elastic-plastic law and friction definitions
+  static constexpr int kMaxLaws = 7;  // elastic-plastic, damping, five friction definitions
   std::array<LawSlot, kMaxLaws> slots{};
   int count = 0;
   bool needs_connector_forces = false;  // some law reads the constraint forces
@@ -96,7 +96,9 @@ struct AnalysisPlan {
   bool small_displacement = true;
   DofMap dofs;
   std::vector<ConnectorKinematics> kinematics;
-  // Some connector's friction depends on the slip rate (friction.md §3.3: the log says so).
+  // Some connector has friction; and friction that depends on the slip rate (friction.md §3.3:
+  // the log says so).
+  bool friction = false;
   bool rate_dependent_friction = false;
   std::vector<std::unique_ptr<Behavior>> behaviors;  // the laws of each section's behaviour
   std::vector<ConnectorRecord> connectors;

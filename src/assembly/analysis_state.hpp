@@ -28,8 +28,9 @@ struct ConnectorResult {
   Vector6 elastic = Vector6::Zero();       // CEF (includes RIGID multipliers)
   Vector6 multiplier = Vector6::Zero();    // CRF
   Vector6 friction = Vector6::Zero();      // CSF
+  Vector6 viscous = Vector6::Zero();       // CVF
   Vector6 applied = Vector6::Zero();       // CCF
-  Vector6 total = Vector6::Zero();         // CTF = CEF + CSF + CRF − CCF
+  Vector6 total = Vector6::Zero();         // CTF = CEF + CVF + CSF + CRF − CCF
 };
 
 // A connector's active set (behaviors.md §5): trial and converged status per component, and the

@@ -80,7 +80,7 @@ EvalStatus ConnectorElements::evaluate(std::size_t c, const ElementContext& cont
   const Vector6 u = k.position - r.reference;
   const Vector6 motion_old = state.position_n[c] - r.reference;
   const Vector6 increment = u - motion_old;
-  Vector6 law_force = Vector6::Zero(), friction = Vector6::Zero();
+  Vector6 law_force = Vector6::Zero(), friction = Vector6::Zero(), viscous = Vector6::Zero();
   Matrix6 stiffness = Matrix6::Zero(), force_stiffness = Matrix6::Zero();
   const TangentRequest request = want_tangent ? TangentRequest::Consistent : TangentRequest::None;
   bool first = true;
@@ -113,6 +113,7 @@ EvalStatus ConnectorElements::evaluate(std::size_t c, const ElementContext& cont
     }
     law_force += out.force;
     if (slot.law->force_kind() == ForceKind::Friction) friction += out.force;
+    if (slot.law->force_kind() == ForceKind::Viscous) viscous += out.force;
     if (want_tangent) {
       stiffness += out.tangent;
       if (slot.law->needs_connector_forces()) force_stiffness += out.force_tangent;
@@ -121,13 +122,13 @@ EvalStatus ConnectorElements::evaluate(std::size_t c, const ElementContext& cont
   }
 
   // Forces (connection-types.md §4): RIGID multipliers are elastic forces (CEF), the others CRF;
-  // friction forces are CSF (output-variables.md §2).
-  Vector6 elastic = law_force - friction, constraint_force = Vector6::Zero();
+  // viscous forces CVF and friction forces CSF (output-variables.md §2).
+  Vector6 elastic = law_force - friction - viscous, constraint_force = Vector6::Zero();
   for (int i = 0; i < 6; ++i) {
     (has_component(r.rigid, i + 1) ? elastic : constraint_force)[i] += reaction[i];
   }
   const Vector6& applied = conditions.load;
-  const Vector6 total = elastic + friction + constraint_force - applied;
+  const Vector6 total = elastic + viscous + friction + constraint_force - applied;
 
   for (int a = 0; a < n; ++a) {
     local.r[a] = k.b.col(r.columns[static_cast<std::size_t>(a)]).dot(total);
@@ -181,6 +182,7 @@ EvalStatus ConnectorElements::evaluate(std::size_t c, const ElementContext& cont
     result.elastic[i] = exists ? elastic[i] : 0.0;
     result.multiplier[i] = exists ? constraint_force[i] : 0.0;
     result.friction[i] = exists ? friction[i] : 0.0;
+    result.viscous[i] = exists ? viscous[i] : 0.0;
     result.applied[i] = exists ? applied[i] : 0.0;
     result.total[i] = exists ? total[i] : 0.0;
   }

@@ -64,8 +64,8 @@ struct BehaviorOutput {
   std::string warning;  // a doubt about a valid result, for the run log (once per element and step)
 };
 
-// The connector force a law's force is reported as (output-variables.md §2): CEF or CSF.
-enum class ForceKind { Elastic, Friction };
+// The connector force a law's force is reported as (output-variables.md §2): CEF, CVF or CSF.
+enum class ForceKind { Elastic, Viscous, Friction };
 
 // A force–motion law in component space. `integrate` is const and never touches history_old, so
 // one instance serves every element that shares the behaviour (ARCHITECTURE.md principle 2).

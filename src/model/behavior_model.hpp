@@ -43,6 +43,17 @@ struct TablePoint {
 
 using Stiffness6 = std::array<std::array<double, 6>, 6>;
 
+// The 21 coupled terms of *CONNECTOR ELASTICITY or *CONNECTOR DAMPING (the upper triangle
+// column by column, behaviors.md §4.3) as the symmetric 6 × 6 matrix.
+inline Stiffness6 expand_coupled_terms(const std::array<double, 21>& terms) {
+  Stiffness6 m{};
+  std::size_t t = 0;
+  for (std::size_t j = 0; j < 6; ++j) {
+    for (std::size_t i = 0; i <= j; ++i) m[i][j] = m[j][i] = terms[t++];
+  }
+  return m;
+}
+
 // *CONNECTOR ELASTICITY (behaviors.md §4).
 struct ConnectorElasticity {
   enum class Kind : std::uint8_t { Linear, Nonlinear, Coupled, Rigid };
@@ -172,10 +183,12 @@ struct DamageEvolution {
   Extrapolation extrapolation = Extrapolation::Constant;
 };
 
-// *CONNECTOR DAMPING (behaviors.md §8): read and checked, no effect in *STATIC.
+// *CONNECTOR DAMPING (behaviors.md §8): viscous, with velocities Δu/Δt in *STATIC.
 struct ConnectorDamping {
   enum class Kind : std::uint8_t { Linear, Nonlinear, Coupled, Rayleigh };
   Kind kind = Kind::Linear;
+  bool structural = false;  // TYPE=STRUCTURAL: steady-state dynamics only, no effect here
+  Extrapolation extrapolation = Extrapolation::Constant;  // NONLINEAR table (§1.2)
   int component = 0;
   SourceLoc loc, component_loc;
   double coefficient = 0;         // Linear: c

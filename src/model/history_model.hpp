@@ -129,6 +129,7 @@ struct TimeIncrementationControls {
 struct LineSearchControls {
   int max_iterations = 0;  // N_ls (0: off)
   double s_max = 1.0, s_min = 1e-4, f_s = 0.25, eta = 0.10;
+  bool given = false;  // the deck has PARAMETERS=LINE SEARCH (its N_ls wins over clinch's choice)
 };
 
 struct Controls {

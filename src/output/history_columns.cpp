@@ -15,7 +15,7 @@ std::string set_label(const TargetRef& set, bool element) {
 }
 
 // Connector quantities of output-variables.md §2 that clinch run produces; every other connector
-// identifier (damage, damping, velocities) is 0 for the behaviours a run accepts.
+// identifier (damage, velocities) is 0 for the behaviours a run accepts.
 double connector_value(const ConnectorOutput& out, const std::string& variable, int component) {
   if (variable == "CUPEQ" && component == 0) return out.scalar_equivalent_plastic();
   // friction.md §6: the scalar outputs of a coupled friction definition.
@@ -32,6 +32,7 @@ double connector_value(const ConnectorOutput& out, const std::string& variable, 
   if (variable == "CCU") return out.constitutive[i];
   if (variable == "CUE") return out.constitutive[i] - out.history_value("CUP", component);
   if (variable == "CSF") return out.friction[i];
+  if (variable == "CVF") return out.viscous[i];
   if (variable == "CUP" || variable == "CUPEQ" || variable == "CALPHAF" || variable == "CNF" ||
       variable == "CSLIPST" || variable == "CASU") {
     return out.history_value(variable, component);
@@ -333,7 +334,7 @@ double HistoryColumns::value(const Column& c, ConnectorSystem& system) {
           } else if (c.derived_force == Column::DerivedForce::Friction) {
             sum += g.value(out.friction);
           } else if (c.derived_force == Column::DerivedForce::Connector) {
-            sum += g.value(out.elastic + out.friction + out.multiplier);
+            sum += g.value(out.elastic + out.viscous + out.friction + out.multiplier);
           } else {
             sum += g.value(out.elastic);
           }

@@ -141,7 +141,7 @@ class Driver {
   // One attempt: Newton, then the stop active set (behaviors.md §5.1), re-solved until it settles.
   NewtonReport attempt(int step, int increment, int attempt_number, int& iterations, int& changes) {
     const TimeIncrementationControls& t = controls_->time;
-    const NewtonOptions options{t.ic, t.i0, accept_unconverged_, controls_->line_search,
+    const NewtonOptions options{t.ic, t.i0, accept_unconverged_, line_search_,
                                 options_.stop_requested};
     iterations = 0;
     changes = 0;
@@ -187,6 +187,16 @@ class Driver {
     if (!choose_storage(step, step_number)) return false;
     conditions_.begin_step(s, system_);
     warned_.clear();
+    // A stick–slip switch can send Newton back and forth across the narrow stick band (slip
+    // tangents on both sides); a line search stops the cycle. Steps with friction get one unless
+    // the deck sets PARAMETERS=LINE SEARCH itself (docs/decisions.md "Friction").
+    line_search_ = step.controls.line_search;
+    if (plan_.friction && !line_search_.given && line_search_.max_iterations == 0) {
+      line_search_.max_iterations = kFrictionLineSearch;
+      out_.log.info(fmt::format("step {}: line search on (N_ls = {}): the step has friction and "
+                                "the deck does not set *CONTROLS, PARAMETERS=LINE SEARCH",
+                                step_number, kFrictionLineSearch));
+    }
     if (plan_.rate_dependent_friction) {
       out_.log.info(fmt::format("step {}: the friction is rate dependent; in a *STATIC step the "
                                 "slip rate is the slip of an increment over its step time "
@@ -372,7 +382,9 @@ class Driver {
   double total_time_ = 0.0;
   std::vector<double> values_;
   RunResult result_;
-  std::set<std::size_t> warned_;  // elements whose law warning this step's log already has
+  std::set<std::size_t> warned_;
+  static constexpr int kFrictionLineSearch = 5;
+  LineSearchControls line_search_;  // this step's, with clinch's choice for friction  // elements whose law warning this step's log already has
 };
 
 }  // namespace

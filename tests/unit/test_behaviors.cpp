@@ -728,15 +728,30 @@ TEST(Damage, MissingType) {
 
 // ---------------------------------------------------------------- damping (§8)
 
-TEST(Damping, WarnsAndIsRead) {
+TEST(Damping, IsReadWithoutWarning) {
   auto p = parse(
       "*CONNECTOR BEHAVIOR, NAME=B\n"
       "*CONNECTOR DAMPING, COMPONENT=1\n"
       "5.\n");
-  const Diagnostic& d = p->one(DiagCode::damping_ignored_static);
-  expect_at(d, 2, 1);
-  EXPECT_EQ(d.message, "connector damping has no effect in *STATIC steps and is ignored");
+  EXPECT_EQ(p->with(DiagCode::damping_structural_ignored).size(), 0u);
   EXPECT_DOUBLE_EQ(p->behavior().dampings.at(0).coefficient, 5.0);
+  EXPECT_FALSE(p->behavior().dampings.at(0).structural);
+}
+
+TEST(Damping, StructuralWarnsAtItsTypeAndIndependentComponentsIsRefused) {
+  auto p = parse(
+      "*CONNECTOR BEHAVIOR, NAME=B\n"
+      "*CONNECTOR DAMPING, COMPONENT=1, TYPE=STRUCTURAL\n"
+      "5.\n"
+      "*CONNECTOR DAMPING, COMPONENT=2, INDEPENDENT COMPONENTS=POSITION\n"
+      "1\n"
+      "5., 0.1\n");
+  const Diagnostic& d = p->one(DiagCode::damping_structural_ignored);
+  expect_at(d, 2, 34);
+  EXPECT_TRUE(p->behavior().dampings.at(0).structural);
+  expect_at(p->one(DiagCode::unsupported_option), 4, 34);
+  // The component line is not read as a table row: no further diagnostic.
+  EXPECT_EQ(p->with(DiagCode::missing_field).size() + p->with(DiagCode::table_too_short).size(), 0u);
 }
 
 // ---------------------------------------------------------------- features
