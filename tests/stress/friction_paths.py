@@ -50,7 +50,7 @@ iterations of a converged increment (.sta), cutbacks, and the number of slipping
 
 Without line search, Newton cycles on load-driven paths: it alternates between forward and
 backward slip (the same residual and correction norms every iteration) when the normal force
-changes within an increment that ends in stick; about half of the load-driven paths then stop.
+changes within an increment that ends in stick; 40-50% of the load-driven paths then stop.
 With --per-deck 1 the rate per drive shows it; with --line-search 5 every path completes
 (2026-12-03). scripts/stress_friction.sh reports both.
 
