@@ -13,6 +13,7 @@
 #include "base/diagnostic.hpp"
 #include "src/model/model.hpp"
 #include "src/check/validate.hpp"
+#include "src/model/elasticity_queries.hpp"
 #include "src/check/validate_behavior_sections.hpp"
 
 namespace clinch {
@@ -43,31 +44,6 @@ SourceLoc elasticity_loc(const ConnectorElasticity& e) {
   return e.component_loc.valid() ? e.component_loc : e.loc;
 }
 
-// The components a potential attached to owner (kind, index) involves
-// (derived-components-and-potentials.md §2.8): its intrinsic components and the components of
-// every term of the derived components it names. 0 when there is no attached potential.
-std::uint8_t potential_components(const ConnectorBehavior& b, PotentialOwner::Kind kind,
-                                  std::size_t index) {
-  for (const PotentialOwner& o : b.potential_owners) {
-    if (o.kind != kind || o.index != static_cast<std::int32_t>(index)) continue;
-    if (o.potential < 0 || static_cast<std::size_t>(o.potential) >= b.potentials.size()) return 0;
-    std::uint8_t mask = 0;
-    for (const PotentialContribution& c :
-         b.potentials[static_cast<std::size_t>(o.potential)].contributions) {
-      if (!c.derived) {
-        mask |= bit(c.component);
-        continue;
-      }
-      for (const DerivedComponentTerm& t : b.derived_terms) {
-        if (t.name.key != c.derived_name.key) continue;
-        for (int k : t.components) mask |= bit(k);
-      }
-    }
-    return mask;
-  }
-  return 0;
-}
-
 class BehaviorChecker {
  public:
   // `available`: the components every section using the behaviour makes available (all six
@@ -84,7 +60,8 @@ class BehaviorChecker {
   }
 
  private:
-  // §2: at most one elasticity per component.
+  // §2: several elasticities on a component add; RIGID with any other elasticity on the same
+  // component is an error.
   void elasticities() {
     for (std::size_t k = 0; k < b_.elasticities.size(); ++k) {
       const ConnectorElasticity& e = b_.elasticities[k];
@@ -93,27 +70,40 @@ class BehaviorChecker {
         invalid_elasticity_ |= e.component > 0 ? bit(e.component) : kAllComponents;
         continue;
       }
+      const bool rigid = e.kind == ConnectorElasticity::Kind::Rigid;
       const std::uint8_t mask = covered(e);
       for (int c = 1; c <= 6; ++c) {
         if (!(mask & bit(c))) continue;
-        const int previous = elasticity_of_[c - 1];
-        if (previous < 0) {
-          elasticity_of_[c - 1] = static_cast<int>(k);
-          continue;
+        ComponentElasticity& on = elastic_[static_cast<std::size_t>(c - 1)];
+        const int clash = rigid ? on.first : on.rigid;
+        if (clash >= 0) {
+          Diagnostic& d = sink_.report(
+              DiagCode::elasticity_duplicate, elasticity_loc(e),
+              fmt::format("component {} of connector behavior '{}' has a RIGID elasticity and "
+                          "another elasticity; RIGID cannot be combined with another "
+                          "elasticity on the same component",
+                          c, b_.name.display));
+          d.notes.push_back({b_.elasticities[static_cast<std::size_t>(clash)].loc,
+                             "the other elasticity is here"});
+          break;  // one report per option
         }
-        const ConnectorElasticity& first = b_.elasticities[static_cast<std::size_t>(previous)];
-        Diagnostic& d = sink_.report(
-            DiagCode::elasticity_duplicate, elasticity_loc(e),
-            e.kind == ConnectorElasticity::Kind::Coupled ||
-                    first.kind == ConnectorElasticity::Kind::Coupled
-                ? fmt::format("component {} already has an elasticity in connector behavior "
-                              "'{}' (a coupled elasticity covers every component)",
-                              c, b_.name.display)
-                : fmt::format("component {} already has an elasticity in connector behavior "
-                              "'{}'",
-                              c, b_.name.display));
-        d.notes.push_back({first.loc, "previous elasticity is here"});
-        break;  // one report per option
+        if (on.first < 0) on.first = static_cast<int>(k);
+        switch (e.kind) {
+          case ConnectorElasticity::Kind::Rigid:
+            on.rigid = static_cast<int>(k);
+            break;
+          case ConnectorElasticity::Kind::Nonlinear:
+            if (on.nonlinear < 0) on.nonlinear = static_cast<int>(k);
+            break;
+          case ConnectorElasticity::Kind::Linear:
+            on.linear = true;
+            on.stiffness += e.stiffness;
+            break;
+          case ConnectorElasticity::Kind::Coupled:
+            on.linear = true;
+            on.stiffness += e.coupled[c - 1][c - 1];
+            break;
+        }
       }
     }
   }
@@ -138,18 +128,13 @@ class BehaviorChecker {
     }
   }
 
-  // The smallest elastic stiffness that acts on `component` (0: none known), for the
-  // softening limit of §6.1.
+  // The linear elastic stiffness on `component`, every definition added (0: none known), for
+  // the softening limit of §6.1; a rigid-plastic component has its stiff spring (§4.4).
   double stiffness_of(int component) const {
     if (component < 1 || component > 6) return 0;
-    const int k = elasticity_of_[component - 1];
-    if (k < 0) return 0;
-    const ConnectorElasticity& e = b_.elasticities[static_cast<std::size_t>(k)];
-    if (e.kind == ConnectorElasticity::Kind::Linear) return e.stiffness;
-    if (e.kind == ConnectorElasticity::Kind::Coupled) {
-      return e.coupled[component - 1][component - 1];
-    }
-    return 0;
+    const ComponentElasticity& on = elastic_[static_cast<std::size_t>(component - 1)];
+    if (on.rigid >= 0) return rigid_plastic_stiffness(b_, available_, component);
+    return on.linear ? on.stiffness : 0.0;
   }
 
   void plasticities() {
@@ -242,54 +227,50 @@ class BehaviorChecker {
     return false;
   }
 
-  // §2, §4.4, §6: a plastic component needs linear (uncoupled or coupled) elasticity.
+  // §2, §4.4, §6: a plastic component needs linear (uncoupled or coupled) elasticity, or RIGID
+  // elasticity (rigid-plastic), and no NONLINEAR elasticity. `where` locates the report.
+  // Returns false when the component broke the rule (reported).
+  bool plastic_component_elasticity(int c, SourceLoc where, const char* what) {
+    if (invalid_elasticity_ & bit(c)) return true;
+    const ComponentElasticity& on = elastic_[static_cast<std::size_t>(c - 1)];
+    if (on.nonlinear >= 0) {
+      Diagnostic& d = sink_.report(
+          DiagCode::plasticity_needs_linear_elasticity, where,
+          fmt::format("{} on component {} needs linear elasticity, but that component has a "
+                      "NONLINEAR elasticity",
+                      what, c));
+      d.notes.push_back({b_.elasticities[static_cast<std::size_t>(on.nonlinear)].loc,
+                         "elasticity defined here"});
+      return false;
+    }
+    if (on.rigid >= 0) {
+      // §4.4: the rigid part becomes a stiff spring, named so that a comparison can pin it.
+      sink_.report(DiagCode::rigid_plastic_stiffness, where,
+                   fmt::format("component {} is RIGID and plastic (rigid-plastic): its rigid part "
+                               "is a stiff spring of {:g}",
+                               c, rigid_plastic_stiffness(b_, available_, c)));
+      return true;
+    }
+    if (on.linear) return true;
+    sink_.report(DiagCode::plasticity_needs_linear_elasticity, where,
+                 fmt::format("{} on component {} needs a linear *CONNECTOR ELASTICITY on that "
+                             "component (it has none)",
+                             what, c));
+    return false;
+  }
+
   void needs_linear_elasticity_uncoupled(const ConnectorPlasticity& p) {
     const int c = p.component;
     if (!(available_ & bit(c))) return;
-    const int k = elasticity_of_[c - 1];
-    if (k < 0) {
-      if (invalid_elasticity_ & bit(c)) return;
-      sink_.report(DiagCode::plasticity_needs_linear_elasticity, p.component_loc,
-                   fmt::format("plasticity on component {} needs a linear *CONNECTOR ELASTICITY "
-                               "on that component (it has none)",
-                               c));
-      return;
-    }
-    const ConnectorElasticity& e = b_.elasticities[static_cast<std::size_t>(k)];
-    if (e.kind == ConnectorElasticity::Kind::Linear ||
-        e.kind == ConnectorElasticity::Kind::Coupled) {
-      return;
-    }
-    Diagnostic& d = sink_.report(
-        DiagCode::plasticity_needs_linear_elasticity, p.component_loc,
-        fmt::format("plasticity on component {} needs linear elasticity, but the elasticity of "
-                    "that component is {}",
-                    c, e.kind == ConnectorElasticity::Kind::Rigid ? "RIGID" : "NONLINEAR"));
-    d.notes.push_back({e.loc, "elasticity defined here"});
+    plastic_component_elasticity(c, p.component_loc, "plasticity");
   }
 
   void needs_linear_elasticity_coupled(const ConnectorPlasticity& p) {
     // The components a coupled plasticity involves come from its potential
     // (derived-components-and-potentials.md §2.8); each needs linear elasticity.
     for (int c = 1; c <= 6; ++c) {
-      if (!(coupled_components_ & bit(c)) || (invalid_elasticity_ & bit(c))) continue;
-      const int k = elasticity_of_[c - 1];
-      const ConnectorElasticity* e =
-          k >= 0 ? &b_.elasticities[static_cast<std::size_t>(k)] : nullptr;
-      if (e && (e->kind == ConnectorElasticity::Kind::Linear ||
-                e->kind == ConnectorElasticity::Kind::Coupled)) {
-        continue;
-      }
-      Diagnostic& d = sink_.report(
-          DiagCode::plasticity_needs_linear_elasticity, p.loc,
-          e ? fmt::format("coupled plasticity involves component {}, whose elasticity is {}; it "
-                          "needs linear elasticity",
-                          c, e->kind == ConnectorElasticity::Kind::Rigid ? "RIGID" : "NONLINEAR")
-            : fmt::format("coupled plasticity involves component {}, which has no linear "
-                          "*CONNECTOR ELASTICITY",
-                          c));
-      if (e) d.notes.push_back({e->loc, "elasticity defined here"});
-      return;
+      if (!(coupled_components_ & bit(c))) continue;
+      if (!plastic_component_elasticity(c, p.loc, "coupled plasticity")) return;
     }
     if (coupled_components_ || invalid_elasticity_) return;
     for (const ConnectorElasticity& e : b_.elasticities) {
@@ -414,7 +395,15 @@ class BehaviorChecker {
   const ConnectorBehavior& b_;
   std::uint8_t available_;
   DiagnosticSink& sink_;
-  std::array<int, 6> elasticity_of_{-1, -1, -1, -1, -1, -1};
+  // What the elasticities of the block put on each component (§2).
+  struct ComponentElasticity {
+    int first = -1;      // the first definition on it
+    int rigid = -1;      // a RIGID definition
+    int nonlinear = -1;  // the first NONLINEAR definition
+    bool linear = false;  // some linear (uncoupled or coupled) definition
+    double stiffness = 0;  // their diagonal stiffness, added
+  };
+  std::array<ComponentElasticity, 6> elastic_{};
   std::uint8_t invalid_elasticity_ = 0;
   std::uint8_t coupled_components_ = 0;  // components of the coupled plasticity's potential
 };

@@ -115,6 +115,19 @@ TEST(ElasticBehavior, LinearUncoupledForcesAndTangent) {
   EXPECT_EQ(e.out.tangent, expected);
 }
 
+// §2: definitions on one component add: two linear ones and a NONLINEAR table on component 1,
+// f1 = (1000 + 500)·u1 + table(u1) with the E2 table, and the tangent likewise.
+TEST(ElasticBehavior, DefinitionsOnAComponentAdd) {
+  const auto law = make_elastic_behavior(
+      behavior_of({linear(1, 1000.0), linear(1, 500.0), e2_nonlinear(1, Extrapolation::Linear)}),
+      kAll);
+  ASSERT_NE(law, nullptr);
+  const Evaluation e = integrate(*law, kOld, motion(0.15));
+  EXPECT_NEAR(e.out.force[0], 1500.0 * 0.15 + 125.0, 1e-12);
+  EXPECT_NEAR(e.out.tangent(0, 0), 1500.0 + 500.0, 1e-12);
+  expect_fd_tangent(*law, kOld, motion(0.15, 0.01), 2000.0);
+}
+
 TEST(ElasticBehavior, LinearUncoupledFiniteDifferenceTangent) {
   const auto law = make_elastic_behavior(
       behavior_of({linear(1, 1000.0), linear(2, 50.0), linear(6, 3.0e4)}), kAll);

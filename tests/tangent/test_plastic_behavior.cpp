@@ -548,5 +548,20 @@ TEST(PlasticBehavior, NonlinearElasticComponentKeepsItsLaw) {
   EXPECT_EQ(p->law->components(), 0x03);
 }
 
+// behaviors.md §4.4 rigid-plastic: RIGID plus plasticity on component 1 and no linear elasticity
+// of that kind: the rigid part is the stiff spring k_rigid = 1.0e8, then the yield force 100.
+TEST(PlasticBehavior, RigidPlasticUsesTheStiffSpring) {
+  auto p = make_law("*CONNECTOR ELASTICITY, COMPONENT=1, RIGID\n"
+                    "*CONNECTOR PLASTICITY, COMPONENT=1\n*CONNECTOR HARDENING\n100., 0.\n",
+                    0b000001);
+  ASSERT_TRUE(p->law);
+  Driver d(*p->law);
+  EXPECT_NEAR(d.step(vec(5e-7)).out.force[0], 50.0, 1e-9);
+  const Evaluation e = d.step(vec(1e-5));
+  EXPECT_NEAR(e.out.force[0], 100.0, 1e-9);
+  EXPECT_NEAR(d.state().plastic_motion[0], 1e-5 - 1e-6, 1e-15);
+  d.expect_fd_tangent(vec(2e-5), 1e-6, 1e8, 0b000001);
+}
+
 }  // namespace
 }  // namespace clinch

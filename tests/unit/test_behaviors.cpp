@@ -258,27 +258,27 @@ TEST(Elasticity, TemperatureColumn) {
   expect_at(field->one(DiagCode::unsupported_dependencies), 3, 12);
 }
 
-TEST(Elasticity, DuplicateComponentAndCoupledExclusion) {
+TEST(Elasticity, DefinitionsOnAComponentAddButRigidStandsAlone) {
   auto p = parse(
       "*CONNECTOR BEHAVIOR, NAME=B\n"
       "*CONNECTOR ELASTICITY, COMPONENT=1\n"
       "1000.\n"
       "*CONNECTOR ELASTICITY, COMPONENT=1\n"
       "2000.\n"
-      "*CONNECTOR BEHAVIOR, NAME=C\n"
-      "*CONNECTOR ELASTICITY, COMPONENT=3\n"
-      "1000.\n"
       "*CONNECTOR ELASTICITY\n"
       "1., 0., 1., 0., 0., 1., 0., 0.\n"
       "0., 1., 0., 0., 0., 0., 1., 0.\n"
-      "0., 0., 0., 0., 1.\n");
+      "0., 0., 0., 0., 1.\n"
+      "*CONNECTOR BEHAVIOR, NAME=C\n"
+      "*CONNECTOR ELASTICITY, COMPONENT=3\n"
+      "1000.\n"
+      "*CONNECTOR ELASTICITY, COMPONENT=3, RIGID\n");
   auto found = p->with(DiagCode::elasticity_duplicate);
-  ASSERT_EQ(found.size(), 2u) << p->dump();
-  expect_at(*found[0], 4, 34);
+  ASSERT_EQ(found.size(), 1u) << p->dump();
+  expect_at(*found[0], 13, 34);
   ASSERT_EQ(found[0]->notes.size(), 1u);
-  EXPECT_EQ(found[0]->notes[0].loc.line, 2u);
-  expect_at(*found[1], 9, 1);
-  EXPECT_NE(found[1]->message.find("component 3"), std::string::npos);
+  EXPECT_EQ(found[0]->notes[0].loc.line, 11u);
+  EXPECT_NE(found[0]->message.find("component 3"), std::string::npos);
 }
 
 // ---------------------------------------------------------------- reference (§3)

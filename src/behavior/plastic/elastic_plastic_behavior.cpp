@@ -292,7 +292,7 @@ std::unique_ptr<Behavior> make_connector_behavior(const ConnectorBehavior& behav
     }
   }
   std::unique_ptr<Behavior> nonlinear_law =
-      nonlinear != 0 ? make_elastic_behavior(behavior, nonlinear) : nullptr;
+      nonlinear != 0 ? make_nonlinear_elastic_behavior(behavior, nonlinear) : nullptr;
   return std::make_unique<ElasticPlasticBehavior>(linear, std::move(uncoupled), std::move(coupled),
                                                   std::move(nonlinear_law));
 }
