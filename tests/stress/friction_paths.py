@@ -24,8 +24,9 @@ is *STATIC with automatic increments or *STATIC, DIRECT (chosen per deck).
 Each step sets R_n and R_p of *CONTROLS, PARAMETERS=FIELD to --residual (default 1e-9) and the
 zero-force threshold epsilon to 1e-12: with clinch's defaults (0.005, 0.02 after 9 iterations,
 1e-5) an increment converges with an imbalance of a few force units, or, when the loads pass
-through zero, on the correction test alone, too much for the equilibrium check below. --line-search N adds
-*CONTROLS, PARAMETERS=LINE SEARCH with N_ls = N.
+through zero, on the correction test alone, too much for the equilibrium check below. Without
+--line-search the decks leave the line search to clinch (on, N_ls = 5, in steps with friction);
+--line-search N adds *CONTROLS, PARAMETERS=LINE SEARCH with N_ls = N (0 turns it off).
 
 Every run must either complete (exit 0, last status line COMPLETED) or stop cleanly (exit 2 with a
 last status line FAILED: ...). Anything else fails the test. Per connector, over every history row
@@ -48,11 +49,11 @@ The report gives, per connection type, paths and decks completed, increments, Ne
 iterations of a converged increment (.sta), cutbacks, and the number of slipping and lift-off
 (applied normal load exactly 0) connector rows checked; then the rate per drive.
 
-Without line search, Newton cycles on load-driven paths: it alternates between forward and
-backward slip (the same residual and correction norms every iteration) when the normal force
-changes within an increment that ends in stick; 40-50% of the load-driven paths then stop.
-With --per-deck 1 the rate per drive shows it; with --line-search 5 every path completes
-(2026-12-03). scripts/stress_friction.sh reports both.
+Without line search (--line-search 0), Newton cycles on load-driven paths: it alternates between
+forward and backward slip (the same residual and correction norms every iteration) when the
+normal force changes within an increment that ends in stick; 40-50% of the load-driven paths then
+stop. That is why clinch turns a line search on in steps with friction. With --per-deck 1 the
+rate per drive shows it. scripts/stress_friction.sh reports both.
 
 Usage: friction_paths.py CLINCH [--paths N] [--per-deck M] [--seed S] [--work DIR] [--min-rate R]
                          [--max-cutback-fraction F] [--rtol T] [--residual R_n]
@@ -270,7 +271,7 @@ def write_deck(path, connectors, control, residual, line_search):
     # threshold epsilon tiny: at a lift-off the largest force can drop below the default
     # 1e-5 q_bar, and then only the correction test applies.
     lines += ["*CONTROLS, PARAMETERS=FIELD", f"{residual:g}, , , , {residual:g}, 1e-12,"]
-    if line_search:
+    if line_search is not None:
         lines += ["*CONTROLS, PARAMETERS=LINE SEARCH", f"{line_search},"]
     for c in connectors:
         lines += c.step_lines()
@@ -401,8 +402,9 @@ def main():
     parser.add_argument("--modes", type=lambda v: v.split(","), default=MODES,
                         help="comma-separated drives to use (direct,series,load); a connector "
                              "drawn with another drive gets the first")
-    parser.add_argument("--line-search", type=int, default=0,
-                        help="N_ls of *CONTROLS, PARAMETERS=LINE SEARCH in the step (0: off)")
+    parser.add_argument("--line-search", type=int, default=None,
+                        help="N_ls of *CONTROLS, PARAMETERS=LINE SEARCH in the step (0: off; "
+                             "default: none in the deck, clinch's choice)")
     args = parser.parse_args()
     work = args.work or tempfile.mkdtemp(prefix="clinch-friction-")
     os.makedirs(work, exist_ok=True)
