@@ -127,7 +127,7 @@ class PlanBuilder {
            model_.behaviors.behaviors[static_cast<std::size_t>(section.behavior_index)].stops) {
         if (!has_component(section.available, stop.component)) continue;
         stops[static_cast<std::size_t>(stop.component - 1)] = {stop.lower, stop.upper};
-        any = true;
+        any = any || stop.lower || stop.upper;
       }
       if (any) {
         plan_.stop_tables.push_back(std::make_unique<ConnectorStops>(stops));

@@ -112,7 +112,8 @@ std::vector<HistoryColumns::Request> HistoryColumns::expand_step(
     std::size_t least = names_.size();  // CTF and CU of every component
     for (const ConnectorRecord& r : plan_.connectors) {
       connectors.push_back(r.element);
-      least += 2 * static_cast<std::size_t>(std::popcount(static_cast<unsigned>(r.available | r.constrained)));
+      const auto components = static_cast<unsigned>(r.available | r.constrained);
+      least += 2 * static_cast<std::size_t>(std::popcount(components));
     }
     // Reserved once rather than regrown (and rehashed) step by step over 10⁶ connectors.
     names_.reserve(least);
