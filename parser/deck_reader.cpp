@@ -880,6 +880,11 @@ ReadStatus read_deck_file(const std::string& path, SourceManager& sources, Model
     return ReadStatus::IoError;
   }
   Reader(sources, model, sink).run(*idx);
+  if (!sources.read_error().empty()) {
+    // The deck read is not the deck on disk: its diagnostics would describe a truncated deck.
+    if (io_error) *io_error = sources.read_error();
+    return ReadStatus::IoError;
+  }
   validate_model(model, sink);
   return ReadStatus::Ok;
 }

@@ -15,7 +15,8 @@ namespace clinch {
 enum class ReadStatus { Ok, IoError };
 
 // Reads a deck file into `model` (a path, or "-" for standard input: SourceManager::load_deck).
-// IoError means the deck itself could not be opened or read (exit 3); every other problem is a
+// IoError means the deck itself could not be opened or read, or a read of it or of a file it
+// includes failed part-way (exit 3; `io_error` names the file); every other problem is a
 // diagnostic in `sink`. Runs whole-model validation too.
 ReadStatus read_deck_file(const std::string& path, SourceManager& sources, Model& model,
                           DiagnosticSink& sink, std::string* io_error);

@@ -15,9 +15,11 @@ LineScanner scan_file(const SourceManager& sources, std::uint32_t index, Diagnos
                       bool checks = true);
 
 // Called once the scanner is at End: E0108 if the file could not be read whole as it was when it
-// was opened (removed, truncated or grown in between, or a read error), at the *INCLUDE or
-// INPUT= value that opened it, or at the last line of the deck itself.
-void check_read_whole(const SourceManager& sources, const LineScanner& scanner, std::uint32_t index,
+// was opened (removed, truncated or grown in between), at the *INCLUDE or INPUT= value that
+// opened it, or at the last line of the deck itself. A read error (EIO, a sysfs attribute that
+// fails) is no fault of the deck but an I/O error: it goes to sources.note_read_error, naming
+// the file, and the command exits with 3 (read_deck_file).
+void check_read_whole(SourceManager& sources, const LineScanner& scanner, std::uint32_t index,
                       DiagnosticSink& sink);
 
 }  // namespace clinch

@@ -13,6 +13,15 @@ FileWindow::FileWindow(const std::string& path, std::size_t capacity)
     error_ = std::strerror(errno);
     return;
   }
+  allocate();
+}
+
+FileWindow::FileWindow(std::FILE* handle, std::size_t capacity)
+    : handle_(handle), capacity_(std::max<std::size_t>(capacity, 2)) {
+  if (handle_) allocate();
+}
+
+void FileWindow::allocate() {
   std::setvbuf(handle_, nullptr, _IONBF, 0);  // reads go straight into the window
   buffer_.reset(new char[capacity_]);
 }
@@ -35,8 +44,12 @@ bool FileWindow::refill(std::size_t keep) {
     std::memmove(buffer_.get(), buffer_.get() + keep, kept);
   }
   filled_ = kept;
+  errno = 0;
   const std::size_t got = std::fread(buffer_.get() + filled_, 1, capacity_ - filled_, handle_);
-  if (std::ferror(handle_)) read_failed_ = true;
+  if (std::ferror(handle_)) {
+    read_failed_ = true;
+    error_ = errno != 0 ? std::strerror(errno) : "read error";
+  }
   filled_ += got;
   bytes_read_ += got;
   return got > 0;

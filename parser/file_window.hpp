@@ -19,11 +19,14 @@ class FileWindow {
 
   // Opens `path` for reading; ok() is false (and error() says why) when it cannot be opened.
   explicit FileWindow(const std::string& path, std::size_t capacity = kDefaultCapacity);
+  // Reads an open stream, which it closes (tests inject one whose reads fail, fopencookie).
+  explicit FileWindow(std::FILE* handle, std::size_t capacity = kDefaultCapacity);
   ~FileWindow();
   FileWindow(const FileWindow&) = delete;
   FileWindow& operator=(const FileWindow&) = delete;
 
   bool ok() const { return handle_ != nullptr; }
+  // Why the file could not be opened, or why a read failed (the system's reason).
   const std::string& error() const { return error_; }
   // The bytes in the window: what the last refill kept, then what it read.
   std::string_view contents() const { return {buffer_.get(), filled_}; }
@@ -36,6 +39,8 @@ class FileWindow {
   std::uint64_t bytes_read() const { return bytes_read_; }
 
  private:
+  void allocate();
+
   std::FILE* handle_ = nullptr;
   std::string error_;
   std::unique_ptr<char[]> buffer_;

@@ -94,6 +94,10 @@ class LineScanner {
   // is complete only if it still has the size it had when it was opened.
   std::uint64_t bytes_read() const { return window_ ? window_->bytes_read() : text_.size(); }
   bool read_failed() const { return window_ && window_->read_failed(); }
+  // The system's reason for a read error ("" when none).
+  std::string_view read_error() const {
+    return read_failed() ? std::string_view(window_->error()) : std::string_view();
+  }
   // Why the file could not be opened ("" when it was, or is in memory).
   std::string_view open_error() const {
     return window_ && !window_->ok() ? std::string_view(window_->error()) : std::string_view();

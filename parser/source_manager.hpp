@@ -72,6 +72,12 @@ class SourceManager {
   // (comment lines included): a bound on the data lines of its block; 0 when not recorded.
   std::size_t lines_after_keyword(SourceLoc keyword) const;
   std::uint32_t file_count() const { return static_cast<std::uint32_t>(files_.size()); }
+  // The first read error of a file on disk, part-way through it (check_read_whole): an I/O
+  // error (exit 3), not a fault of the deck. "" when every read succeeded.
+  void note_read_error(std::string message) {
+    if (read_error_.empty()) read_error_ = std::move(message);
+  }
+  const std::string& read_error() const { return read_error_; }
   // The text of one physical line without its line end ("" when out of range).
   std::string_view line_text(SourceLoc loc) const;
   // "deck.inp:12:3"
@@ -88,6 +94,7 @@ class SourceManager {
   // Reads a released file back (text() and line_text()).
   void restore(SourceFile& file) const;
   mutable std::vector<SourceFile> files_;
+  std::string read_error_;
 };
 
 }  // namespace clinch

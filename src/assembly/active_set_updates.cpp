@@ -13,7 +13,7 @@ bool update_stops(const AnalysisPlan& plan, const IncrementConditions& condition
     const ConnectorResult& out = state.results[c];
     const ComponentMask motion = conditions.connector(c).motion;
     for (int i = 1; i <= 6; ++i) {
-      const ConnectorStopLimits& stop = r.stops[static_cast<std::size_t>(i - 1)];
+      const ConnectorStopLimits& stop = r.stop(i);
       if ((!stop.lower && !stop.upper) || has_component(motion, i)) continue;
       auto& status = state.active_sets[c].status[static_cast<std::size_t>(i - 1)];
       if (status == static_cast<std::uint8_t>(StopStatus::Locked)) continue;

@@ -74,6 +74,8 @@ class PlanBuilder {
                                                        [](const Step& s) { return !s.nlgeom; });
     section_laws_.assign(model_.sections.connector_sections.size(), {});
     section_laws_built_.assign(model_.sections.connector_sections.size(), false);
+    section_stops_.assign(model_.sections.connector_sections.size(), nullptr);
+    section_stops_built_.assign(model_.sections.connector_sections.size(), false);
     for (const SpringProperty& spring : model_.sections.springs) {
       plan_.spring_laws.push_back(spring.valid ? std::optional<SpringLaw>(SpringLaw(spring))
                                                : std::nullopt);
@@ -117,6 +119,29 @@ class PlanBuilder {
       }
     }
     return section_laws_[index];
+  }
+
+  // The stops of a section's connectors on their available components, built once per section
+  // (a table in every record took 190 bytes per connector); null when it has none.
+  const ConnectorStops* stops_of_section(std::int32_t s) {
+    const auto index = static_cast<std::size_t>(s);
+    if (!section_stops_built_[index]) {
+      section_stops_built_[index] = true;
+      const ConnectorSection& section = model_.sections.connector_sections[index];
+      ConnectorStops stops;
+      bool any = false;
+      for (const ConnectorStop& stop :
+           model_.behaviors.behaviors[static_cast<std::size_t>(section.behavior_index)].stops) {
+        if (!has_component(section.available, stop.component)) continue;
+        stops[static_cast<std::size_t>(stop.component - 1)] = {stop.lower, stop.upper};
+        any = any || stop.lower || stop.upper;
+      }
+      if (any) {
+        plan_.stop_tables.push_back(std::make_unique<ConnectorStops>(stops));
+        section_stops_[index] = plan_.stop_tables.back().get();
+      }
+    }
+    return section_stops_[index];
   }
 
   bool add_connector(std::int32_t e, std::string* error) {
@@ -185,10 +210,10 @@ class PlanBuilder {
           if (v && has_component(r.available, i + 1)) r.reference[i] = *v;
         }
       }
-      for (const ConnectorStop& stop : behavior->stops) {
-        if (!has_component(r.available, stop.component)) continue;
-        r.stops[static_cast<std::size_t>(stop.component - 1)] = {stop.lower, stop.upper};
-        multiplied |= component_bit(stop.component);
+      r.stops = stops_of_section(s);
+      for (int i = 1; i <= 6; ++i) {
+        const ConnectorStopLimits& stop = r.stop(i);
+        if (stop.lower || stop.upper) multiplied |= component_bit(i);
       }
       for (const ConnectorLock& lock : behavior->locks) {
         const ComponentMask locks =
@@ -265,6 +290,8 @@ class PlanBuilder {
   std::vector<ComponentMask> motions_;
   std::vector<std::vector<const Behavior*>> section_laws_;
   std::vector<bool> section_laws_built_;
+  std::vector<const ConnectorStops*> section_stops_;
+  std::vector<bool> section_stops_built_;
   double length_tolerance_ = 1e-8;
 };
 

@@ -49,6 +49,8 @@ struct LawStack {
 struct ConnectorStopLimits {
   std::optional<double> lower, upper;  // on the position p_i (behaviors.md §5.1)
 };
+// The stop limits of components 1…6 of a section's connectors, shared by them.
+using ConnectorStops = std::array<ConnectorStopLimits, 6>;
 
 struct ConnectorLockRule {
   int component = 0;  // tested component
@@ -64,7 +66,7 @@ struct ConnectorRecord {
   LawStack laws;
   ComponentMask available = 0, constrained = 0, rigid = 0;
   Vector6 reference = Vector6::Zero();  // ref_i: u = p − ref (behaviors.md §3)
-  std::array<ConnectorStopLimits, 6> stops;
+  const ConnectorStops* stops = nullptr;  // into AnalysisPlan::stop_tables; null: no stops
   std::vector<ConnectorLockRule> locks;
   // Local columns 0…11 of [u_a, θ_a, u_b, θ_b] that have an equation, in order; then the
   // components that own a multiplier.
@@ -73,6 +75,12 @@ struct ConnectorRecord {
   std::array<std::int8_t, 6> multiplier_components{};
   int multiplier_count = 0;
   LocalEquations local;
+
+  // The stop limits of component i (1…6); neither limit when the connector has no stops.
+  const ConnectorStopLimits& stop(int i) const {
+    static const ConnectorStopLimits kNone;
+    return stops ? (*stops)[static_cast<std::size_t>(i - 1)] : kNone;
+  }
 };
 
 struct SpringRecord {
@@ -101,6 +109,7 @@ struct AnalysisPlan {
   bool friction = false;
   bool rate_dependent_friction = false;
   std::vector<std::unique_ptr<Behavior>> behaviors;  // the laws of each section's behaviour
+  std::vector<std::unique_ptr<ConnectorStops>> stop_tables;  // one per section that has stops
   std::vector<ConnectorRecord> connectors;
   std::vector<std::int32_t> connector_of_element;  // global element → connector record (−1)
   std::vector<std::optional<SpringLaw>> spring_laws;  // per *SPRING (empty when invalid)

@@ -17,7 +17,7 @@ AnalysisState::AnalysisState(const AnalysisPlan& plan)
     : x(Eigen::VectorXd::Zero(plan.dofs.equations())),
       x_n(x),
       dx_n(x),
-      rotation(plan.dofs.nodes(), Matrix3::Identity()),
+      rotation(plan.small_displacement ? 0 : plan.dofs.nodes(), Matrix3::Identity()),
       rotation_n(rotation),
       history(plan.history_size, 0.0),
       history_n(history),

@@ -51,7 +51,10 @@ struct AnalysisState {
   void revert();
 
   Eigen::VectorXd x, x_n, dx_n;               // solution, last converged, last converged increment
-  std::vector<Matrix3> rotation, rotation_n;  // NLGEOM node rotations (identity otherwise)
+  // NLGEOM node rotations, per node; empty (the identity) until the run first goes NLGEOM
+  // (ConnectorSystem::set_nlgeom): a small-displacement run saves 144 bytes per node and their
+  // copy at each commit.
+  std::vector<Matrix3> rotation, rotation_n;
   std::vector<double> history, history_n;
   std::vector<Vector6> position_n;  // converged connector positions (angle branches, §3.6)
   std::vector<ConnectorActiveSet> active_sets;

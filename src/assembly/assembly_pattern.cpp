@@ -8,12 +8,26 @@ AssemblyPattern build_assembly_pattern(const AnalysisPlan& plan, bool symmetric)
   AssemblyPattern p;
   p.symmetric = symmetric;
   SparsityBuilder builder(plan.dofs.equations(), symmetric);
+  // An element's local entries: its upper triangle, or all of them; the vectors are sized once.
+  auto entries = [&](const LocalEquations& l) {
+    const auto n = static_cast<std::size_t>(l.count);
+    return symmetric ? n * (n + 1) / 2 : n * n;
+  };
+  std::size_t local_entries = 0, local_diagonals = 0;
+  auto count = [&](const LocalEquations& l) {
+    local_entries += entries(l);
+    local_diagonals += static_cast<std::size_t>(l.count);
+  };
+  for (const ConnectorRecord& r : plan.connectors) count(r.local);
+  for (const SpringRecord& r : plan.springs) count(r.local);
+  builder.reserve(local_entries - local_diagonals);
   auto couple = [&](const LocalEquations& l) {
     builder.couple(std::span<const int>(l.equation.data(), static_cast<std::size_t>(l.count)));
   };
   for (const ConnectorRecord& r : plan.connectors) couple(r.local);
   for (const SpringRecord& r : plan.springs) couple(r.local);
   p.matrix = builder.build();
+  p.positions.reserve(local_entries);
   auto place = [&](const LocalEquations& l) {
     const std::size_t offset = p.positions.size();
     for (int b = 0; b < l.count; ++b) {

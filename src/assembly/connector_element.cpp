@@ -22,9 +22,9 @@ bool constraint_gap(const ConnectorRecord& r, const ConnectorConditions& conditi
   } else if (status == StopStatus::Locked) {
     g = k.position[i - 1] - set.lock_position[i - 1];
   } else if (status == StopStatus::Lower) {
-    g = k.position[i - 1] - *r.stops[slot].lower;
+    g = k.position[i - 1] - *r.stop(i).lower;
   } else if (status == StopStatus::Upper) {
-    g = k.position[i - 1] - *r.stops[slot].upper;
+    g = k.position[i - 1] - *r.stop(i).upper;
   } else {
     return false;
   }
@@ -42,7 +42,7 @@ NodePose node_pose(const DofMap& dofs, const AnalysisState& state, std::int32_t 
     const int er = dofs.equation(node, 4 + k);
     if (er >= 0) p.theta[k] = state.x[er];
   }
-  p.rotation = state.rotation[static_cast<std::size_t>(node)];
+  if (!state.rotation.empty()) p.rotation = state.rotation[static_cast<std::size_t>(node)];
   return p;
 }
 

@@ -69,6 +69,7 @@ void ConnectorSystem::use_storage(bool symmetric) {
 void ConnectorSystem::set_nlgeom(bool nlgeom) {
   if (nlgeom && !context_.nlgeom) {
     // Small rotations become finite ones (NLGEOM stays on once set, keywords.md §13).
+    state_.rotation.assign(plan_.dofs.nodes(), Matrix3::Identity());
     for (std::size_t node = 0; node < plan_.dofs.nodes(); ++node) {
       if (!(plan_.dofs.active(static_cast<std::int32_t>(node)) & kRotationDofs)) continue;
       Vector3 theta = Vector3::Zero();

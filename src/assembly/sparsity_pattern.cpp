@@ -6,37 +6,48 @@
 namespace clinch {
 
 SparsityBuilder::SparsityBuilder(int equations, bool symmetric)
-    : symmetric_(symmetric),
-      rows_of_column_(static_cast<std::size_t>(equations)) {
-  for (int i = 0; i < equations; ++i) rows_of_column_[static_cast<std::size_t>(i)].push_back(i);
-}
+    : symmetric_(symmetric), count_(static_cast<std::size_t>(equations), 1) {}
+
+void SparsityBuilder::reserve(std::size_t couplings) { entries_.reserve(couplings); }
 
 void SparsityBuilder::couple(std::span<const int> equations) {
   for (int a : equations) {
     if (a < 0) continue;
     for (int b : equations) {
       if (b < 0 || b == a || (symmetric_ && b > a)) continue;
-      rows_of_column_[static_cast<std::size_t>(a)].push_back(b);
+      entries_.emplace_back(a, b);
+      ++count_[static_cast<std::size_t>(a)];
     }
   }
 }
 
 SparseMatrix SparsityBuilder::build() {
   SparseMatrix m;
-  m.n = static_cast<int>(rows_of_column_.size());
+  m.n = static_cast<int>(count_.size());
   m.symmetric_upper = symmetric_;
-  m.col_ptr.assign(static_cast<std::size_t>(m.n) + 1, 0);
-  for (std::size_t c = 0; c < rows_of_column_.size(); ++c) {
-    std::vector<int>& rows = rows_of_column_[c];
-    std::sort(rows.begin(), rows.end());
-    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
-    m.col_ptr[c + 1] = m.col_ptr[c] + static_cast<int>(rows.size());
+  // Each column's rows in a slot of its count (the diagonal first), then sorted and made unique,
+  // moving the columns down over the duplicates removed.
+  std::vector<std::size_t> next(count_.size() + 1, 0);
+  for (std::size_t c = 0; c < count_.size(); ++c) next[c + 1] = next[c] + count_[c];
+  std::vector<int> rows(next.back());
+  for (std::size_t c = 0; c < count_.size(); ++c) rows[next[c]] = static_cast<int>(c);
+  std::vector<std::size_t> fill(next.begin(), next.end() - 1);
+  for (const auto& [column, row] : entries_) rows[++fill[static_cast<std::size_t>(column)]] = row;
+  std::vector<std::pair<int, int>>().swap(entries_);
+  m.col_ptr.assign(count_.size() + 1, 0);
+  std::size_t kept = 0;
+  for (std::size_t c = 0; c < count_.size(); ++c) {
+    const auto first = rows.begin() + static_cast<std::ptrdiff_t>(next[c]);
+    const auto last = rows.begin() + static_cast<std::ptrdiff_t>(next[c + 1]);
+    std::sort(first, last);
+    const auto end = std::unique(first, last);
+    const auto to = rows.begin() + static_cast<std::ptrdiff_t>(kept);
+    if (to != first) std::copy(first, end, to);  // down, to before `first`
+    kept += static_cast<std::size_t>(end - first);
+    m.col_ptr[c + 1] = static_cast<int>(kept);
   }
-  m.row_idx.reserve(static_cast<std::size_t>(m.col_ptr.back()));
-  for (std::vector<int>& rows : rows_of_column_) {
-    m.row_idx.insert(m.row_idx.end(), rows.begin(), rows.end());
-    std::vector<int>().swap(rows);
-  }
+  rows.resize(kept);
+  m.row_idx = std::move(rows);
   m.values.assign(m.row_idx.size(), 0.0);
   return m;
 }

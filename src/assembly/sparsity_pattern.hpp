@@ -6,6 +6,7 @@
 #pragma once
 
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "src/linalg/linear_solver.hpp"
@@ -15,14 +16,20 @@ namespace clinch {
 class SparsityBuilder {
  public:
   SparsityBuilder(int equations, bool symmetric);
+  // Room for this many entries off the diagonal (what the couple calls will add).
+  void reserve(std::size_t couplings);
   // Couples every pair of the (non-negative) equations; negative entries are skipped.
   void couple(std::span<const int> equations);
   // The pattern (upper triangle, row ≤ column, when symmetric), values zero.
   SparseMatrix build();
 
  private:
+  // The entries are kept as coupled, (column, row) off the diagonal, and sorted into columns
+  // once by counting: flat arrays, where a vector per equation cost an allocation or more each
+  // (3·10⁶ of them for a 10⁶-connector chain).
   bool symmetric_;
-  std::vector<std::vector<int>> rows_of_column_;
+  std::vector<int> count_;  // entries of each column, its diagonal included
+  std::vector<std::pair<int, int>> entries_;
 };
 
 // Index into `values` of entry (row, column) (of (column, row) when row > column in upper-triangle

@@ -179,10 +179,9 @@ std::optional<ConnectorKinematics> ConnectorKinematics::create(const ConnectorSe
   linear->b0 = initial.b;
   linear->ok = initial.ok;
   linear->error = initial.message;
-  std::array<LinearNorm, 2>& norms = linear->norms;
   if (k.translation_ == Translation::Radial && k.initial_position_[0] <= setup.length_tolerance &&
       has_component(k.existing_, 1)) {
-    LinearNorm& norm = norms[0];
+    LinearNorm& norm = linear->norms.emplace_back();
     norm.row = 0;
     norm.tolerance = setup.length_tolerance;
     for (int i = 0; i < 2; ++i) {
@@ -192,7 +191,7 @@ std::optional<ConnectorKinematics> ConnectorKinematics::create(const ConnectorSe
     }
   }
   if (k.rotation_ == Rotation::FlexionTorsion && k.initial_position_[3] <= kFlexionTolerance) {
-    LinearNorm& norm = norms[1];
+    LinearNorm& norm = linear->norms.emplace_back();
     norm.row = 3;
     norm.tolerance = kFlexionTolerance;
     const std::array<Jet<6>, 2> v = flexion_vector(relative_rotation_jet<6>(k.ea0_, k.eb0_, 0, 3));
@@ -393,7 +392,6 @@ void ConnectorKinematics::evaluate_linear(const NodePose& a, const NodePose& b,
   out.change.noalias() = linear.b0 * q;
   out.position = initial_position_ + out.change;
   for (const LinearNorm& norm : linear.norms) {
-    if (norm.row < 0) continue;
     const Eigen::Vector2d v = norm.value + norm.b * q;
     const double length = v.norm();
     out.position[norm.row] = length;

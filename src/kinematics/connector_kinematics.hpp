@@ -92,7 +92,8 @@ class ConnectorKinematics {
     Matrix6x12 b0 = Matrix6x12::Zero();
     bool ok = true;
     std::string error;  // why B0 could not be formed (the initial pose is singular)
-    std::array<LinearNorm, 2> norms;
+    // Only where they apply (none for most connectors: 450 bytes each saved per connector).
+    std::vector<LinearNorm> norms;
   };
 
   ConnectorKinematics() = default;

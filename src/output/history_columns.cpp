@@ -1,6 +1,7 @@
 #include "src/output/history_columns.hpp"
 
 #include <algorithm>
+#include <bit>
 
 #include "src/model/output_variables.hpp"
 #include "src/model/potential_queries.hpp"
@@ -50,12 +51,14 @@ HistoryColumns::HistoryColumns(const Model& model, const AnalysisPlan& plan)
 }
 
 std::size_t HistoryColumns::column(const std::string& name, Column c) {
-  if (const auto it = column_of_name_.find(std::string_view(name)); it != column_of_name_.end()) {
-    return *it;
+  if (index_names_) {
+    if (const auto it = column_of_name_.find(std::string_view(name)); it != column_of_name_.end()) {
+      return *it;
+    }
   }
   names_.push_back(name);
   columns_.push_back(std::move(c));
-  column_of_name_.insert(names_.size() - 1);
+  if (index_names_) column_of_name_.insert(names_.size() - 1);
   return names_.size() - 1;
 }
 
@@ -64,6 +67,16 @@ void HistoryColumns::expand_steps() {
   for (const Step& step : model_.history.steps) {
     for (const OutputRequest& r : step.outputs) any_request |= !r.field;
     any_request |= !step.prints.empty();
+  }
+  if (!any_request) {
+    // The default output (output-variables.md §4), the same in every step: one column per
+    // connector, variable and component, so no name repeats. Built once and without the name
+    // index, which over 10⁶ connectors took longer than the columns themselves.
+    index_names_ = false;
+    const std::vector<Request> requests = expand_step({}, {}, true);
+    index_names_ = true;
+    step_requests_.assign(model_.history.steps.size(), requests);
+    return;
   }
   // Requests carry over (keywords.md §13, §17, §18): OP=NEW drops earlier *OUTPUT requests,
   // REPLACE the one with the same name; the first *NODE PRINT (*EL PRINT) of a step replaces the
@@ -89,7 +102,7 @@ void HistoryColumns::expand_steps() {
     }
     std::vector<const PrintRequest*> prints = node_prints;
     prints.insert(prints.end(), element_prints.begin(), element_prints.end());
-    step_requests_.push_back(expand_step(outputs, prints, !any_request));
+    step_requests_.push_back(expand_step(outputs, prints, false));
   }
 }
 
@@ -101,7 +114,17 @@ std::vector<HistoryColumns::Request> HistoryColumns::expand_step(
     // output-variables.md §4: CTF, CU, then the variables of the behaviours in use, per
     // connector in label order.
     std::vector<std::int32_t> connectors;
-    for (const ConnectorRecord& r : plan_.connectors) connectors.push_back(r.element);
+    connectors.reserve(plan_.connectors.size());
+    std::size_t least = names_.size();  // CTF and CU of every component
+    for (const ConnectorRecord& r : plan_.connectors) {
+      connectors.push_back(r.element);
+      const auto components = static_cast<unsigned>(r.available | r.constrained);
+      least += 2 * static_cast<std::size_t>(std::popcount(components));
+    }
+    // Reserved once rather than regrown (and rehashed) step by step over 10⁶ connectors.
+    names_.reserve(least);
+    columns_.reserve(least);
+    if (index_names_) column_of_name_.reserve(least);
     std::sort(connectors.begin(), connectors.end(), [&](std::int32_t a, std::int32_t b) {
       const Element& ea = model_.elements[static_cast<std::size_t>(a)];
       const Element& eb = model_.elements[static_cast<std::size_t>(b)];
@@ -118,7 +141,7 @@ std::vector<HistoryColumns::Request> HistoryColumns::expand_step(
       std::vector<std::string> variables = {"CTF", "CU"};
       if (features.plasticity) variables.insert(variables.end(), {"CUP", "CUPEQ"});
       bool stops = !r.locks.empty();
-      for (const ConnectorStopLimits& s : r.stops) stops |= s.lower || s.upper;
+      stops |= r.stops != nullptr;
       if (stops) variables.insert(variables.end(), {"CRF", "CSLST"});
       if (features.friction) variables.insert(variables.end(), {"CSF", "CNF", "CASU"});
       if (features.kinematic_hardening) variables.push_back("CALPHAF");
@@ -321,10 +344,12 @@ double HistoryColumns::value(const Column& c, ConnectorSystem& system) {
   for (const Term& t : c.terms) {
     switch (t.source) {
       case Source::Connector: {
-        // The connector's results once per row: an element has many columns.
-        auto [it, inserted] = row_outputs_.try_emplace(t.index);
-        if (inserted) it->second = system.connector_output(static_cast<std::size_t>(t.index));
-        const ConnectorOutput& out = it->second;
+        // The connector's results once per run of its columns: an element has many.
+        if (t.index != output_connector_) {
+          output_ = system.connector_output(static_cast<std::size_t>(t.index));
+          output_connector_ = t.index;
+        }
+        const ConnectorOutput& out = output_;
         if (c.derived >= 0) {
           // §4: CDERF on the force of the context (plasticity: the elastic-plastic force),
           // CDERU on the constitutive motions.
@@ -365,7 +390,7 @@ double HistoryColumns::value(const Column& c, ConnectorSystem& system) {
 void HistoryColumns::evaluate(ConnectorSystem& system, int increment, bool last,
                               std::vector<double>& values) {
   values.resize(columns_.size(), 0.0);
-  row_outputs_.clear();
+  output_connector_ = -1;  // the state has changed since the last row
   for (const Request& r : step_requests_[step_]) {
     const bool request_due =
         increment == 0 || (r.frequency > 0 && (last || increment % r.frequency == 0));

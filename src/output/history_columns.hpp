@@ -9,7 +9,6 @@
 #include <map>
 #include <string>
 #include <string_view>
-#include <unordered_map>
 #include <unordered_set>
 #include <utility>
 #include <vector>
@@ -99,12 +98,16 @@ class HistoryColumns {
   std::vector<std::string> names_;
   std::unordered_set<std::size_t, NameHash, NameEqual> column_of_name_{0, NameHash{&names_},
                                                                        NameEqual{&names_}};
+  bool index_names_ = true;  // false while the default output is built (its names are unique)
   std::vector<Column> columns_;
   std::vector<std::vector<Request>> step_requests_;
   std::size_t step_ = 0;
   std::vector<DerivedComponent> derived_;  // compiled once per (behaviour, name)
-  // The current row's evaluation of each connector that has columns.
-  std::unordered_map<std::int32_t, ConnectorOutput> row_outputs_;
+  // The current row's evaluation of the last connector read: a connector's columns are adjacent
+  // in the default output and in each identifier of a request, so each is evaluated about once
+  // per row without holding every connector's output (a map of them took 0.5 kB per connector).
+  std::int32_t output_connector_ = -1;
+  ConnectorOutput output_;
   std::map<std::pair<std::int32_t, std::string>, std::int32_t> derived_index_;
 };
 

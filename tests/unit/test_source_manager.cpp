@@ -1,11 +1,16 @@
 // The file table and the scanning of its files (parser/source_manager.hpp, parser/file_scan.hpp):
 // a file on disk is streamed through a window and read back when a diagnostic shows one of its
 // lines; a file that changed size in between shows no line rather than a wrong one, and one that
-// changed while it was read is an error; in-memory buffers are kept; the first pass records where
+// changed while it was read is an error, and one whose read fails part-way is an I/O error (not a
+// diagnostic); in-memory buffers are kept; the first pass records where
 // each block's keyword line is, which bounds the block's data lines.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -162,6 +167,55 @@ TEST(FileScan, FileRemovedBeforeItWasReadIsAnError) {
   ASSERT_EQ(sink.diagnostics().size(), 1u);
   EXPECT_NE(sink.diagnostics()[0].message.find("No such file or directory"), std::string::npos)
       << sink.diagnostics()[0].message;
+}
+
+// A stream that gives the first `good` bytes of `text`, then fails every read with EIO, as a
+// disk with a bad sector does part-way through a file.
+struct FailingStream {
+  std::string text;
+  std::size_t good = 0;
+  std::size_t offset = 0;
+};
+
+std::FILE* open_failing_stream(FailingStream& stream) {
+  cookie_io_functions_t functions{};
+  functions.read = [](void* cookie, char* buffer, std::size_t size) -> ssize_t {
+    auto& s = *static_cast<FailingStream*>(cookie);
+    if (s.offset >= s.good) {
+      errno = EIO;
+      return -1;
+    }
+    const std::size_t n = std::min(size, s.good - s.offset);
+    std::memcpy(buffer, s.text.data() + s.offset, n);
+    s.offset += n;
+    return static_cast<ssize_t>(n);
+  };
+  return fopencookie(&stream, "r", functions);
+}
+
+// A read error part-way through a file on disk ends its lines where the error came, and is
+// recorded as an I/O error that names the file and the system's reason (read_deck_file then
+// fails with exit 3), not as a diagnostic of the deck.
+TEST(FileScan, ReadErrorPartWayIsAnIoErrorNamingTheFile) {
+  const std::string text = "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n3, 2., 0., 0.\n";
+  const TemporaryDeck deck(text);
+  SourceManager sources;
+  const std::optional<std::uint32_t> index = load(deck, sources);
+  ASSERT_TRUE(index);
+  FailingStream stream{text, 20};  // "*NODE\n1, 0., 0., 0.\n" and nothing after
+  std::FILE* handle = open_failing_stream(stream);
+  ASSERT_NE(handle, nullptr);
+  DiagnosticSink sink;
+  LineScanner scanner(std::make_unique<FileWindow>(handle, 8), *index, sink);
+  const std::vector<ScannedLine> lines = scan_all(scanner);
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_EQ(lines[1].text, "1, 0., 0., 0.");
+  EXPECT_TRUE(scanner.read_failed());
+  EXPECT_EQ(scanner.read_error(), std::strerror(EIO));
+  check_read_whole(sources, scanner, *index, sink);
+  EXPECT_TRUE(sink.diagnostics().empty());
+  EXPECT_EQ(sources.read_error(), "cannot read '" + deck.path() + "' after 20 bytes: " +
+                                      std::strerror(EIO));
 }
 
 // The bound a block's handler reserves by: every line up to the next keyword line, comments
