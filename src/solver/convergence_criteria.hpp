@@ -28,6 +28,9 @@ class ConvergenceCriteria {
 
  private:
   const FieldControls& field(int f) const { return f == 0 ? controls_.translation : controls_.rotation; }
+  // q̄ of the converged increments of field f (q̄₀ before any carried force).
+  double time_average(int f) const;
+  bool carries_force(const IterationNorms& norms, int f) const;
   Controls controls_;
   double flux_sum_[2] = {0, 0};
   int flux_count_[2] = {0, 0};
