@@ -148,6 +148,7 @@ void ConnectorSystem::apply_prescribed_rotations() {
 
 EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* tangent) {
   internal_.setZero();
+  element_forces_ = {};
   if (predicting_) predictor_.setZero();
   if (tangent) std::fill(tangent->values.begin(), tangent->values.end(), 0.0);
   state_.request = {};
@@ -167,6 +168,8 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
           local.active[static_cast<std::size_t>(j)];
     }
     scatter(r.local, pattern_->connector_offset[c], local, !r.laws.symmetric, tangent);
+    add_force_entries(r.local, r.column_count, local);
+    add_component_forces(state_.results[c]);
   }
   for (std::size_t s = 0; s < plan_.springs.size(); ++s) {
     const SpringRecord& spring = plan_.springs[s];
@@ -178,6 +181,7 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
                                  qualified_label(model_, e.instance, e.label))};
     }
     scatter(spring.local, pattern_->spring_offset[s], local, false, tangent);
+    add_force_entries(spring.local, spring.local.count, local);
   }
   residual = internal_ - conditions_.external();
   if (predicting_ && tangent) residual += predictor_;
@@ -212,6 +216,27 @@ bool ConnectorSystem::connector_finite(std::size_t c, const LocalSystem& local) 
                           sum, [](double s, double v) { return s + v * 0.0; });
   }
   return sum == 0.0;
+}
+
+int ConnectorSystem::force_field(int equation) const {
+  return plan_.dofs.field(equation) == EquationField::Translation ? 0 : 1;
+}
+
+void ConnectorSystem::add_force_entries(const LocalEquations& l, int nodal_count,
+                                        const LocalSystem& local) {
+  // The nodal rows only: the multiplier rows hold constraint violations, not forces.
+  for (int a = 0; a < nodal_count; ++a) {
+    element_forces_.add(force_field(l.equation[static_cast<std::size_t>(a)]), std::abs(local.r[a]));
+  }
+}
+
+void ConnectorSystem::add_component_forces(const ConnectorResult& result) {
+  // Components 1–3 are forces, 4–6 moments (connection-types.md §1.4). CEF holds the RIGID
+  // multipliers, CRF those of the constrained components, stops, locks and connector motions.
+  for (const Vector6* forces :
+       {&result.elastic, &result.viscous, &result.friction, &result.multiplier, &result.applied}) {
+    for (int i = 0; i < 6; ++i) element_forces_.add(i < 3 ? 0 : 1, std::abs((*forces)[i]));
+  }
 }
 
 void ConnectorSystem::scatter(const LocalEquations& l, std::size_t offset,
@@ -291,8 +316,8 @@ void ConnectorSystem::finish_prescribed_correction(const Eigen::VectorXd& dx) {
 
 void ConnectorSystem::measure(const Eigen::VectorXd& residual, const Eigen::VectorXd* correction,
                               IterationNorms& norms) const {
-  double flux_sum[2] = {0, 0};
-  int flux_count[2] = {0, 0};
+  // q̃ (keywords.md §16 field 1): the entries of the elements, then the applied loads.
+  ForceEntries entries = element_forces_;
   double residual_sq = 0, correction_sq = 0;
   for (int eq = 0; eq < size(); ++eq) {
     const EquationField field = plan_.dofs.field(eq);
@@ -307,11 +332,7 @@ void ConnectorSystem::measure(const Eigen::VectorXd& residual, const Eigen::Vect
       continue;
     }
     const int f = field == EquationField::Translation ? 0 : 1;
-    const double force = std::abs(internal_[eq]) + std::abs(conditions_.external()[eq]);
-    if (force > 0) {
-      flux_sum[f] += force;
-      ++flux_count[f];
-    }
+    entries.add(f, std::abs(conditions_.external()[eq]));
     if (conditions_.is_prescribed(eq)) continue;
     norms.largest_residual[f] = max_keeping_nan(norms.largest_residual[f], std::abs(residual[eq]));
     residual_sq += residual[eq] * residual[eq];
@@ -323,7 +344,7 @@ void ConnectorSystem::measure(const Eigen::VectorXd& residual, const Eigen::Vect
       correction_sq += dx * dx;
     }
   }
-  for (int f = 0; f < 2; ++f) norms.flux[f] = flux_count[f] ? flux_sum[f] / flux_count[f] : 0.0;
+  for (int f = 0; f < 2; ++f) norms.flux[f] = entries.mean(f);
   norms.resolution[0] = 1e-12 * plan_.length_scale;
   norms.resolution[1] = 1e-12;
   const double force_scale = std::max(norms.flux[0], norms.flux[1] / plan_.length_scale);

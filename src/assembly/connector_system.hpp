@@ -86,6 +86,11 @@ class ConnectorSystem final : public NonlinearProblem {
   void scatter(const LocalEquations& l, std::size_t offset, const LocalSystem& local,
                bool symmetrize, SparseMatrix* tangent);
   bool connector_finite(std::size_t c, const LocalSystem& local) const;
+  // The entries of q̃ (ForceEntries): an element's nodal contributions, and a connector's
+  // component forces.
+  int force_field(int equation) const;
+  void add_force_entries(const LocalEquations& l, int nodal_count, const LocalSystem& local);
+  void add_component_forces(const ConnectorResult& result);
   bool is_finite_rotation(int equation) const;
   void snap_to_target(int equation, double before);
   void update_prescribed_predictor();
@@ -106,6 +111,7 @@ class ConnectorSystem final : public NonlinearProblem {
   std::vector<SpringResult> springs_;
   std::vector<std::uint8_t> multiplier_active_;
   Eigen::VectorXd internal_;
+  ForceEntries element_forces_;  // of the last evaluation
   // K_fp·(target − u)_p while prescribed DOFs are short of their targets (predicting_).
   Eigen::VectorXd predictor_;
   bool predicting_ = false;

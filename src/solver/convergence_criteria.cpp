@@ -6,14 +6,22 @@ namespace clinch {
 
 void ConvergenceCriteria::start_step(const Controls& controls) { controls_ = controls; }
 
-namespace {
-
-// The field has a flux above round-off (IterationNorms::force_resolution).
-bool carries_force(const IterationNorms& norms, int f) {
-  return norms.flux[f] > 0 && norms.flux[f] > norms.force_resolution[f];
+double ConvergenceCriteria::time_average(int f) const {
+  // Before any force has appeared, q̄ is q̄₀ (§16 field 3).
+  return flux_count_[f] > 0 ? flux_sum_[f] / flux_count_[f] : field(f).initial_flux;
 }
 
-}  // namespace
+// The field carries force in this iteration: its flux is above round-off beside the other field
+// (IterationNorms::force_resolution) and above ε times q̄ of the increments so far (§16 field 6).
+// A flux at most ε·q̄ is zero: it takes the zero-force test and does not join q̄, so that a
+// model without forces (a mechanism turned by a connector motion alone) does not take the
+// round-off of its forces, 1e-30, for its q̄ and then fail Rₙ on a residual of the same round-off.
+bool ConvergenceCriteria::carries_force(const IterationNorms& norms, int f) const {
+  const double flux = norms.flux[f];
+  if (!(flux > 0 && flux > norms.force_resolution[f])) return false;
+  const FieldControls& c = field(f);
+  return flux > c.zero_flux * (c.user_flux ? *c.user_flux : time_average(f));
+}
 
 void ConvergenceCriteria::accept_increment(const IterationNorms& norms) {
   for (int f = 0; f < 2; ++f) {
@@ -26,14 +34,8 @@ void ConvergenceCriteria::accept_increment(const IterationNorms& norms) {
 double ConvergenceCriteria::average_flux(const IterationNorms& norms, int f) const {
   const FieldControls& c = field(f);
   if (c.user_flux) return *c.user_flux;
-  double sum = flux_sum_[f];
-  int count = flux_count_[f];
-  if (carries_force(norms, f)) {
-    sum += norms.flux[f];
-    ++count;
-  }
-  // Before any force has appeared, q̄ is q̄₀ (§16 field 3).
-  return count > 0 ? sum / count : c.initial_flux;
+  if (!carries_force(norms, f)) return time_average(f);
+  return (flux_sum_[f] + norms.flux[f]) / (flux_count_[f] + 1);
 }
 
 bool ConvergenceCriteria::converged(const IterationNorms& norms, int iteration) const {

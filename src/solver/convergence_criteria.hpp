@@ -1,7 +1,9 @@
 // The equilibrium tests of *CONTROLS, PARAMETERS=FIELD (keywords.md §16): residual against the
 // time-averaged force q̄, correction against the increment of the solution, the linear-increment
 // and zero-force shortcuts, and clinch's constraint-violation test. Newton asks it one question
-// per iteration; the step driver keeps q̄ up to date across increments.
+// per iteration; the step driver keeps q̄ up to date across increments. q̃ is the problem's
+// (IterationNorms::flux): the mean of its force entries, element by element, so that forces that
+// cancel at a node still count (ForceEntries, docs/decisions.md).
 #pragma once
 
 #include "src/model/history_model.hpp"
@@ -26,6 +28,9 @@ class ConvergenceCriteria {
 
  private:
   const FieldControls& field(int f) const { return f == 0 ? controls_.translation : controls_.rotation; }
+  // q̄ of the converged increments of field f (q̄₀ before any carried force).
+  double time_average(int f) const;
+  bool carries_force(const IterationNorms& norms, int f) const;
   Controls controls_;
   double flux_sum_[2] = {0, 0};
   int flux_count_[2] = {0, 0};

@@ -20,11 +20,31 @@ struct EvalStatus {
   std::string message;  // why an element could not be evaluated (names the element)
 };
 
+// The force entries whose mean is q̃, the spatial average force of keywords.md §16 field 1 (per
+// field: 0 = forces, 1 = moments). As Abaqus's spatial average flux, q̃ averages the magnitudes
+// of the entries, not of their sums at the nodes: each element's contribution at each of its
+// nodal DOFs, each nonzero component force of a connector (CEF, CVF, CSF, CRF: the multipliers
+// of its constraints and motions, CCF: its connector load) and each applied nodal load. Forces
+// that cancel at a node (a bolt preloaded against its clamped plates, a connector motion against
+// a spring in parallel, a self-equilibrated frame whose reactions cancel) still count, so that
+// q̃ has the size of the forces the model carries rather than of the round-off of their sum.
+// Reactions are not entries of their own: they are the elements' entries at the held DOFs.
+struct ForceEntries {
+  double sum[2] = {0, 0};
+  int count[2] = {0, 0};
+  void add(int field, double magnitude) {
+    if (!(magnitude > 0)) return;
+    sum[field] += magnitude;
+    ++count[field];
+  }
+  double mean(int field) const { return count[field] ? sum[field] / count[field] : 0.0; }
+};
+
 // Per-field measures of one iteration (keywords.md §16): index 0 = translations and forces,
 // 1 = rotations and moments.
 struct IterationNorms {
   double largest_residual[2] = {0, 0};    // r_max over free DOFs of the field
-  double flux[2] = {0, 0};                // q̃: mean magnitude of the nonzero nodal forces
+  double flux[2] = {0, 0};                // q̃: the mean of the field's ForceEntries
   double largest_correction[2] = {0, 0};  // c_max of the last correction
   double largest_increment[2] = {0, 0};   // largest change of the solution in the increment
   // Corrections up to this size are round-off (1e-12·L̄ for translations, 1e-12 rad for

@@ -65,5 +65,37 @@ TEST(ConvergenceCriteria, RoundOffCorrectionOfAFieldThatDoesNotMovePasses) {
   EXPECT_FALSE(criteria.converged(n, 2));
 }
 
+// A model with no force anywhere (a linkage turned by a connector motion alone, issue 18): every
+// entry of q̃ is round-off, 1e-30, and so is the residual. Such a flux is at most ε·q̄₀ = 1e-7:
+// zero flux (§16 field 6), which takes the correction test and leaves q̄ at q̄₀. Before, the
+// round-off was taken for q̄ (it is far above 1e-12 of itself) and Rₙ failed at every iteration.
+TEST(ConvergenceCriteria, RoundOffFluxOfAModelWithoutForcesIsZeroFlux) {
+  ConvergenceCriteria criteria{Controls{}};
+  IterationNorms n;
+  n.flux[0] = 6e-31;
+  n.largest_residual[0] = 6e-31;
+  n.largest_increment[0] = 2.0;
+  n.largest_correction[0] = 1.4e-15;
+  n.resolution[0] = n.resolution[1] = 1e-11;
+  n.force_resolution[0] = n.force_resolution[1] = 6e-43;
+  EXPECT_TRUE(criteria.converged(n, 3));
+  EXPECT_DOUBLE_EQ(criteria.average_flux(n, 0), 0.01);
+  criteria.accept_increment(n);
+  EXPECT_DOUBLE_EQ(criteria.average_flux(n, 0), 0.01);
+  // A flux and residual of 1e-9 (above ε_l·q̄₀ = 1e-10, so not passed as linear) are zero flux
+  // as well: a round-off correction passes, a real one (above C_ε = 1e-3 of the increment) not.
+  n.flux[0] = n.largest_residual[0] = 1e-9;
+  n.force_resolution[0] = n.force_resolution[1] = 1e-21;
+  EXPECT_TRUE(criteria.converged(n, 3));
+  n.largest_correction[0] = 0.02;
+  EXPECT_FALSE(criteria.converged(n, 3));
+  // Once forces of 90 have set q̄, a flux of 1e-4 (≤ ε·q̄ = 9e-4) is zero flux too and does
+  // not pull q̄ down.
+  criteria.accept_increment(loaded_translations());
+  IterationNorms small = loaded_translations();
+  small.flux[0] = 1e-4;
+  EXPECT_DOUBLE_EQ(criteria.average_flux(small, 0), 90.0);
+}
+
 }  // namespace
 }  // namespace clinch
