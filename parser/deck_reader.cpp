@@ -524,6 +524,17 @@ class Reader {
     return sink_.error_count() == errors_before;
   }
 
+  // A behaviour or amplitude block refused for its parameters still names what it defines:
+  // references to that name are not reported again (input-syntax.md §10). -1 marks the name.
+  void remember_refused_name(const KeywordSpec& spec, const KeywordLine& line) {
+    for (const KeywordParam& p : line.params) {
+      if (p.name != "NAME" || !p.has_value || p.value.text.empty()) continue;
+      const std::string key = name_key(p.value.text, p.value.quoted);
+      if (spec.name == "CONNECTOR BEHAVIOR") model_.behaviors.by_key.emplace(key, -1);
+      if (spec.name == "AMPLITUDE") model_.history.amplitude_by_key.emplace(key, -1);
+    }
+  }
+
   // Marks every `<name>` in the text of a line that is not read as used, without reporting.
   void mark_references_used(std::string_view text) {
     for (std::size_t lt = text.find('<'); lt != std::string_view::npos;
@@ -623,7 +634,10 @@ class Reader {
     block_params_ = ParamSet();
     const bool params_ok = validate_params_with_input(*spec, block_line_, block_params_);
     if (!update_structure_before(*spec, block_line_)) return;
-    if (!params_ok || substitution_failed_) return;
+    if (!params_ok || substitution_failed_) {
+      remember_refused_name(*spec, block_line_);
+      return;
+    }
     block_spec_ = spec;
     skip_block_ = false;
     block_data_lines_ = 0;

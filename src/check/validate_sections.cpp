@@ -279,7 +279,9 @@ class SectionValidator {
     if (section.behavior.empty()) return;
     BehaviorModel& behaviors = model_.behaviors;
     auto it = behaviors.by_key.find(section.behavior.key);
-    if (it != behaviors.by_key.end() && it->second >= 0 &&
+    // -1: the block of that name was refused and reported (input-syntax.md §10).
+    if (it != behaviors.by_key.end() && it->second < 0) return;
+    if (it != behaviors.by_key.end() &&
         static_cast<std::size_t>(it->second) < behaviors.behaviors.size()) {
       ConnectorBehavior& behavior = behaviors.behaviors[static_cast<std::size_t>(it->second)];
       behavior.used = true;
