@@ -322,15 +322,22 @@ class Reader {
   void report_unknown_keyword(const KeywordLine& line) {
     Diagnostic& d = sink_.report(DiagCode::unknown_keyword, line.loc,
                                  fmt::format("unknown keyword '*{}'", line.spelled));
+    // The abbreviation note only when the name is a prefix of exactly one keyword: a prefix of
+    // several is no abbreviation Abaqus would have expanded either (input-syntax.md §2).
+    const std::string* expansion = nullptr;
+    int prefix_of = 0;
     for (const std::string& candidate : registry_.display_names()) {
       std::string folded = fold_name(candidate.substr(1));
-      if (folded.size() > line.name.size() && folded.rfind(line.name, 0) == 0 &&
-          line.name.size() >= 3) {
-        d.notes.push_back(
-            {line.loc, fmt::format("keywords cannot be abbreviated; the full name is '{}'",
-                                   candidate)});
-        return;
+      if (folded.size() > line.name.size() && folded.rfind(line.name, 0) == 0) {
+        ++prefix_of;
+        expansion = &candidate;
       }
+    }
+    if (prefix_of == 1 && line.name.size() >= 3) {
+      d.notes.push_back(
+          {line.loc, fmt::format("keywords cannot be abbreviated; the full name is '{}'",
+                                 *expansion)});
+      return;
     }
     if (auto guess = closest_match(fmt::format("*{}", line.spelled), registry_.display_names())) {
       d.notes.push_back({line.loc, fmt::format("did you mean '{}'?", *guess)});
@@ -517,6 +524,27 @@ class Reader {
     return sink_.error_count() == errors_before;
   }
 
+  // A behaviour or amplitude block refused for its parameters still names what it defines:
+  // references to that name are not reported again (input-syntax.md §10). -1 marks the name.
+  void remember_refused_name(const KeywordSpec& spec, const KeywordLine& line) {
+    for (const KeywordParam& p : line.params) {
+      if (p.name != "NAME" || !p.has_value || p.value.text.empty()) continue;
+      const std::string key = name_key(p.value.text, p.value.quoted);
+      if (spec.name == "CONNECTOR BEHAVIOR") model_.behaviors.by_key.emplace(key, -1);
+      if (spec.name == "AMPLITUDE") model_.history.amplitude_by_key.emplace(key, -1);
+    }
+  }
+
+  // Marks every `<name>` in the text of a line that is not read as used, without reporting.
+  void mark_references_used(std::string_view text) {
+    for (std::size_t lt = text.find('<'); lt != std::string_view::npos;
+         lt = text.find('<', lt + 1)) {
+      const std::size_t gt = text.find('>', lt + 1);
+      if (gt == std::string_view::npos) return;
+      parameters_.use(text.substr(lt + 1, gt - lt - 1));
+    }
+  }
+
   void substitute(Field& field) {
     if (field.quoted) return;
     const std::string& t = field.text;
@@ -564,6 +592,11 @@ class Reader {
     if (!spec || (!spec->behavior_suboption && spec->level != KeywordLevel::Anywhere)) {
       position_.in_behavior = false;
     }
+    // A block that is refused as a whole still uses the parameters it names: they are not
+    // reported unused (input-syntax.md §6.4 item 6, §10 "follows only from an earlier error").
+    for (const KeywordParam& p : kl.params) {
+      if (p.has_value) mark_references_used(p.value.text);
+    }
     if (!spec) {
       report_unknown_keyword(kl);
       return;
@@ -575,6 +608,18 @@ class Reader {
     }
     if (!check_level(*spec, kl)) return;
     if (spec->keyword_class == KeywordClass::NoEffect) {
+      // A parameter that would change the analysis makes the keyword an error (*RESTART, READ:
+      // input-syntax.md §9).
+      for (const KeywordParam& p : kl.params) {
+        for (std::string_view refused : spec->refused_params) {
+          if (p.name == fold_name(refused)) {
+            sink_.report(DiagCode::unsupported_option, p.loc,
+                         fmt::format("*{}, {} is not supported by clinch: {}", spec->name,
+                                     refused, spec->refused_reason));
+            return;
+          }
+        }
+      }
       if (warned_no_effect_.insert(kl.name).second) {
         sink_.report(DiagCode::keyword_ignored, kl.loc,
                      fmt::format("'*{}' has no effect in clinch and is ignored", spec->name));
@@ -589,7 +634,10 @@ class Reader {
     block_params_ = ParamSet();
     const bool params_ok = validate_params_with_input(*spec, block_line_, block_params_);
     if (!update_structure_before(*spec, block_line_)) return;
-    if (!params_ok || substitution_failed_) return;
+    if (!params_ok || substitution_failed_) {
+      remember_refused_name(*spec, block_line_);
+      return;
+    }
     block_spec_ = spec;
     skip_block_ = false;
     block_data_lines_ = 0;
@@ -665,7 +713,10 @@ class Reader {
       }
       return;
     }
-    if (skip_block_ || !block_spec_) return;
+    if (skip_block_ || !block_spec_ || block_spec_->data == DataMode::Skip) {
+      mark_references_used(text);
+      return;
+    }
     if (input_used_) {
       if (!blank && !data_line_reported_) {
         data_line_reported_ = true;

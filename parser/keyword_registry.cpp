@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <stdexcept>
+
 #include "parser/keywords/keyword_families.hpp"
 
 namespace clinch {
@@ -21,7 +23,9 @@ const KeywordRegistry& KeywordRegistry::instance() {
 
 void KeywordRegistry::add(KeywordSpec spec) {
   auto owned = std::make_unique<KeywordSpec>(std::move(spec));
-  by_name_[fold_name(owned->name)] = owned.get();
+  if (!by_name_.emplace(fold_name(owned->name), owned.get()).second) {
+    throw std::logic_error(fmt::format("keyword *{} registered twice", owned->name));
+  }
   display_names_.push_back(fmt::format("*{}", owned->name));
   specs_.push_back(std::move(owned));
 }

@@ -116,7 +116,13 @@ class AmplitudeHandler : public KeywordHandler {
   }
 
   void end(BlockContext& ctx) override {
-    if (skip_) return;
+    if (skip_) {
+      // Refused with its name known: references to it stay silent (input-syntax.md §10).
+      if (!amplitude_.name.empty()) {
+        ctx.model().history.amplitude_by_key.emplace(amplitude_.name.key, -1);
+      }
+      return;
+    }
     Amplitude& a = amplitude_;
     const std::string& name = a.name.display;
     if (numbers_.empty()) {
@@ -157,7 +163,9 @@ class AmplitudeHandler : public KeywordHandler {
     HistoryModel& history = ctx.model().history;
     const auto index = static_cast<std::int32_t>(history.amplitudes.size());
     auto [it, inserted] = history.amplitude_by_key.emplace(a.name.key, index);
-    if (!inserted) {
+    if (!inserted && it->second < 0) {
+      it->second = index;  // an earlier block of that name was refused
+    } else if (!inserted) {
       ctx.report(DiagCode::duplicate_name, ctx.params().loc("NAME", true),
                  fmt::format("amplitude '{}' is already defined", name))
           .notes.push_back({history.amplitudes[static_cast<std::size_t>(it->second)].loc,

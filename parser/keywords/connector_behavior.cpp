@@ -31,7 +31,8 @@ class BehaviorHandler : public KeywordHandler {
     } else {
       behavior.name = *name;
       auto found = model.by_key.find(name->key);
-      if (found != model.by_key.end()) {
+      // -1: a block of that name was refused (its parameters failed); this one defines it.
+      if (found != model.by_key.end() && found->second >= 0) {
         const ConnectorBehavior& first = model.behaviors[static_cast<std::size_t>(found->second)];
         Diagnostic& d =
             ctx.report(DiagCode::duplicate_name, *ctx.params().value("NAME"),
@@ -39,7 +40,7 @@ class BehaviorHandler : public KeywordHandler {
         d.notes.push_back({first.name.loc, "previous definition is here"});
         behavior.referable = false;
       } else {
-        model.by_key.emplace(name->key, static_cast<std::int32_t>(model.behaviors.size()));
+        model.by_key[name->key] = static_cast<std::int32_t>(model.behaviors.size());
       }
     }
     model.behaviors.push_back(std::move(behavior));

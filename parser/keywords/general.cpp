@@ -57,6 +57,11 @@ std::vector<KeywordSpec> general_keyword_specs() {
   specs.push_back(std::move(parameter));
 
   specs.push_back(no_effect("PREPRINT", KeywordLevel::Model));
+  // Abaqus/CAE writes *Restart, write, frequency=0 into every step; only READ matters.
+  KeywordSpec restart = no_effect("RESTART", KeywordLevel::ModelOrHistory);
+  restart.refused_params = {"READ"};
+  restart.refused_reason = "clinch cannot start from a restart of an earlier analysis";
+  specs.push_back(std::move(restart));
   specs.push_back(no_effect("FILE FORMAT", KeywordLevel::ModelOrHistory));
   specs.push_back(no_effect("MONITOR", KeywordLevel::History));
   specs.push_back(no_effect("PRINT", KeywordLevel::History));
@@ -81,9 +86,17 @@ std::vector<KeywordSpec> general_keyword_specs() {
         "PARAMETER TABLE", "PARAMETER TABLE TYPE", "PARAMETER SHAPE VARIATION",
         "CONNECTOR UNIAXIAL BEHAVIOR", "CHANGE FRICTION", "SURFACE", "SURFACE INTERACTION",
         "CONTACT PAIR", "CONTACT", "TIE", "RIGID BODY", "SURFACE BEHAVIOR", "GRAVITY",
-        "USER MATERIAL", "DEPVAR", "USER ELEMENT", "MODEL CHANGE", "RESTART READ", "DAMPING",
+        "USER MATERIAL", "DEPVAR", "USER ELEMENT", "MODEL CHANGE", "DAMPING",
         "NODAL THICKNESS", "NORMAL", "ELEMENT MATRIX OUTPUT", "SUBMODEL", "DSFLUX", "CFLUX",
-        "FILM", "RADIATE", "CONNECTOR ELEMENT PROPERTY"}) {
+        "FILM", "RADIATE", "CONNECTOR ELEMENT PROPERTY", "DISTRIBUTING COUPLING",
+        "KINEMATIC COUPLING", "SHELL GENERAL SECTION", "COHESIVE SECTION", "GASKET SECTION",
+        "HYPERELASTIC", "VISCOELASTIC", "CREEP", "DAMAGE INITIATION", "DAMAGE EVOLUTION",
+        "EMBEDDED ELEMENT", "PRE-TENSION SECTION", "FASTENER", "FASTENER PROPERTY",
+        "CONTACT PROPERTY ASSIGNMENT", "CONTACT INCLUSIONS", "CONTACT CONTROLS", "CLEARANCE",
+        "GEOSTATIC", "SOILS", "RANDOM RESPONSE", "RESPONSE SPECTRUM",
+        "SUBSTRUCTURE GENERATE", "MATRIX GENERATE", "INERTIA RELIEF", "PHYSICAL CONSTANTS",
+        "BASE MOTION", "ELEMENT PROPERTIES", "NODAL ENERGY RATE", "ADAPTIVE MESH",
+        "DSECURRENT", "RELEASE", "MOTION", "INITIAL STATE", "IMPORT", "MAP SOLUTION"}) {
     specs.push_back(not_supported(name));
   }
   return specs;

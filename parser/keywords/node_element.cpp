@@ -94,10 +94,14 @@ constexpr ElementTypeInfo kElementTypes[] = {
 };
 
 // Element types other codes know that clinch does not (E0210 rather than E0208).
+// Abaqus and CalculiX element families (beams B21-B33, shells, solids, trusses, membranes, rigid,
+// cohesive, gasket, heat transfer, acoustic, infinite, fluid, user elements).
 constexpr std::string_view kKnownUnsupportedPrefixes[] = {
-    "C3D", "C2D", "CPE", "CPS", "CAX", "S3", "S4", "S8", "B3", "T2D", "T3D", "MASS", "ROTARYI",
-    "GAP", "DASHPOT", "SPRINGA", "CONN", "R3D", "R2D", "RB", "M3D", "SC", "DC", "CGAX", "CCL",
-    "JOINT", "ITS", "ELBOW", "PIPE", "FRAME", "CONN3D2", "DCOUP", "U"};
+    "C3D", "C2D", "CPE", "CPS", "CAX", "CGAX", "CCL", "S3", "S4", "S8", "S9", "SAX", "STRI",
+    "SC", "SFM", "B2", "B3", "PIPE", "ELBOW", "FRAME", "T2D", "T3D", "TAX", "M3D", "MAX", "MGAX",
+    "MASS", "ROTARYI", "HEATCAP", "GAP", "ITS", "ISL", "DASHPOT", "SPRING", "CONN", "JOINT",
+    "DCOUP", "KCOUP", "R3D", "R2D", "RAX", "RB", "COH", "GK", "DC", "DS", "AC", "CIN", "ACIN",
+    "F2D", "F3D", "FAX", "FC3D", "WARP", "PSI", "EMC", "Q3D", "U", "VU"};
 
 class ElementHandler : public KeywordHandler {
  public:
@@ -120,6 +124,11 @@ class ElementHandler : public KeywordHandler {
                  fmt::format("element type '{}' is {} (supported: CONN3D2, CONN2D2, SPRINGA, "
                              "SPRING1, SPRING2)",
                              type->text, known ? "not supported by clinch" : "unknown"));
+      // The set still exists, as a failed definition: references to it stay silent (§10: a
+      // diagnostic that follows only from an earlier error is not reported).
+      if (const Field* elset = ctx.params().value("ELSET")) {
+        if (auto name = ctx.name(*elset, "ELSET")) define_set(*part_, true, *name).defined_ok = false;
+      }
       return;
     }
     if (const Field* elset = ctx.params().value("ELSET")) {

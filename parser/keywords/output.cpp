@@ -56,6 +56,17 @@ void read_identifiers(BlockContext& ctx, const std::vector<Field>& fields, Outpu
   }
 }
 
+// W0202 for each given parameter of `names` that does not apply to a static connector run.
+void warn_ignored_params(BlockContext& ctx, std::initializer_list<std::string_view> names,
+                         std::string_view why) {
+  for (std::string_view p : names) {
+    if (ctx.params().has(p)) {
+      ctx.report(DiagCode::parameter_ignored, ctx.params().loc(p),
+                 fmt::format("{} has no effect {}", p, why));
+    }
+  }
+}
+
 // A set parameter (ELSET=, NSET=) as a reference.
 std::optional<TargetRef> set_param(BlockContext& ctx, std::string_view param, bool element) {
   const Field* value = ctx.params().value(param);
@@ -81,6 +92,18 @@ class OutputHandler : public KeywordHandler {
     }
     const bool has_history = params.has("HISTORY");
     const bool has_field = params.has("FIELD");
+    warn_ignored_params(ctx, {"FILTER", "MODE LIST", "SENSITIVITY", "DIAGNOSTICS"},
+                        "in a static connector analysis");
+    if (params.enum_value("TIME MARKS") == "NO") {
+      ctx.report(DiagCode::parameter_ignored, params.loc("TIME MARKS"),
+                 "TIME MARKS=NO has no effect: clinch ends increments at the output times");
+    }
+    if (!has_history && !has_field && params.has("DIAGNOSTICS")) {
+      // *OUTPUT, DIAGNOSTICS=YES|NO alone is a request about the Abaqus output database.
+      request.field = true;
+      step.outputs.push_back(std::move(request));
+      return;
+    }
     if (has_history == has_field) {
       ctx.report(DiagCode::output_kind_missing, ctx.keyword().loc,
                  has_history ? "*OUTPUT takes HISTORY or FIELD, not both"
@@ -181,13 +204,11 @@ class OutputBlockHandler : public KeywordHandler {
     field_ = request.field;
     const char* set_name = element_ ? "ELSET" : "NSET";
     if (element_) {
-      for (std::string_view p : {"DIRECTIONS", "POSITION"}) {
-        if (params.has(p)) {
-          ctx.report(DiagCode::parameter_ignored, params.loc(p),
-                     fmt::format("{} has no effect on connector and spring output", p));
-        }
-      }
+      warn_ignored_params(ctx, {"DIRECTIONS", "POSITION", "REBAR"},
+                          "on connector and spring output");
     }
+    warn_ignored_params(ctx, {"EXTERIOR"}, "on connector models (no three-dimensional elements)");
+    warn_ignored_params(ctx, {"TRACER SET"}, "in a static analysis (Abaqus/Explicit only)");
     std::optional<TargetRef> set = set_param(ctx, set_name, element_);
     if (!params.has(set_name) && !field_) {
       ctx.report(DiagCode::missing_parameter, ctx.keyword().loc,
@@ -200,10 +221,12 @@ class OutputBlockHandler : public KeywordHandler {
       skip_ = true;
       return;
     }
+    const bool preselect = params.has("VARIABLE");  // PRESELECT or ALL
     if (element_) {
       ElementOutputRequest block;
       block.loc = ctx.keyword().loc;
       block.has_elset = set.has_value();
+      block.preselect = preselect;
       if (set) block.elset = std::move(*set);
       request.elements.push_back(std::move(block));
     } else {
@@ -211,6 +234,14 @@ class OutputBlockHandler : public KeywordHandler {
       block.loc = ctx.keyword().loc;
       block.has_nset = set.has_value();
       if (set) block.nset = std::move(*set);
+      // The preselected nodal variables of a static step: U and RF.
+      if (preselect) {
+        for (std::string_view v : {"U", "RF"}) {
+          IdentifierParse parsed = parse_output_identifier(v, OutputContext::NodeOutput);
+          parsed.id.loc = params.loc("VARIABLE", true);
+          block.identifiers.push_back(std::move(parsed.id));
+        }
+      }
       request.nodes.push_back(std::move(block));
     }
   }
@@ -249,16 +280,26 @@ class PrintHandler : public KeywordHandler {
       ctx.report(DiagCode::parameter_ignored, params.loc("FREQUENCYF"),
                  "FREQUENCYF has no effect in clinch (it controls CalculiX file output)");
     }
+    warn_ignored_params(ctx, {"SUMMARY"}, "in clinch (it controls the Abaqus .dat file)");
+    warn_ignored_params(ctx, {"POSITION", "DIRECTIONS", "REBAR"},
+                        "on connector and spring output");
     PrintRequest request;
     request.node = node_;
     request.loc = ctx.keyword().loc;
-    std::optional<TargetRef> set = set_param(ctx, node_ ? "NSET" : "ELSET", !node_);
-    if (!set) {
-      skip_ = true;
-      return;
+    const char* set_name = node_ ? "NSET" : "ELSET";
+    if (params.has(set_name)) {
+      std::optional<TargetRef> set = set_param(ctx, set_name, !node_);
+      if (!set) {
+        skip_ = true;
+        return;
+      }
+      request.set = std::move(*set);
+      request.has_set = true;
+    } else {
+      // Without NSET (ELSET) Abaqus prints every node (element) of the model.
+      request.all = true;
+      request.set.set_display = node_ ? "ALL-NODES" : "ALL-ELEMENTS";
     }
-    request.set = std::move(*set);
-    request.has_set = true;
     if (params.has("FREQUENCY")) {
       request.frequency_loc = params.loc("FREQUENCY", true);
       if (auto frequency = ctx.integer_param("FREQUENCY")) {
@@ -321,6 +362,11 @@ std::vector<KeywordSpec> output_keyword_specs() {
       {"OP", ParamKind::Enum, false, {"ADD", "NEW", "REPLACE"}},
       {"NAME"},
       {"VARIABLE", ParamKind::Enum, false, {"PRESELECT", "ALL"}},
+      {"TIME MARKS", ParamKind::FlagOrYesNo},
+      {"FILTER"},
+      {"MODE LIST"},
+      {"SENSITIVITY", ParamKind::FlagOrYesNo},
+      {"DIAGNOSTICS", ParamKind::FlagOrYesNo},
   };
   output.make_handler = &make<OutputHandler>;
   specs.push_back(std::move(output));
@@ -332,6 +378,10 @@ std::vector<KeywordSpec> output_keyword_specs() {
       {"ELSET"},
       {"DIRECTIONS", ParamKind::FlagOrYesNo},
       {"POSITION"},
+      {"EXTERIOR", ParamKind::Flag},
+      {"REBAR", ParamKind::OptionalValue},
+      {"TRACER SET"},
+      {"VARIABLE", ParamKind::Enum, false, {"PRESELECT", "ALL"}},
   };
   element_output.make_handler = [] {
     return std::unique_ptr<KeywordHandler>(new OutputBlockHandler(true));
@@ -344,6 +394,9 @@ std::vector<KeywordSpec> output_keyword_specs() {
   node_output.params = {
       {"NSET"},
       {"GLOBAL", ParamKind::FlagOrYesNo},
+      {"EXTERIOR", ParamKind::Flag},
+      {"TRACER SET"},
+      {"VARIABLE", ParamKind::Enum, false, {"PRESELECT", "ALL"}},
   };
   node_output.make_handler = [] {
     return std::unique_ptr<KeywordHandler>(new OutputBlockHandler(false));
@@ -354,12 +407,13 @@ std::vector<KeywordSpec> output_keyword_specs() {
   node_print.name = "NODE PRINT";
   node_print.level = KeywordLevel::History;
   node_print.params = {
-      {"NSET", ParamKind::Value, true},
+      {"NSET"},
       {"FREQUENCY"},
       {"TOTALS", ParamKind::Enum, false, {"NO", "YES", "ONLY"}},
       {"GLOBAL", ParamKind::FlagOrYesNo},
       unsupported_param("TIME POINTS"),
       {"FREQUENCYF"},
+      {"SUMMARY", ParamKind::FlagOrYesNo},
   };
   node_print.make_handler = [] { return std::unique_ptr<KeywordHandler>(new PrintHandler(true)); };
   specs.push_back(std::move(node_print));
@@ -368,11 +422,16 @@ std::vector<KeywordSpec> output_keyword_specs() {
   el_print.name = "EL PRINT";
   el_print.level = KeywordLevel::History;
   el_print.params = {
-      {"ELSET", ParamKind::Value, true},
+      {"ELSET"},
       {"FREQUENCY"},
       {"TOTALS", ParamKind::Enum, false, {"NO", "YES", "ONLY"}},
       {"GLOBAL", ParamKind::FlagOrYesNo},
       unsupported_param("TIME POINTS"),
+      {"SUMMARY", ParamKind::FlagOrYesNo},
+      {"POSITION", ParamKind::Enum, false,
+       {"INTEGRATION POINTS", "CENTROIDAL", "NODES", "AVERAGED AT NODES"}},
+      {"DIRECTIONS", ParamKind::FlagOrYesNo},
+      {"REBAR", ParamKind::OptionalValue},
   };
   el_print.make_handler = [] { return std::unique_ptr<KeywordHandler>(new PrintHandler(false)); };
   specs.push_back(std::move(el_print));

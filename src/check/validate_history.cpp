@@ -146,6 +146,7 @@ class HistoryValidator {
     for (ConditionBlock& block : blocks) {
       if (block.amplitude.empty()) continue;
       auto it = history.amplitude_by_key.find(block.amplitude.key);
+      if (it != history.amplitude_by_key.end() && it->second < 0) continue;  // refused: reported
       if (it != history.amplitude_by_key.end()) {
         block.amplitude_index = it->second;
         history.amplitudes[static_cast<std::size_t>(it->second)].used = true;

@@ -81,15 +81,20 @@ class OutputValidator {
         }
       }
       for (PrintRequest& print : step.prints) {
-        if (!print.has_set) continue;
         std::vector<std::int32_t>& members = print.resolved;
+        if (print.all) {
+          const std::size_t count = print.node ? model_.nodes.size() : model_.elements.size();
+          for (std::size_t i = 0; i < count; ++i) members.push_back(static_cast<std::int32_t>(i));
+        } else if (!print.has_set) {
+          continue;
+        }
         if (print.node) {
-          if (!resolve_nodes(model_, print.set, members, sink_)) continue;
+          if (!print.all && !resolve_nodes(model_, print.set, members, sink_)) continue;
           for (const OutputIdentifier& id : print.identifiers) {
             node_identifier(id, print.set, members, print.totals);
           }
         } else {
-          if (!resolve_elements(model_, print.set, members, sink_)) continue;
+          if (!print.all && !resolve_elements(model_, print.set, members, sink_)) continue;
           for (const OutputIdentifier& id : print.identifiers) {
             element_identifier(id, print.set, members, print.totals != PrintRequest::Totals::No,
                                print.totals == PrintRequest::Totals::Only);

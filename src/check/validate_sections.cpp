@@ -48,21 +48,6 @@ void suggest_name(Diagnostic& diagnostic, SourceLoc loc, const std::string& disp
   }
 }
 
-// A name as the user wrote it: quoted names keep their quotes in messages (keywords.md §19
-// example `undefined orientation '"Datum csys-2"'`). A quoted name's key is its exact text, so a
-// key equal to a display with lower-case letters or characters that need quotes means quoted.
-std::string written_name(const Name& name) {
-  bool needs_quotes = false;
-  bool has_lower = false;
-  for (char c : name.display) {
-    const auto u = static_cast<unsigned char>(c);
-    if (std::islower(u)) has_lower = true;
-    if (!(std::isalnum(u) || c == '_' || c == '-')) needs_quotes = true;
-  }
-  if (needs_quotes || (has_lower && name.key == name.display)) return '"' + name.display + '"';
-  return name.display;
-}
-
 // Diagnostics that would repeat once per element are given once per group, for the first
 // element, with the count of the others.
 struct ElementGroup {
@@ -206,7 +191,7 @@ class SectionValidator {
       return it->second;
     }
     Diagnostic& d = sink_.report(DiagCode::undefined_orientation, name.loc,
-                                 fmt::format("undefined orientation '{}'", written_name(name)));
+                                 fmt::format("undefined orientation '{}'", name.display));
     std::vector<std::string> candidates;
     for (const Orientation& o : sections.orientations) {
       if (o.part == part) candidates.push_back(o.name.display);
@@ -294,7 +279,9 @@ class SectionValidator {
     if (section.behavior.empty()) return;
     BehaviorModel& behaviors = model_.behaviors;
     auto it = behaviors.by_key.find(section.behavior.key);
-    if (it != behaviors.by_key.end() && it->second >= 0 &&
+    // -1: the block of that name was refused and reported (input-syntax.md §10).
+    if (it != behaviors.by_key.end() && it->second < 0) return;
+    if (it != behaviors.by_key.end() &&
         static_cast<std::size_t>(it->second) < behaviors.behaviors.size()) {
       ConnectorBehavior& behavior = behaviors.behaviors[static_cast<std::size_t>(it->second)];
       behavior.used = true;
@@ -306,7 +293,7 @@ class SectionValidator {
     }
     Diagnostic& d = sink_.report(
         DiagCode::undefined_behavior, section.behavior.loc,
-        fmt::format("undefined connector behavior '{}'", written_name(section.behavior)));
+        fmt::format("undefined connector behavior '{}'", section.behavior.display));
     std::vector<std::string> candidates;
     for (const ConnectorBehavior& b : behaviors.behaviors) {
       if (b.referable) candidates.push_back(b.name.display);
@@ -325,7 +312,7 @@ class SectionValidator {
     }
     Diagnostic& d = sink_.report(
         DiagCode::undefined_section_controls, section.controls.loc,
-        fmt::format("undefined section controls '{}'", written_name(section.controls)));
+        fmt::format("undefined section controls '{}'", section.controls.display));
     std::vector<std::string> candidates;
     for (const SectionControls& c : sections.controls) candidates.push_back(c.name.display);
     suggest_name(d, section.controls.loc, section.controls.display, candidates);

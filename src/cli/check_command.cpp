@@ -7,6 +7,7 @@
 
 #include "parser/deck_reader.hpp"
 #include "parser/diagnostic_render.hpp"
+#include "src/check/validate.hpp"
 #include "src/cli/blas_threads.hpp"
 
 namespace clinch {
@@ -28,6 +29,7 @@ int run_check(const std::string& deck_path, DiagnosticFormat format) {
     std::cerr << "clinch: error: " << io_error << "\n";
     return 3;
   }
+  report_run_refusals(model, sink);
   sink.sort_by_location();
   if (format == DiagnosticFormat::Json) {
     std::cout << render_json(sink.diagnostics(), sources) << "\n";

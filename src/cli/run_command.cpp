@@ -8,6 +8,7 @@
 
 #include "parser/deck_reader.hpp"
 #include "parser/diagnostic_render.hpp"
+#include "src/check/validate.hpp"
 #include "src/assembly/analysis_plan.hpp"
 #include "src/assembly/connector_system.hpp"
 #include "src/cli/blas_threads.hpp"
@@ -60,6 +61,7 @@ int run_deck(const RunCommandOptions& options) {
     std::cerr << "clinch: error: " << io_error << "\n";
     return kExitUsage;
   }
+  report_run_refusals(model, sink);
   // The deck is the first file registered: its name as diagnostics show it ("<stdin>" for -).
   const std::string& deck_name = sources.file(0).display_name;
   // Standard input has no file name to take the job name from.

@@ -147,6 +147,7 @@ void replay_set_operations(Model& model, std::int32_t part_index, DiagnosticSink
           target.defined_ok = false;
           continue;
         }
+        if (!it->second.defined_ok) target.defined_ok = false;  // its failure is reported
         std::vector<std::int32_t> copy = it->second.members;
         for (std::int32_t m : copy) target.members.push_back(m + offset);
         break;

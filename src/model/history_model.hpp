@@ -158,6 +158,9 @@ struct ElementOutputRequest {
   SourceLoc loc;
   TargetRef elset;
   bool has_elset = false;
+  // VARIABLE=PRESELECT or ALL on the block: the default connector variables of
+  // output-variables.md §4 for the elements of elset, besides the identifiers listed.
+  bool preselect = false;
   std::vector<std::int32_t> resolved;  // global elements of elset, set by validation
   std::vector<OutputIdentifier> identifiers;
 };
@@ -193,6 +196,9 @@ struct PrintRequest {
   SourceLoc loc;
   TargetRef set;
   bool has_set = false;
+  // No NSET (ELSET): every node (element) of the model, as Abaqus prints; `set` then only names
+  // the TOTALS columns (ALL-NODES, ALL-ELEMENTS).
+  bool all = false;
   std::vector<std::int32_t> resolved;  // global nodes (elements) of set, set by validation
   int frequency = 1;
   SourceLoc frequency_loc;  // the FREQUENCY value (invalid when defaulted)

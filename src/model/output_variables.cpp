@@ -102,8 +102,13 @@ constexpr std::array<NodalName, 8> kNodalNames{{
     {"CM", "CF", kRotations, 3},
 }};
 
-// Known identifiers that clinch v1 does not support (output-variables.md §5).
-constexpr std::array<std::string_view, 16> kUnsupported{{
+// Known identifiers that clinch v1 does not support (output-variables.md §5), and the Abaqus and
+// CalculiX identifiers keywords.md §18 names (velocities, accelerations, temperatures, energies,
+// stresses and strains of continuum elements): E0904, not "unknown".
+constexpr std::array<std::string_view, 46> kUnsupported{{
+    "V", "VT", "VR", "A", "AT", "AR", "NT", "PN", "MF", "TF", "POR", "NFORC",
+    "ENER", "ELSE", "EVOL", "PEEQ", "SDV", "COORD", "ELEN", "ELKE", "ELPD", "ELSD", "ESEDEN",
+    "SENER", "MISES", "LE", "PE", "NE", "SF", "SM",
     "CUF",
     "CIVC",
     "ALLSE",

@@ -110,14 +110,23 @@ std::vector<HistoryColumns::Request> HistoryColumns::expand_step(
     const std::vector<const OutputRequest*>& outputs,
     const std::vector<const PrintRequest*>& prints, bool default_request) {
   std::vector<Request> requests;
-  auto default_columns = [&](Request& request) {
+  // `among`: the elements of an *ELEMENT OUTPUT, VARIABLE=PRESELECT block (else every connector).
+  auto default_columns = [&](Request& request, const std::vector<std::int32_t>* among = nullptr) {
     // output-variables.md §4: CTF, CU, then the variables of the behaviours in use, per
     // connector in label order.
     std::vector<std::int32_t> connectors;
-    connectors.reserve(plan_.connectors.size());
+    if (among) {
+      for (std::int32_t e : *among) {
+        if (plan_.connector_of_element[static_cast<std::size_t>(e)] >= 0) connectors.push_back(e);
+      }
+    } else {
+      connectors.reserve(plan_.connectors.size());
+      for (const ConnectorRecord& r : plan_.connectors) connectors.push_back(r.element);
+    }
     std::size_t least = names_.size();  // CTF and CU of every component
-    for (const ConnectorRecord& r : plan_.connectors) {
-      connectors.push_back(r.element);
+    for (std::int32_t e : connectors) {
+      const ConnectorRecord& r = plan_.connectors[static_cast<std::size_t>(
+          plan_.connector_of_element[static_cast<std::size_t>(e)])];
       const auto components = static_cast<unsigned>(r.available | r.constrained);
       least += 2 * static_cast<std::size_t>(std::popcount(components));
     }
@@ -159,6 +168,7 @@ std::vector<HistoryColumns::Request> HistoryColumns::expand_step(
     if (r->variables != OutputRequest::Variables::Listed) default_columns(request);
     for (const ElementOutputRequest& block : r->elements) {
       if (!block.has_elset) continue;
+      if (block.preselect) default_columns(request, &block.resolved);
       for (const OutputIdentifier& id : block.identifiers) {
         element_columns(id, block.resolved, request, false, false, "");
       }
@@ -174,7 +184,7 @@ std::vector<HistoryColumns::Request> HistoryColumns::expand_step(
   for (const PrintRequest* p : prints) {
     Request request;
     request.frequency = p->frequency;
-    if (p->has_set) {
+    if (p->has_set || p->all) {
       const bool totals = p->totals != PrintRequest::Totals::No;
       const bool only = p->totals == PrintRequest::Totals::Only;
       const std::string set = set_label(p->set, !p->node);

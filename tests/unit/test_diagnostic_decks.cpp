@@ -141,6 +141,28 @@ TEST(DiagnosticRender, FieldErrorUnderlinesTheWholeField) {
   EXPECT_NE(json.find("\"end_column\": 8"), std::string::npos) << json;
 }
 
+// The abbreviation note names the full keyword only for a prefix of exactly one keyword:
+// *ORIENT → *ORIENTATION; *RESTART is a keyword of its own (no note), *CONNECTOR is a prefix of
+// many (did-you-mean instead).
+TEST(DiagnosticNotes, AbbreviationNoteOnlyForAPrefixOfOneKeyword) {
+  SourceManager sources;
+  DiagnosticSink sink;
+  Model model;
+  read_deck_text("deck.inp",
+                 "*NODE\n1, 0., 0., 0.\n*ORIENT, NAME=O\n*CONNECTOR, NAME=X\n*STEP\n*STATIC\n"
+                 "*Restart, write, frequency=0\n*END STEP\n",
+                 sources, model, sink);
+  std::vector<std::string> notes;
+  for (const Diagnostic& d : sink.diagnostics()) {
+    for (const auto& note : d.notes) notes.push_back(d.message + " | " + note.message);
+  }
+  ASSERT_EQ(notes.size(), 2u);
+  EXPECT_EQ(notes[0],
+            "unknown keyword '*ORIENT' | keywords cannot be abbreviated; the full name is "
+            "'*ORIENTATION'");
+  EXPECT_EQ(notes[1].rfind("unknown keyword '*CONNECTOR' | did you mean", 0), 0u) << notes[1];
+}
+
 // A location without an extent keeps the caret alone.
 TEST(DiagnosticRender, PointLocationHasACaretOnly) {
   SourceManager sources;

@@ -331,7 +331,12 @@ TEST(OutputVariables, NodalNames) {
   EXPECT_EQ(rm.id.components, 0b111000);
   EXPECT_EQ(parse_output_identifier("U4", OutputContext::NodeOutput).status,
             IdentifierStatus::Unknown);
+  // Identifiers Abaqus and CalculiX define and clinch does not are known, not supported (E0904).
   EXPECT_EQ(parse_output_identifier("NT", OutputContext::NodePrint).status,
+            IdentifierStatus::Unsupported);
+  EXPECT_EQ(parse_output_identifier("V2", OutputContext::NodeOutput).status,
+            IdentifierStatus::Unsupported);
+  EXPECT_EQ(parse_output_identifier("XYZ", OutputContext::NodeOutput).status,
             IdentifierStatus::Unknown);
 }
 

@@ -1,0 +1,40 @@
+// What `clinch run` cannot run yet although `clinch check` validates it (README, docs/decisions.md
+// "Behaviours not yet run"): reported by both commands, at the keyword, so that `check` never
+// passes a deck that `run` then refuses, and the refusal names file, line and column.
+#include <fmt/format.h>
+
+#include "base/diagnostic.hpp"
+#include "src/check/validate.hpp"
+#include "src/model/model.hpp"
+
+namespace clinch {
+
+void report_run_refusals(const Model& model, DiagnosticSink& sink) {
+  const auto& behaviors = model.behaviors.behaviors;
+  std::vector<bool> in_use(behaviors.size(), false);
+  for (const ConnectorSection& section : model.sections.connector_sections) {
+    if (section.behavior_index >= 0 && !section.elements.empty()) {
+      in_use[static_cast<std::size_t>(section.behavior_index)] = true;
+    }
+  }
+  for (std::size_t b = 0; b < behaviors.size(); ++b) {
+    if (!in_use[b]) continue;
+    const ConnectorBehavior& behavior = behaviors[b];
+    auto refuse = [&](SourceLoc loc, std::string_view keyword) {
+      sink.report(DiagCode::unsupported_option, loc,
+                  fmt::format("{} is not supported by clinch run yet (clinch check validates "
+                              "it, but the deck cannot be run)",
+                              keyword))
+          .notes.push_back(
+              {behavior.loc, fmt::format("in connector behavior '{}'", behavior.name.display)});
+    };
+    if (!behavior.damage_initiations.empty()) {
+      refuse(behavior.damage_initiations.front().loc, "*CONNECTOR DAMAGE INITIATION");
+    }
+    if (!behavior.failures.empty()) {
+      refuse(behavior.failures.front().loc, "*CONNECTOR FAILURE");
+    }
+  }
+}
+
+}  // namespace clinch
