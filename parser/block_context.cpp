@@ -24,13 +24,17 @@ std::string shown(std::string_view text) {
   return std::string(text.substr(0, kMax)) + "...";
 }
 
-// A valid unquoted name (input-syntax.md §4): a letter or '_' first, then letters, digits, '_', '-'.
+// A valid unquoted name (input-syntax.md §4): a letter or '_' first, then letters, digits, '_',
+// '-', and '/', which Abaqus/CAE writes unquoted in the sets it names (Springs/Dashpots-1-spring;
+// docs/decisions.md, "Names").
 bool is_unquoted_name(std::string_view text) {
   if (text.empty()) return false;
   char c0 = text[0];
   if (!(std::isalpha(static_cast<unsigned char>(c0)) || c0 == '_')) return false;
   for (char c : text) {
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-')) return false;
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '/')) {
+      return false;
+    }
   }
   return true;
 }

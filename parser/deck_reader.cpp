@@ -412,6 +412,21 @@ class Reader {
     return true;
   }
 
+  // The parameter an abbreviation stands for among those it begins: the only one, or the one whose
+  // name begins all the others (FREQ is FREQUENCY, not the CalculiX FREQUENCYF, which no prefix
+  // of FREQUENCY could ever single out; docs/decisions.md, "Abbreviations"). Null if ambiguous.
+  static const ParamSpec* shortest_covering(const std::vector<const ParamSpec*>& candidates) {
+    if (candidates.empty()) return nullptr;
+    const ParamSpec* shortest = *std::min_element(
+        candidates.begin(), candidates.end(),
+        [](const ParamSpec* a, const ParamSpec* b) { return a->name.size() < b->name.size(); });
+    const std::string folded = fold_name(shortest->name);
+    for (const ParamSpec* c : candidates) {
+      if (fold_name(c->name).rfind(folded, 0) != 0) return nullptr;
+    }
+    return shortest;
+  }
+
   // Generic parameter checks of input-syntax.md §2 against the spec.
   bool validate_params(const KeywordSpec& spec, const KeywordLine& line, ParamSet& out) {
     const std::size_t errors_before = sink_.error_count();
@@ -428,8 +443,9 @@ class Reader {
         }
         if (folded.rfind(param.name, 0) == 0) prefix_matches.push_back(&ps);
       }
-      if (!match && prefix_matches.size() == 1) {
-        match = prefix_matches.front();
+      const ParamSpec* shortest = shortest_covering(prefix_matches);
+      if (!match && shortest) {
+        match = shortest;
         sink_.report(DiagCode::abbreviation_expanded, param.loc,
                      fmt::format("'{}' taken as '{}'", param.spelled, match->name));
       } else if (!match && prefix_matches.size() > 1) {
