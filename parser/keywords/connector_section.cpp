@@ -1,4 +1,4 @@
-// *ORIENTATION, *CONNECTOR SECTION, *SPRING and *SECTION CONTROLS (keywords.md §4–§7). The
+// *ORIENTATION, *CONNECTOR SECTION, *SPRING, *DASHPOT and *SECTION CONTROLS (keywords.md §4–§7). The
 // handlers read what each block can know on its own (names, connection types and their
 // combination, orientation points, spring data lines) into SectionModel; everything that needs
 // the elements (element kinds, CONN2D2, the spring's element type, references to other
@@ -435,8 +435,11 @@ bool looks_real(const Field& field) {
   return field.text.find_first_of(".eEdD") != std::string::npos;
 }
 
+// *SPRING, and *DASHPOT (`dashpot`), whose data have the same layout (behaviors.md §8).
 class SpringHandler : public KeywordHandler {
  public:
+  explicit SpringHandler(bool dashpot) { spring_.dashpot = dashpot; }
+
   void begin(BlockContext& ctx) override {
     const ParamSet& params = ctx.params();
     spring_.keyword_loc = ctx.keyword().loc;
@@ -462,7 +465,8 @@ class SpringHandler : public KeywordHandler {
                      fmt::format("DEPENDENCIES={} is out of range (at least 0)", *n));
         } else if (*n > 0) {
           ctx.report(DiagCode::unsupported_dependencies, *params.value("DEPENDENCIES"),
-                     "field-variable-dependent spring data is not supported");
+                     fmt::format("field-variable-dependent {} data is not supported",
+                                 spring_.words().element));
           rejected_ = true;
         }
       }
@@ -484,15 +488,17 @@ class SpringHandler : public KeywordHandler {
     if (rejected_ || ctx.line_index() == 0) {
       if (!rejected_) {
         ctx.report(DiagCode::missing_data_line, ctx.keyword().loc,
-                   "*SPRING needs a DOF line and a line with the spring data");
+                   fmt::format("{} needs a DOF line and a line with the {} data",
+                               spring_.words().keyword, spring_.words().element));
       }
       spring_.data_ok = false;
     } else if (spring_.property_lines.empty() && !spring_.first_line_real) {
+      const DiscreteElementWords& words = spring_.words();
       ctx.report(DiagCode::missing_data_line, ctx.keyword().loc,
-                 spring_.nonlinear ? "*SPRING, NONLINEAR needs force, relative-displacement "
-                                     "lines after the DOF line"
-                                   : "*SPRING needs a line with the spring stiffness after the "
-                                     "DOF line");
+                 spring_.nonlinear ? fmt::format("{}, NONLINEAR needs force, {} lines after the "
+                                                 "DOF line", words.keyword, words.motion)
+                                   : fmt::format("{} needs a line with the {} after the DOF "
+                                                 "line", words.keyword, words.coefficient));
       spring_.data_ok = false;
     }
     ctx.model().sections.springs.push_back(std::move(spring_));
@@ -525,11 +531,12 @@ class SpringHandler : public KeywordHandler {
         is_integer = !field.quoted && parse_integer_text(field.text, value);
       }
       if (!is_integer) {
+        const std::string_view keyword = spring_.words().keyword;
         ctx.report(DiagCode::spring_dof_line, field.loc,
-                   field.empty() ? std::string("missing DOF on the *SPRING DOF line")
-                                 : fmt::format("expected an integer DOF on the *SPRING DOF line, "
+                   field.empty() ? fmt::format("missing DOF on the {} DOF line", keyword)
+                                 : fmt::format("expected an integer DOF on the {} DOF line, "
                                                "got '{}'",
-                                               field.text));
+                                               keyword, field.text));
         spring_.first_line_ok = false;
         return;
       }
@@ -544,9 +551,11 @@ class SpringHandler : public KeywordHandler {
                                 std::vector<Field>& fields) {
     SpringLine out;
     out.loc = line.loc;
-    if (!ctx.check_field_count(line, fields, 3,
-                               spring_.nonlinear ? "force, relative displacement, temperature"
-                                                 : "stiffness, frequency, temperature")) {
+    const DiscreteElementWords& words = spring_.words();
+    const std::string layout =
+        spring_.nonlinear ? fmt::format("force, {}, temperature", words.motion)
+                          : fmt::format("{}, frequency, temperature", words.coefficient);
+    if (!ctx.check_field_count(line, fields, 3, layout)) {
       out.ok = false;
       return out;
     }
@@ -554,7 +563,8 @@ class SpringHandler : public KeywordHandler {
       SpringValue v;
       v.loc = field.loc;
       if (!field.empty() || field.parameter) {
-        v.value = ctx.real(field, spring_.nonlinear ? "spring table" : "spring stiffness");
+        v.value = ctx.real(field, spring_.nonlinear ? fmt::format("{} table", words.element)
+                                                    : std::string(words.coefficient));
         if (!v.value) out.ok = false;
       }
       out.values.push_back(v);
@@ -699,8 +709,12 @@ std::vector<KeywordSpec> section_keyword_specs() {
       {"ORIENTATION", ParamKind::Value},
       {"DEPENDENCIES", ParamKind::Value},
   };
-  spring.make_handler = &make<SpringHandler>;
+  spring.make_handler = [] { return std::unique_ptr<KeywordHandler>(new SpringHandler(false)); };
+  KeywordSpec dashpot = spring;
+  dashpot.name = "DASHPOT";
+  dashpot.make_handler = [] { return std::unique_ptr<KeywordHandler>(new SpringHandler(true)); };
   specs.push_back(std::move(spring));
+  specs.push_back(std::move(dashpot));
 
   KeywordSpec controls;
   controls.name = "SECTION CONTROLS";

@@ -90,7 +90,8 @@ struct ElementTypeInfo {
 constexpr ElementTypeInfo kElementTypes[] = {
     {"CONN3D2", ElementType::Conn3D2, 2}, {"CONN2D2", ElementType::Conn2D2, 2},
     {"SPRINGA", ElementType::SpringA, 2}, {"SPRING1", ElementType::Spring1, 1},
-    {"SPRING2", ElementType::Spring2, 2},
+    {"SPRING2", ElementType::Spring2, 2}, {"DASHPOTA", ElementType::DashpotA, 2},
+    {"DASHPOT1", ElementType::Dashpot1, 1}, {"DASHPOT2", ElementType::Dashpot2, 2},
 };
 
 // Element types other codes know that clinch does not (E0210 rather than E0208).
@@ -122,7 +123,7 @@ class ElementHandler : public KeywordHandler {
       }
       ctx.report(known ? DiagCode::unsupported_option : DiagCode::invalid_value, *type,
                  fmt::format("element type '{}' is {} (supported: CONN3D2, CONN2D2, SPRINGA, "
-                             "SPRING1, SPRING2)",
+                             "SPRING1, SPRING2, DASHPOTA, DASHPOT1, DASHPOT2)",
                              type->text, known ? "not supported by clinch" : "unknown"));
       // The set still exists, as a failed definition: references to it stay silent (§10: a
       // diagnostic that follows only from an earlier error is not reported).
@@ -234,10 +235,10 @@ class ElementHandler : public KeywordHandler {
                                element.label, fields[1].text));
         return false;
       }
-      if (element.type == ElementType::SpringA) {
+      if (spring_form(element.type) == ElementType::SpringA) {
         ctx.report(DiagCode::degenerate_geometry, fields[2],
-                   fmt::format("SPRINGA element {} joins node {} to itself; its direction is "
-                               "undefined", element.label, fields[1].text));
+                   fmt::format("{} element {} joins node {} to itself; its direction is "
+                               "undefined", info_->name, element.label, fields[1].text));
         return false;
       }
     }

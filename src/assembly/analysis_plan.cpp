@@ -249,11 +249,12 @@ class PlanBuilder {
     const SpringProperty& property = model_.sections.springs[static_cast<std::size_t>(p)];
     SpringRecord r;
     r.element = e;
-    r.type = element.type;
+    r.type = spring_form(element.type);
+    r.dashpot = is_dashpot(element.type);
     r.nodes = element.nodes;
     r.law = static_cast<std::size_t>(p);
     int first_dof = 1;
-    if (element.type == ElementType::SpringA) {
+    if (r.type == ElementType::SpringA) {
       r.d0 = to_vector(model_.nodes[static_cast<std::size_t>(r.nodes[1])].x) -
              to_vector(model_.nodes[static_cast<std::size_t>(r.nodes[0])].x);
     } else {
@@ -264,7 +265,7 @@ class PlanBuilder {
             model_.sections.orientations[static_cast<std::size_t>(property.orientation_index)];
         triad = placed_triad(model_, o, element.instance);
       }
-      const int slots = element.type == ElementType::Spring1 ? 1 : 2;
+      const int slots = r.type == ElementType::Spring1 ? 1 : 2;
       for (int k = 0; k < slots; ++k) {
         const int dof = property.dofs[static_cast<std::size_t>(k)];
         r.rotational = dof >= 4;

@@ -83,9 +83,12 @@ struct ConnectorRecord {
   }
 };
 
+// A spring or dashpot element: a dashpot has the nodes and kinematics of the spring `type`, and
+// its law gives the force against the rate of Δ (behaviors.md §8).
 struct SpringRecord {
   std::int32_t element = 0;
-  ElementType type = ElementType::SpringA;
+  ElementType type = ElementType::SpringA;  // SPRINGA, SPRING1 or SPRING2 (spring_form)
+  bool dashpot = false;
   std::array<std::int32_t, 2> nodes{kGround, kGround};
   std::size_t law = 0;  // into AnalysisPlan::spring_laws
   // SPRINGA: the initial vector between the nodes. SPRING1/2: the direction of the DOF at each

@@ -173,7 +173,8 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
   }
   for (std::size_t s = 0; s < plan_.springs.size(); ++s) {
     const SpringRecord& spring = plan_.springs[s];
-    evaluate_spring(plan_, spring, state_.x, context_.nlgeom, want_tangent, local, springs_[s]);
+    evaluate_spring(plan_, spring, {state_.x, state_.x_n, context_.dt, context_.nlgeom},
+                    want_tangent, local, springs_[s]);
     if (zero_unless_non_finite(local.r.head(spring.local.count)) +
             springs_[s].force * 0.0 + springs_[s].delta * 0.0 != 0.0) {
       const Element& e = model_.elements[static_cast<std::size_t>(spring.element)];

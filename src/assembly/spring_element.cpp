@@ -1,10 +1,18 @@
 #include "src/assembly/spring_element.hpp"
 
 namespace clinch {
+namespace {
 
-void evaluate_spring(const AnalysisPlan& plan, const SpringRecord& s, const Eigen::VectorXd& x,
-                     bool nlgeom, bool want_tangent, LocalSystem& local, SpringResult& result) {
-  const SpringLaw& law = *plan.spring_laws[s.law];
+// Δ of a spring or dashpot at the nodal values x (keywords.md §7), with ∂Δ/∂(node values) on
+// its 6 columns and, under NLGEOM for SPRINGA, the geometric part ∂²Δ/∂(node values)².
+struct Elongation {
+  double delta = 0;
+  Eigen::Matrix<double, 6, 1> gradient = Eigen::Matrix<double, 6, 1>::Zero();
+  Eigen::Matrix<double, 6, 6> curvature = Eigen::Matrix<double, 6, 6>::Zero();
+};
+
+Elongation elongation(const AnalysisPlan& plan, const SpringRecord& s, const Eigen::VectorXd& x,
+                      bool nlgeom) {
   auto node_vector = [&](std::int32_t node, int first_dof) {
     Vector3 v = Vector3::Zero();
     if (node < 0) return v;
@@ -14,9 +22,7 @@ void evaluate_spring(const AnalysisPlan& plan, const SpringRecord& s, const Eige
     }
     return v;
   };
-  Eigen::Matrix<double, 6, 1> g;  // ∂Δ/∂(node values) on the 6 spring columns
-  Eigen::Matrix<double, 6, 6> kg = Eigen::Matrix<double, 6, 6>::Zero();  // geometric part / F
-  double delta = 0;
+  Elongation e;
   if (s.type == ElementType::SpringA) {
     // keywords.md §7: exact axial kinematics under NLGEOM, initial direction otherwise.
     const Vector3 du = node_vector(s.nodes[1], 1) - node_vector(s.nodes[0], 1);
@@ -26,34 +32,54 @@ void evaluate_spring(const AnalysisPlan& plan, const SpringRecord& s, const Eige
       const Vector3 d = s.d0 + du;
       const double l = d.norm();
       n = d / l;
-      delta = l - l0;
+      e.delta = l - l0;
       const Matrix3 lateral = (Matrix3::Identity() - n * n.transpose()) / l;
-      kg.topLeftCorner<3, 3>() = lateral;
-      kg.bottomRightCorner<3, 3>() = lateral;
-      kg.topRightCorner<3, 3>() = -lateral;
-      kg.bottomLeftCorner<3, 3>() = -lateral;
+      e.curvature.topLeftCorner<3, 3>() = lateral;
+      e.curvature.bottomRightCorner<3, 3>() = lateral;
+      e.curvature.topRightCorner<3, 3>() = -lateral;
+      e.curvature.bottomLeftCorner<3, 3>() = -lateral;
     } else {
-      delta = n.dot(du);
+      e.delta = n.dot(du);
     }
-    g << -n, n;
+    e.gradient << -n, n;
   } else {
     const int first = s.rotational ? 4 : 1;
-    g.head<3>() = s.direction[0];
-    g.tail<3>() = s.type == ElementType::Spring2 ? Vector3(-s.direction[1]) : Vector3::Zero();
-    delta = s.direction[0].dot(node_vector(s.nodes[0], first));
-    if (s.type == ElementType::Spring2) delta -= s.direction[1].dot(node_vector(s.nodes[1], first));
+    e.gradient.head<3>() = s.direction[0];
+    if (s.type == ElementType::Spring2) e.gradient.tail<3>() = -s.direction[1];
+    e.delta = s.direction[0].dot(node_vector(s.nodes[0], first));
+    if (s.type == ElementType::Spring2) {
+      e.delta -= s.direction[1].dot(node_vector(s.nodes[1], first));
+    }
   }
-  const SpringResponse response = law.evaluate(delta);
-  result = {response.force, delta};
+  return e;
+}
+
+}  // namespace
+
+void evaluate_spring(const AnalysisPlan& plan, const SpringRecord& s, const SpringMotion& motion,
+                     bool want_tangent, LocalSystem& local, SpringResult& result) {
+  const SpringLaw& law = *plan.spring_laws[s.law];
+  const Elongation e = elongation(plan, s, motion.x, motion.nlgeom);
+  SpringResponse response;
+  if (!s.dashpot) {
+    response = law.evaluate(e.delta);
+  } else if (motion.dt > 0) {
+    // behaviors.md §8: in a static step the dashpot's velocity is Δ's increment over Δt.
+    const double delta_n = elongation(plan, s, motion.x_n, motion.nlgeom).delta;
+    response = law.evaluate((e.delta - delta_n) / motion.dt);
+    response.stiffness /= motion.dt;
+  }
+  result = {response.force, e.delta};
   for (int a = 0; a < s.column_count; ++a) {
-    local.r[a] = response.force * g[s.columns[static_cast<std::size_t>(a)]];
+    local.r[a] = response.force * e.gradient[s.columns[static_cast<std::size_t>(a)]];
   }
   if (!want_tangent) return;
   for (int b = 0; b < s.column_count; ++b) {
     const int cb = s.columns[static_cast<std::size_t>(b)];
     for (int a = 0; a < s.column_count; ++a) {
       const int ca = s.columns[static_cast<std::size_t>(a)];
-      local.k(a, b) = response.stiffness * g[ca] * g[cb] + response.force * kg(ca, cb);
+      local.k(a, b) = response.stiffness * e.gradient[ca] * e.gradient[cb] +
+                      response.force * e.curvature(ca, cb);
     }
   }
 }

@@ -1,17 +1,27 @@
-// SPRINGA, SPRING1 and SPRING2 elements (keywords.md §7): the spring's elongation from the nodal
-// values, its law, and the local residual and tangent on the spring's columns.
+// SPRINGA, SPRING1 and SPRING2 elements (keywords.md §7), and the DASHPOTA, DASHPOT1 and
+// DASHPOT2 elements that share their kinematics (behaviors.md §8): Δ from the nodal values, the
+// law of Δ (a dashpot: of Δ's rate), and the local residual and tangent on the element's columns.
 #pragma once
 
 #include "src/assembly/connector_element.hpp"
 
 namespace clinch {
 
-// What an evaluation computed for one spring (S11 and E11).
+// What an evaluation computed for one spring or dashpot (S11 and E11).
 struct SpringResult {
   double force = 0, delta = 0;
 };
 
-void evaluate_spring(const AnalysisPlan& plan, const SpringRecord& s, const Eigen::VectorXd& x,
-                     bool nlgeom, bool want_tangent, LocalSystem& local, SpringResult& result);
+// The nodal values an evaluation reads: the trial ones, and for a dashpot's velocity the last
+// converged ones and the time increment.
+struct SpringMotion {
+  const Eigen::VectorXd& x;
+  const Eigen::VectorXd& x_n;
+  double dt = 0;
+  bool nlgeom = false;
+};
+
+void evaluate_spring(const AnalysisPlan& plan, const SpringRecord& s, const SpringMotion& motion,
+                     bool want_tangent, LocalSystem& local, SpringResult& result);
 
 }  // namespace clinch

@@ -272,7 +272,7 @@ class OutputValidator {
     BehaviorFeatures features;
     for (std::int32_t e : elements) {
       const Element& element = model_.elements[static_cast<std::size_t>(e)];
-      if (is_spring(element.type) != spring_variable) continue;  // not defined for this kind
+      if (is_spring_or_dashpot(element.type) != spring_variable) continue;  // not defined for this kind
       ++matching;
       if (spring_variable) {
         total_components |= 1;

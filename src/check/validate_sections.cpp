@@ -459,10 +459,11 @@ class SectionValidator {
   }
 
   // ------------------------------------------------------------------------------------------
-  // *SPRING (keywords.md §7)
+  // *SPRING (keywords.md §7) and *DASHPOT (the same layout, behaviors.md §8)
 
   void validate_spring(std::size_t s) {
     SpringProperty& spring = model_.sections.springs[s];
+    const DiscreteElementWords& words = spring.words();
     spring.elements.clear();
     std::vector<std::int32_t> members;
     if (!resolve_set(spring.elset, members, false)) return;
@@ -473,14 +474,14 @@ class SectionValidator {
     for (std::int32_t index : members) {
       if (index < 0 || static_cast<std::size_t>(index) >= model_.elements.size()) continue;
       const Element& element = model_.elements[static_cast<std::size_t>(index)];
-      if (!is_spring(element.type)) {
+      if (!is_spring_or_dashpot(element.type) || is_dashpot(element.type) != spring.dashpot) {
         if (!wrong_kind_reported) {
           wrong_kind_reported = true;
           sink_.report(DiagCode::wrong_element_kind, spring.elset.loc,
-                       fmt::format("{} contains element {} of type {}; *SPRING needs spring "
-                                   "elements",
+                       fmt::format("{} contains element {} of type {}; {} needs {} elements",
                                    describe(spring.elset, true), element_label(element),
-                                   element_type_name(element.type)));
+                                   element_type_name(element.type), words.keyword,
+                                   words.element));
         }
         continue;
       }
@@ -491,10 +492,9 @@ class SectionValidator {
         if (!mixed_reported) {
           mixed_reported = true;
           sink_.report(DiagCode::wrong_element_kind, spring.elset.loc,
-                       fmt::format("{} mixes {} and {} elements; *SPRING needs elements of one "
-                                   "type",
+                       fmt::format("{} mixes {} and {} elements; {} needs elements of one type",
                                    describe(spring.elset, true), element_type_name(spring.type),
-                                   element_type_name(element.type)));
+                                   element_type_name(element.type), words.keyword));
         }
         // Claimed anyway, so that it does not also get "no *SPRING" (input-syntax.md §10).
         std::int32_t& other = model_.sections.spring_of_element[static_cast<std::size_t>(index)];
@@ -513,17 +513,18 @@ class SectionValidator {
       const Element& element = model_.elements[static_cast<std::size_t>(group.first)];
       sink_
           .report(DiagCode::duplicate_section, spring.keyword_loc,
-                  fmt::format("element {} already has a *SPRING{}", element_label(element),
-                              more_text(group.count, "")))
+                  fmt::format("element {} already has a {}{}", element_label(element),
+                              words.keyword, more_text(group.count, "")))
           .notes.push_back({model_.sections.springs[static_cast<std::size_t>(first)].keyword_loc,
-                            "first *SPRING is here"});
+                            fmt::format("first {} is here", words.keyword)});
     }
     if (!have_type || !spring.data_ok) return;
     if (!spring.orientation.empty()) {
       spring.orientation_index = find_orientation(spring.orientation, spring.elset.part);
-      if (spring.type == ElementType::SpringA) {
+      if (spring_form(spring.type) == ElementType::SpringA) {
         sink_.report(DiagCode::orientation_ignored, spring.orientation_param_loc,
-                     "ORIENTATION is ignored for SPRINGA elements");
+                     fmt::format("ORIENTATION is ignored for {} elements",
+                                 element_type_name(spring.type)));
       }
     }
     std::vector<const SpringLine*> properties;
@@ -539,33 +540,33 @@ class SectionValidator {
   // The DOF line (§7 data line 1); collects the property lines that precede the repeated ones.
   bool check_dof_line(SpringProperty& spring, std::vector<const SpringLine*>& properties) {
     const char* type_name = element_type_name(spring.type);
-    if (spring.type == ElementType::SpringA) {
+    const DiscreteElementWords& words = spring.words();
+    if (spring_form(spring.type) == ElementType::SpringA) {
       if (spring.first_line_blank) return true;
       if (spring.first_line_real) {
         // CalculiX decks drop blank lines; the real on line 1 is the first property line.
         sink_.report(DiagCode::springa_missing_blank_line, spring.first_line_loc,
-                     spring.nonlinear
-                         ? "no blank line after *SPRING for SPRINGA; the first line is read as "
-                           "the first table point"
-                         : "no blank line after *SPRING for SPRINGA; the first line is read as "
-                           "the spring stiffness");
+                     fmt::format("no blank line after {} for {}; the first line is read as {}",
+                                 words.keyword, type_name,
+                                 spring.nonlinear ? std::string("the first table point")
+                                                  : fmt::format("the {}", words.coefficient)));
         properties.push_back(&spring.first_line_as_property);
         return true;
       }
       if (spring.first_line_ok) {
         sink_.report(DiagCode::spring_dof_line, spring.first_line_loc,
-                     "SPRINGA takes a blank DOF line after *SPRING (its direction is the line "
-                     "between its nodes)");
+                     fmt::format("{} takes a blank DOF line after {} (its direction is the line "
+                                 "between its nodes)", type_name, words.keyword));
       }
       return false;
     }
-    const std::size_t needed = spring.type == ElementType::Spring1 ? 1 : 2;
+    const std::size_t needed = spring_form(spring.type) == ElementType::Spring1 ? 1 : 2;
     if (!spring.first_line_ok) return false;
     if (spring.first_line_blank || spring.first_line_real ||
         spring.first_line_integers.size() != needed) {
       sink_.report(DiagCode::spring_dof_line, spring.first_line_loc,
-                   fmt::format("{} needs a DOF line '{}' after *SPRING", type_name,
-                               needed == 1 ? "dof" : "dof1, dof2"));
+                   fmt::format("{} needs a DOF line '{}' after {}", type_name,
+                               needed == 1 ? "dof" : "dof1, dof2", words.keyword));
       return false;
     }
     bool ok = true;
@@ -591,31 +592,34 @@ class SectionValidator {
   // Linear: one line `k [, frequency] [, temperature]`, dependence not supported (E0713).
   bool check_linear(SpringProperty& spring, const std::vector<const SpringLine*>& lines) {
     if (lines.empty()) return false;
+    const DiscreteElementWords& words = spring.words();
     bool ok = true;
     if (lines.size() > 1) {
       sink_.report(DiagCode::unsupported_dependencies, lines[1]->loc,
-                   "temperature-dependent spring data is not supported (a linear *SPRING takes "
-                   "one stiffness line)");
+                   fmt::format("temperature-dependent {} data is not supported (a linear {} "
+                               "takes one {} line)",
+                               words.element, words.keyword, words.coefficient));
       ok = false;
     }
     const SpringLine& line = *lines[0];
     if (line.values.empty() || !line.values[0].value) {
       sink_.report(DiagCode::missing_field, line.values.empty() ? line.loc : line.values[0].loc,
-                   "missing value for 'spring stiffness' of *SPRING");
+                   fmt::format("missing value for '{}' of {}", words.coefficient, words.keyword));
       return false;
     }
     static constexpr const char* kWhat[] = {"", "frequency", "temperature"};
     for (std::size_t k = 1; k < line.values.size() && k < 3; ++k) {
       if (line.values[k].value) {
         sink_.report(DiagCode::unsupported_dependencies, line.values[k].loc,
-                     fmt::format("{}-dependent spring data is not supported", kWhat[k]));
+                     fmt::format("{}-dependent {} data is not supported", kWhat[k],
+                                 words.element));
         ok = false;
       }
     }
     const double k = *line.values[0].value;
     if (k < 0) {
       sink_.report(DiagCode::negative_stiffness, line.values[0].loc,
-                   fmt::format("negative spring stiffness {}", number_text(k)));
+                   fmt::format("negative {} {}", words.coefficient, number_text(k)));
     }
     spring.stiffness = k;
     return ok;
@@ -623,6 +627,7 @@ class SectionValidator {
 
   // Nonlinear: `F, Δ [, temperature]` lines, Δ strictly increasing, at least two points.
   bool check_table(SpringProperty& spring, const std::vector<const SpringLine*>& lines) {
+    const DiscreteElementWords& words = spring.words();
     bool ok = true;
     spring.table.clear();
     for (const SpringLine* line : lines) {
@@ -632,14 +637,16 @@ class SectionValidator {
         if (force_missing && !line->values.empty()) where = line->values[0].loc;
         if (!force_missing && line->values.size() >= 2) where = line->values[1].loc;
         sink_.report(DiagCode::missing_field, where,
-                     fmt::format("missing value for '{}' of *SPRING",
-                                 force_missing ? "force" : "relative displacement"));
+                     fmt::format("missing value for '{}' of {}",
+                                 force_missing ? std::string_view("force") : words.motion,
+                                 words.keyword));
         ok = false;
         continue;
       }
       if (line->values.size() > 2 && line->values[2].value) {
         sink_.report(DiagCode::unsupported_dependencies, line->values[2].loc,
-                     "temperature-dependent spring data is not supported");
+                     fmt::format("temperature-dependent {} data is not supported",
+                                 words.element));
         ok = false;
         continue;
       }
@@ -647,7 +654,7 @@ class SectionValidator {
       const double delta = *line->values[1].value;
       if (!spring.table.empty() && !(delta > spring.table.back().delta)) {
         sink_.report(DiagCode::table_not_increasing, line->values[1].loc,
-                     fmt::format("relative displacements must increase ({} after {})",
+                     fmt::format("{} must increase ({} after {})", words.motions,
                                  number_text(delta), number_text(spring.table.back().delta)));
         ok = false;
         continue;
@@ -658,7 +665,7 @@ class SectionValidator {
     if (spring.table.size() < 2) {
       sink_.report(DiagCode::table_not_increasing,
                    spring.table.empty() ? spring.keyword_loc : spring.table.front().loc,
-                   "a nonlinear spring table needs at least 2 points");
+                   fmt::format("a nonlinear {} table needs at least 2 points", words.element));
       return false;
     }
     // W0701: F(0) ≠ 0 (constant extrapolation outside the table, keywords.md §7).
@@ -677,8 +684,8 @@ class SectionValidator {
     }
     if (f0 != 0) {
       sink_.report(DiagCode::nonlinear_elasticity_offset, t.front().loc,
-                   fmt::format("spring table gives force {} at zero relative displacement",
-                               number_text(f0)));
+                   fmt::format("{} table gives force {} at zero {}", words.element,
+                               number_text(f0), words.motion));
     }
     return true;
   }
@@ -686,7 +693,7 @@ class SectionValidator {
   // keywords.md §3: coincident initial positions of a SPRINGA leave its direction undefined.
   void check_springa_geometry() {
     for (const Element& element : model_.elements) {
-      if (element.type != ElementType::SpringA) continue;
+      if (spring_form(element.type) != ElementType::SpringA) continue;
       if (!node_ok(element.nodes[0]) || !node_ok(element.nodes[1])) continue;
       if (element.nodes[0] == element.nodes[1]) continue;  // reported by the element reader
       const Vec3& x1 = model_.nodes[static_cast<std::size_t>(element.nodes[0])].x;
@@ -695,9 +702,9 @@ class SectionValidator {
       SourceLoc loc = element.loc();
       if (element.node_columns[1] > 0) loc.column = element.node_columns[1];
       sink_.report(DiagCode::degenerate_geometry, loc,
-                   fmt::format("SPRINGA element {} joins two nodes at the same position; its "
+                   fmt::format("{} element {} joins two nodes at the same position; its "
                                "direction is undefined",
-                               element_label(element)));
+                               element_type_name(element.type), element_label(element)));
     }
   }
 
@@ -724,10 +731,13 @@ class SectionValidator {
     }
     for (const Missing& m : missing) {
       const Element& element = model_.elements[static_cast<std::size_t>(m.group.first)];
+      const bool dashpot = is_dashpot(element.type);
       sink_.report(
           DiagCode::missing_section, m.loc,
-          fmt::format("{} element {} has no {}{}", m.connector ? "connector" : "spring",
-                      element_label(element), m.connector ? "*CONNECTOR SECTION" : "*SPRING",
+          fmt::format("{} element {} has no {}{}",
+                      m.connector ? "connector" : (dashpot ? "dashpot" : "spring"),
+                      element_label(element),
+                      m.connector ? "*CONNECTOR SECTION" : (dashpot ? "*DASHPOT" : "*SPRING"),
                       more_text(m.group.count, " of this *ELEMENT block")));
     }
   }

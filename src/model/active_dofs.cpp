@@ -83,7 +83,7 @@ DofMask element_dofs(const Model& model, const ConnectorDofs& connector_dofs,
   if (element < 0 || static_cast<std::size_t>(element) >= model.elements.size()) return 0;
   const Element& e = model.elements[static_cast<std::size_t>(element)];
   const bool two_d = model.dimension == 2;
-  switch (e.type) {
+  switch (spring_form(e.type)) {
     case ElementType::Conn3D2:
       return two_d ? (connector_dofs(model, element, slot) == kAll3D ? kAll2D : kTranslations2D)
                    : connector_dofs(model, element, slot);
@@ -95,6 +95,7 @@ DofMask element_dofs(const Model& model, const ConnectorDofs& connector_dofs,
       return slot == 0 ? spring_dofs(model, element, 0, two_d) : 0;
     case ElementType::Spring2:
       return spring_dofs(model, element, slot, two_d);
+    default: return 0;  // spring_form gives no dashpot type
   }
   return 0;
 }

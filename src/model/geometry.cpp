@@ -18,6 +18,9 @@ const char* element_type_name(ElementType type) {
     case ElementType::SpringA: return "SPRINGA";
     case ElementType::Spring1: return "SPRING1";
     case ElementType::Spring2: return "SPRING2";
+    case ElementType::DashpotA: return "DASHPOTA";
+    case ElementType::Dashpot1: return "DASHPOT1";
+    case ElementType::Dashpot2: return "DASHPOT2";
   }
   return "?";
 }

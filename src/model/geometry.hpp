@@ -19,12 +19,28 @@ namespace clinch {
 using Vec3 = std::array<double, 3>;
 using Mat3 = std::array<std::array<double, 3>, 3>;
 
-enum class ElementType : std::uint8_t { Conn3D2, Conn2D2, SpringA, Spring1, Spring2 };
+enum class ElementType : std::uint8_t {
+  Conn3D2, Conn2D2, SpringA, Spring1, Spring2, DashpotA, Dashpot1, Dashpot2
+};
 const char* element_type_name(ElementType type);
 inline bool is_connector(ElementType t) {
   return t == ElementType::Conn3D2 || t == ElementType::Conn2D2;
 }
-inline bool is_spring(ElementType t) { return !is_connector(t); }
+// Springs and dashpots: discrete elements with one force and one relative motion (S11, E11).
+inline bool is_spring_or_dashpot(ElementType t) { return !is_connector(t); }
+inline bool is_dashpot(ElementType t) {
+  return t == ElementType::DashpotA || t == ElementType::Dashpot1 || t == ElementType::Dashpot2;
+}
+// The spring type with the same nodes and kinematics: a DASHPOTA acts along the line of its
+// nodes like a SPRINGA, a DASHPOT1/2 on its DOFs like a SPRING1/2 (keywords.md §7).
+inline ElementType spring_form(ElementType t) {
+  switch (t) {
+    case ElementType::DashpotA: return ElementType::SpringA;
+    case ElementType::Dashpot1: return ElementType::Spring1;
+    case ElementType::Dashpot2: return ElementType::Spring2;
+    default: return t;
+  }
+}
 
 constexpr std::int32_t kGround = -1;  // connector end connected to ground (keywords.md §3)
 

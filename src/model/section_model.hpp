@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <unordered_map>
 #include <vector>
 
@@ -86,8 +87,9 @@ struct ConnectorSection {
   std::vector<std::int32_t> elements;  // global element indices, filled by validation
 };
 
-// One data line of *SPRING as read: the DOF line's integers, or a property line's numbers
-// (keywords.md §7). Which lines are which depends on the element type, so validation decides.
+// One data line of *SPRING or *DASHPOT as read: the DOF line's integers, or a property line's
+// numbers (keywords.md §7). Which lines are which depends on the element type, so validation
+// decides.
 struct SpringValue {
   std::optional<double> value;  // empty field: nullopt
   SourceLoc loc;
@@ -98,9 +100,21 @@ struct SpringLine {
   bool ok = true;                   // every field was a number
 };
 
+// The words that name a *SPRING or a *DASHPOT block and its data in messages.
+struct DiscreteElementWords {
+  std::string_view keyword;      // "*SPRING"
+  std::string_view element;      // "spring"
+  std::string_view coefficient;  // "spring stiffness"
+  std::string_view motion;       // "relative displacement"
+  std::string_view motions;      // "relative displacements"
+};
+
+// A *SPRING, or a *DASHPOT, which has the same layout with a dashpot coefficient or a force
+// against relative velocity (behaviors.md §8: v = Δu/Δt in a static step).
 struct SpringProperty {
   TargetRef elset;
   SourceLoc keyword_loc;
+  bool dashpot = false;
   bool nonlinear = false;
   Name orientation;                     // ORIENTATION= (empty: global axes)
   SourceLoc orientation_param_loc;      // the parameter name (W0702)
@@ -124,17 +138,26 @@ struct SpringProperty {
     double force = 0, delta = 0;
     SourceLoc loc;
   };
-  std::vector<Point> table;  // nonlinear: F at Δ, Δ strictly increasing
+  std::vector<Point> table;  // nonlinear: F at Δ (a dashpot: at v), strictly increasing
   bool valid = false;
   std::vector<std::int32_t> elements;
+
+  const DiscreteElementWords& words() const {
+    static constexpr DiscreteElementWords kSpring{"*SPRING", "spring", "spring stiffness",
+                                                  "relative displacement",
+                                                  "relative displacements"};
+    static constexpr DiscreteElementWords kDashpot{"*DASHPOT", "dashpot", "dashpot coefficient",
+                                                   "relative velocity", "relative velocities"};
+    return dashpot ? kDashpot : kSpring;
+  }
 };
 
 struct SectionModel {
   std::vector<ConnectorSection> connector_sections;
   // Global element index → connector section index (−1: none), filled by validation.
   std::vector<std::int32_t> section_of_element;
-  std::vector<SpringProperty> springs;
-  // Global element index → *SPRING index (−1: none), filled by validation.
+  std::vector<SpringProperty> springs;  // *SPRING and *DASHPOT blocks in deck order
+  // Global element index → springs index (−1: none), filled by validation.
   std::vector<std::int32_t> spring_of_element;
   std::vector<Orientation> orientations;
   // scoped_name_key(part, name key) → index into orientations.

@@ -228,7 +228,7 @@ void HistoryColumns::element_columns(const OutputIdentifier& id,
   std::array<Column, 7> sums;
   for (std::int32_t e : elements) {
     const Element& element = model_.elements[static_cast<std::size_t>(e)];
-    if (is_spring(element.type) != spring_variable) continue;
+    if (is_spring_or_dashpot(element.type) != spring_variable) continue;
     const std::string where = qualified_label(model_, element.instance, element.label);
     if (spring_variable) {
       const Term term{Source::Spring, plan_.spring_of_element[static_cast<std::size_t>(e)]};

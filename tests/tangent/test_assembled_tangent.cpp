@@ -139,6 +139,45 @@ TEST(AssembledTangent, MatchesFiniteDifferencesAtActiveStops) {
   }
 }
 
+// Dashpots (behaviors.md §8: v = ΔΔ/Δt): DASHPOTA beside a SPRINGA between free nodes 2 and 3
+// (NLGEOM: the force turns with the line), DASHPOT1 with a NONLINEAR table and DASHPOT2, at a
+// random trial state away from the converged one (x_n = 0), Δt = 0.1. The random state stays
+// inside the table's segments away from its breakpoints for these seeds (|v| ≤ 2 lands in the
+// middle segments or beyond the ends, where the force is constant), so central differences see
+// a smooth function; same tolerance as the connector families above.
+TEST(AssembledTangent, DashpotsMatchFiniteDifferences) {
+  const std::string deck_text =
+      "*NODE\n1, 0., 0., 0.\n2, 0.6, 0.8, 0.\n3, 1.5, 1.1, 0.3\n4, 2., 0., 0.\n"
+      "*ELEMENT, TYPE=DASHPOTA, ELSET=DA\n1, 2, 3\n*ELEMENT, TYPE=SPRINGA, ELSET=SA\n2, 2, 3\n"
+      "*ELEMENT, TYPE=DASHPOT1, ELSET=D1\n3, 2\n*ELEMENT, TYPE=DASHPOT2, ELSET=D2\n4, 3, 4\n"
+      "*DASHPOT, ELSET=DA\n\n30.\n*SPRING, ELSET=SA\n\n100.\n"
+      "*DASHPOT, ELSET=D1, NONLINEAR\n2\n-8., -3.\n0., 0.\n2., 0.7\n5., 3.\n"
+      "*DASHPOT, ELSET=D2\n1, 2\n20.\n*BOUNDARY\n1, 1, 3\n4, 1, 3\n*STEP";
+  for (bool nlgeom : {false, true}) {
+    auto a = analyse(deck_text + (nlgeom ? ", NLGEOM" : "") + "\n*STATIC\n*END STEP\n");
+    ASSERT_TRUE(a->system);
+    ConnectorSystem& s = *a->system;
+    s.set_nlgeom(nlgeom);
+    s.set_time(0.1, 0.1);
+    s.start_increment(0.0);
+    for (unsigned seed : {5u, 6u}) {
+      std::mt19937 rng(seed);
+      std::uniform_real_distribution<double> u(-0.2, 0.2);
+      Eigen::VectorXd state = Eigen::VectorXd::Zero(s.size());
+      for (int i = 0; i < s.size(); ++i) state[i] = u(rng);
+      s.apply_correction(state);
+      double largest = 0;
+      const JacobianReport report =
+          tangent_against_differences(s, [](int) { return 1e-6; }, true, largest);
+      ASSERT_TRUE(report.evaluated()) << report;
+      EXPECT_GT(largest, 30.0 / 0.1);  // the dashpots' c/Δt is in the tangent
+      EXPECT_LE(report.max_error, 1e-5 * largest) << (nlgeom ? "NLGEOM" : "") << "\n" << report;
+      EXPECT_GE(report.compared, 36);  // nodes 2 and 3, translations
+      s.apply_correction(-state);
+    }
+  }
+}
+
 // Newton on the current increment with tolerances far below the defaults, so that it iterates
 // down to round-off.
 NewtonReport solve_tightly(ConnectorSystem& s) {
