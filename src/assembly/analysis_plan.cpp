@@ -26,7 +26,6 @@ Matrix3 to_matrix(const Triad& t) {
 // Behaviour options that clinch run does not integrate yet: the run refuses the deck instead of
 // ignoring them.
 std::string unsupported_behavior(const ConnectorBehavior& b) {
-  if (!b.damage_initiations.empty()) return "*CONNECTOR DAMAGE INITIATION";
   if (!b.failures.empty()) return "*CONNECTOR FAILURE";
   return {};
 }

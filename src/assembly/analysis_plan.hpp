@@ -36,7 +36,8 @@ struct LawSlot {
   std::size_t history = 0;
 };
 struct LawStack {
-  static constexpr int kMaxLaws = 7;  // elastic-plastic, damping, five friction definitions
+  // elastic-plastic, damage, damping, five friction definitions
+  static constexpr int kMaxLaws = 8;
   std::array<LawSlot, kMaxLaws> slots{};
   int count = 0;
   bool needs_connector_forces = false;  // some law reads the constraint forces

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace clinch {
@@ -51,10 +52,50 @@ std::string ConnectorElements::label(std::size_t c) const {
   return qualified_label(model_, element.instance, element.label);
 }
 
+bool is_deleted(const ConnectorRecord& r, const AnalysisState& state) {
+  for (const LawSlot& slot : r.laws) {
+    if (slot.law->deletes_element(std::span<const double>(state.history_n.data() + slot.history,
+                                                          slot.law->history_size()))) {
+      return true;
+    }
+  }
+  return false;
+}
+
+// A deleted element (behaviors.md §7.4): no force, no stiffness, every multiplier row inactive
+// (λ = 0), its laws' history and its motions frozen at deletion, and forces reported as 0.
+EvalStatus ConnectorElements::evaluate_deleted(std::size_t c, AnalysisState& state,
+                                               bool want_tangent, LocalSystem& local) const {
+  const ConnectorRecord& r = plan_.connectors[c];
+  const int n = r.column_count;
+  for (const LawSlot& slot : r.laws) {
+    std::copy_n(state.history_n.begin() + static_cast<std::ptrdiff_t>(slot.history),
+                slot.law->history_size(),
+                state.history.begin() + static_cast<std::ptrdiff_t>(slot.history));
+  }
+  for (int a = 0; a < n; ++a) local.r[a] = 0.0;
+  for (int j = 0; j < r.multiplier_count; ++j) {
+    local.active[static_cast<std::size_t>(j)] = 0;
+    local.r[n + j] = state.x[r.local.equation[static_cast<std::size_t>(n + j)]];
+  }
+  if (want_tangent) {
+    const int m = n + r.multiplier_count;
+    local.k.topLeftCorner(m, m).setZero();
+    for (int j = 0; j < r.multiplier_count; ++j) local.k(n + j, n + j) = 1.0;
+  }
+  ConnectorResult& result = state.results[c];
+  for (Vector6* v : {&result.elastic, &result.multiplier, &result.friction, &result.viscous,
+                     &result.applied, &result.total}) {
+    v->setZero();
+  }
+  return {};
+}
+
 EvalStatus ConnectorElements::evaluate(std::size_t c, const ElementContext& context,
                                        AnalysisState& state, bool want_tangent,
                                        LocalSystem& local) const {
   const ConnectorRecord& r = plan_.connectors[c];
+  if (is_deleted(r, state)) return evaluate_deleted(c, state, want_tangent, local);
   KinematicsResult& k = local.kinematics;
   plan_.kinematics[r.kinematics].evaluate(node_pose(plan_.dofs, state, r.nodes[0]),
                                           node_pose(plan_.dofs, state, r.nodes[1]), context.nlgeom,

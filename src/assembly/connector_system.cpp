@@ -56,7 +56,8 @@ ConnectorSystem::ConnectorSystem(const Model& model, const AnalysisPlan& plan)
       springs_(plan.springs.size()),
       multiplier_active_(static_cast<std::size_t>(plan.dofs.equations()), 0),
       internal_(Eigen::VectorXd::Zero(plan.dofs.equations())),
-      predictor_(internal_) {
+      predictor_(internal_),
+      deleted_(plan.connectors.size(), 0) {
   use_storage(true);
 }
 
@@ -356,7 +357,18 @@ void ConnectorSystem::measure(const Eigen::VectorXd& residual, const Eigen::Vect
 
 bool ConnectorSystem::update_active_set() { return update_stops(plan_, conditions_, state_); }
 
-void ConnectorSystem::end_increment() { engage_locks(plan_, state_); }
+void ConnectorSystem::end_increment() {
+  engage_locks(plan_, state_);
+  // §7.4: an element whose affected components all reached d = 1 leaves the assembly now.
+  for (std::size_t c = 0; c < plan_.connectors.size(); ++c) {
+    const ConnectorRecord& r = plan_.connectors[c];
+    if (deleted_[c] || r.laws.empty() || !is_deleted(r, state_)) continue;
+    deleted_[c] = 1;
+    events_.push_back(fmt::format("connector element {} deleted: every component its damage "
+                                  "affects is fully damaged (d = 1)",
+                                  elements_.label(c)));
+  }
+}
 
 double ConnectorSystem::nodal_value(std::int32_t node, int dof) const {
   const int eq = plan_.dofs.equation(node, dof);
@@ -379,6 +391,14 @@ ConnectorOutput ConnectorSystem::connector_output(std::size_t connector) const {
   static_cast<ConnectorResult&>(out) = state_.results[connector];
   const ConnectorRecord& r = plan_.connectors[connector];
   out.status = state_.active_sets[connector].status;
+  // output-variables.md §2: CSLST 4 on every component of a deleted element.
+  if (deleted_[connector]) {
+    for (int i = 0; i < 6; ++i) {
+      if (has_component(r.available | r.constrained, i + 1)) {
+        out.status[static_cast<std::size_t>(i)] = 4;
+      }
+    }
+  }
   std::size_t l = 0;
   for (const LawSlot& slot : r.laws) {
     out.laws[l++] = {

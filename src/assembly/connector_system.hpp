@@ -69,6 +69,7 @@ class ConnectorSystem final : public NonlinearProblem {
   void revert() override { state_.revert(); }
   bool update_active_set() override;
   void end_increment() override;
+  std::vector<std::string> take_events() override { return std::move(events_); }
   StepRequest step_request() const override { return state_.request; }
 
   // ---- results of the last evaluation ----
@@ -115,6 +116,8 @@ class ConnectorSystem final : public NonlinearProblem {
   // K_fp·(target − u)_p while prescribed DOFs are short of their targets (predicting_).
   Eigen::VectorXd predictor_;
   bool predicting_ = false;
+  std::vector<std::uint8_t> deleted_;  // per connector: deleted by damage (§7.4)
+  std::vector<std::string> events_;
 };
 
 }  // namespace clinch

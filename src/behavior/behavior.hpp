@@ -80,6 +80,9 @@ class Behavior {
   // force_tangent, and the element's tangent is unsymmetric.
   virtual bool needs_connector_forces() const { return false; }
   virtual ForceKind force_kind() const { return ForceKind::Elastic; }
+  // True when the committed `history` says the element is deleted (damage, behaviors.md §7.4):
+  // it then contributes no force, no stiffness and no constraint rows.
+  virtual bool deletes_element(std::span<const double> /*history*/) const { return false; }
   virtual IntegrationStatus integrate(const BehaviorInput& in, BehaviorOutput& out) const = 0;
 
   std::size_t history_size() const { return history_layout().size(); }

@@ -1,5 +1,5 @@
 // The law stack of a connector behaviour on one section, in the order of behaviors.md §1.3:
-// the elastic-plastic law, the damping (in parallel, behaviors.md §8), then one friction law per
+// the elastic-plastic law, the damage that degrades it (§7), the damping (in parallel, behaviors.md §8), then one friction law per
 // *CONNECTOR FRICTION in deck order.
 #pragma once
 

@@ -99,8 +99,10 @@ class NonlinearProblem {
   // Updates the active set (stops) from the solved state; true when it changed, and the
   // increment then iterates on.
   virtual bool update_active_set() { return false; }
-  // Events of a converged, committed increment (locks engage).
+  // Events of a converged, committed increment (locks engage, elements are deleted).
   virtual void end_increment() {}
+  // What end_increment did that the log reports (one line each), taken once.
+  virtual std::vector<std::string> take_events() { return {}; }
   // What the laws asked for in the last evaluation: a time-step ratio (below 1: retry smaller;
   // above 1: grow at most so much), whether a result was unreliable, and why.
   virtual StepRequest step_request() const { return {}; }

@@ -267,6 +267,9 @@ class Driver {
           // A lock engages at the converged state; its row shows the unlocked state
           // (behaviors.md §5.2, example E5).
           problem_.end_increment();
+          for (const std::string& event : problem_.take_events()) {
+            out_.log.info(fmt::format("step {} increment {}: {}", step_number, increment, event));
+          }
           out_.progress.update(step_number, increment, total_time_);
           if (!procedure.direct) {
             // keywords.md §16: D_B after a hard increment, D_D after two easy ones.

@@ -1,0 +1,169 @@
+#include "src/behavior/damage/damage_behavior.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstring>
+#include <vector>
+
+#include "src/behavior/damage/damage_degradation.hpp"
+#include "src/behavior/damage/damage_mechanism.hpp"
+#include "src/behavior/elastic/elastic_behavior.hpp"
+
+namespace clinch {
+namespace {
+
+// Increment control (§7.4): an increment in which a component's damage grows by more than
+// kDamageJump skips most of its softening branch, so it is retried smaller, aiming at
+// kDamageTarget; above kDamageSteady the next increment does not grow.
+constexpr double kDamageJump = 0.75;
+constexpr double kDamageTarget = 0.5;
+constexpr double kDamageSteady = 0.25;
+
+// The criterion outputs (output-variables.md §2): the scalar, per component, coupled.
+constexpr const char* kCriterionNames[3][2] = {
+    {"CDIF", "CDIFC"}, {"CDIM", "CDIMC"}, {"CDIP", "CDIPC"}};
+
+class DamageBehavior final : public Behavior {
+ public:
+  DamageBehavior(std::vector<DamageMechanism> mechanisms, const Matrix6& compliance)
+      : mechanisms_(std::move(mechanisms)), compliance_(compliance) {
+    for (const DamageMechanism& m : mechanisms_) affected_ |= m.affected();
+    const std::size_t element = mechanisms_.size() * DamageMechanism::kHistorySize;
+    damage_ = element;
+    force_ = damage_ + 7;
+    deleted_ = force_ + 6;
+    criteria_ = deleted_ + 1;
+    layout_.resize(criteria_ + 3 * 8);
+    for (int i = 0; i <= 6; ++i) layout_[damage_ + static_cast<std::size_t>(i)] = {"CDMG", i};
+    layout_[deleted_] = {"deleted", 0};
+    for (std::size_t k = 0; k < 3; ++k) {
+      for (int i = 0; i <= 6; ++i) {
+        layout_[criteria_ + 8 * k + static_cast<std::size_t>(i)] = {kCriterionNames[k][0], i};
+      }
+      layout_[criteria_ + 8 * k + 7] = {kCriterionNames[k][1], 0};
+    }
+  }
+
+  ComponentMask components() const override { return affected_; }
+  std::span<const HistoryVariable> history_layout() const override { return layout_; }
+  // The f^eff ⊗ ∂d/∂u term (§7.4) is unsymmetric, and softening makes the system indefinite:
+  // the step takes the LU solver.
+  bool tangent_is_symmetric() const override { return false; }
+  bool deletes_element(std::span<const double> history) const override {
+    return history[deleted_] != 0;
+  }
+
+  IntegrationStatus integrate(const BehaviorInput& in, BehaviorOutput& out) const override {
+    std::memcpy(out.history_new.data(), in.history_old.data(), layout_.size() * sizeof(double));
+    double* h = out.history_new.data();
+    const double* old = in.history_old.data();
+    // Without an elastic law below there is no force to degrade (the criteria still run).
+    static const Vector6 kNoForce = Vector6::Zero();
+    static const Matrix6 kNoStiffness = Matrix6::Zero();
+    const Vector6& feff = in.force_below ? *in.force_below : kNoForce;
+    const Matrix6& deff = in.tangent_below ? *in.tangent_below : kNoStiffness;
+    const bool tangent = in.tangent != TangentRequest::None;
+    if (old[deleted_] != 0) {
+      // A deleted element carries no force (the assembly leaves it out altogether).
+      out.force = -feff;
+      if (tangent) out.tangent = -deff;
+      return IntegrationStatus::Success;
+    }
+    const Vector6 u = in.motion_old + in.increment;
+    SensitiveVector force, motion = motion_vector(u);
+    for (int j = 0; j < 6; ++j) {
+      force[static_cast<std::size_t>(j)] = MotionSensitive(feff[j], deff.row(j).transpose());
+    }
+    const Vector6 force_old = Eigen::Map<const Vector6>(old + force_);
+    const MechanismInput input{in.motion_old, force_old, motion, force, compliance_};
+    std::array<DamageDegradation, 6> degradation;
+    for (std::size_t m = 0; m < mechanisms_.size(); ++m) {
+      const std::size_t at = m * DamageMechanism::kHistorySize;
+      const MotionSensitive d = mechanisms_[m].update(
+          input, in.history_old.subspan(at, DamageMechanism::kHistorySize),
+          out.history_new.subspan(at, DamageMechanism::kHistorySize));
+      for (int i = 0; i < 6; ++i) {
+        if (has_component(mechanisms_[m].affected(), i + 1)) {
+          degradation[static_cast<std::size_t>(i)].add(d, mechanisms_[m].degradation());
+        }
+      }
+    }
+
+    // §7.3, §7.4: f^el = (1 − d) f^eff on the affected components; this law adds −d f^eff.
+    double largest = 0, growth = 0;
+    bool failed = affected_ != 0;
+    for (int i = 0; i < 6; ++i) {
+      if (!has_component(affected_, i + 1)) continue;
+      const MotionSensitive d = degradation[static_cast<std::size_t>(i)].damage();
+      out.force[i] = -d.value * feff[i];
+      if (tangent) {
+        out.tangent.row(i) = -(d.value * deff.row(i) + feff[i] * d.gradient.transpose());
+      }
+      h[damage_ + static_cast<std::size_t>(i) + 1] = d.value;
+      largest = std::max(largest, d.value);
+      growth = std::max(growth, d.value - old[damage_ + static_cast<std::size_t>(i) + 1]);
+      failed = failed && d.value >= 1.0;
+    }
+    h[damage_] = largest;
+    // §7.4 deletion: at the end of the increment in which every affected component failed.
+    h[deleted_] = failed ? 1.0 : 0.0;
+    Eigen::Map<Vector6>(h + force_) = feff;
+    record_criteria(h);
+    if (growth > kDamageJump) {
+      out.suggested_dt_ratio = kDamageTarget / growth;
+      out.message = fmt::format("damage grew by {:.3g} in one increment (at most {} allowed)",
+                                growth, kDamageJump);
+    } else if (growth > kDamageSteady) {
+      out.suggested_dt_ratio = 1.0;
+      out.message = fmt::format("damage grew by {:.3g} in one increment", growth);
+    }
+    return IntegrationStatus::Success;
+  }
+
+ private:
+  // CDIF/CDIM/CDIP: the history maximum of r per kind of criterion, as the scalar (every
+  // mechanism of that kind), per component (uncoupled) and coupled (output-variables.md §2).
+  void record_criteria(double* h) const {
+    for (std::size_t m = 0; m < mechanisms_.size(); ++m) {
+      const double r = h[m * DamageMechanism::kHistorySize + DamageMechanism::kCriterionMax];
+      const auto kind = static_cast<std::size_t>(mechanisms_[m].criterion().criterion());
+      const int component = mechanisms_[m].criterion().component();
+      double* slots = h + criteria_ + 8 * kind;
+      slots[0] = std::max(slots[0], r);
+      double& own = component > 0 ? slots[component] : slots[7];
+      own = std::max(own, r);
+    }
+  }
+
+  std::vector<DamageMechanism> mechanisms_;
+  Matrix6 compliance_;
+  ComponentMask affected_ = 0;
+  std::size_t damage_ = 0;    // the scalar CDMG, then d_i of components 1…6
+  std::size_t force_ = 0;     // f^eff at the committed state, six values
+  std::size_t deleted_ = 0;   // 1 once the element is deleted (§7.4)
+  std::size_t criteria_ = 0;  // CDIF, CDIF1…6, CDIFC, then CDIM…, CDIP…
+  std::vector<HistoryVariable> layout_;
+};
+
+}  // namespace
+
+std::unique_ptr<Behavior> make_damage_behavior(const ConnectorBehavior& behavior,
+                                               ComponentMask available) {
+  if (behavior.damage_initiations.empty()) return nullptr;
+  std::vector<DamageMechanism> mechanisms;
+  for (std::size_t k = 0; k < behavior.damage_initiations.size(); ++k) {
+    mechanisms.emplace_back(behavior, k, available);
+  }
+  // The compliance of the linear elasticity, padded with 1 where it has no stiffness, turns f^eff
+  // back into the elastic motion for PLASTIC MOTION criteria.
+  const LinearStiffness linear = linear_stiffness(behavior, available);
+  Matrix6 padded = linear.k;
+  for (int i = 0; i < 6; ++i) {
+    if (!has_component(linear.components, i + 1)) padded(i, i) = 1.0;
+  }
+  return std::make_unique<DamageBehavior>(std::move(mechanisms),
+                                          padded.ldlt().solve(Matrix6::Identity()));
+}
+
+}  // namespace clinch
