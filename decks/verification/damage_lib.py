@@ -107,3 +107,42 @@ def check(actual, expected, tol, what):
     """Stop the script when a computed value misses a value the spec prints."""
     if abs(actual - expected) > tol:
         raise SystemExit(f"reference check failed for {what}: {actual} vs {expected}")
+
+
+class CoupledElasticDamage:
+    """Uncoupled linear elasticity k_i; coupled FORCE initiation r = P(f)/F_U with
+    P(f) = (Σ |f_i/R_i|^2)^(1/2); evolution δ = P_e(u) − P_e(u_0), P_e(u) = (Σ |u_i/S_i|^2)^(1/2),
+    with the force-shape law d = 1 − m_0 g(κ)/(m_0 + κ), m_0 = P_e(u_0) (behaviors.md §7.2). The
+    initiation point is interpolated linearly in r between the ends of the increment that crosses
+    r = 1 (§7.1): θ = (1 − r_n)/(r − r_n), u_0 = u_n + θ (u − u_n)."""
+
+    def __init__(self, k, force_scales, force_limit, motion_scales, law):
+        self.k, self.R, self.F, self.S, self.law = k, force_scales, force_limit, motion_scales, law
+        self.u_n = [0.0] * len(k)
+        self.r_n = 0.0
+        self.r_max = 0.0
+        self.m0 = None
+        self.kappa = 0.0
+        self.d = 0.0
+
+    def criterion(self, u):
+        return math.sqrt(sum((ki * ui / ri) ** 2 for ki, ui, ri in zip(self.k, u, self.R))) / self.F
+
+    def measure(self, u):
+        return math.sqrt(sum((ui / si) ** 2 for ui, si in zip(u, self.S)))
+
+    def update(self, u):
+        """Commit at the motion vector u; returns (forces, CDMG, CDIF)."""
+        r = self.criterion(u)
+        self.r_max = max(self.r_max, r)
+        if self.m0 is None and r >= 1.0:
+            theta = (1.0 - self.r_n) / (r - self.r_n)
+            self.m0 = self.measure([a + theta * (b - a) for a, b in zip(self.u_n, u)])
+        if self.m0 is not None:
+            self.kappa = max(self.kappa, self.measure(u) - self.m0)
+            kind = self.law[0]
+            g = g_linear(self.kappa, self.law[1]) if kind == "LINEAR" else g_exponential(self.kappa, *self.law[1:])
+            d = 1.0 if g <= 0.0 else 1.0 - self.m0 * g / (self.m0 + self.kappa)
+            self.d = max(self.d, d)
+        self.u_n, self.r_n = list(u), r
+        return [(1.0 - self.d) * ki * ui for ki, ui in zip(self.k, u)], self.d, self.r_max
