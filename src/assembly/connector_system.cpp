@@ -370,6 +370,30 @@ void ConnectorSystem::end_increment() {
   }
 }
 
+// behaviors.md §7.4 (2): under load control no equilibrium exists past a softening peak, and
+// Newton fails there; the element whose damage grows most in the failed trial state is named.
+std::string ConnectorSystem::failure_note() const {
+  double largest = 0, growth = 0;
+  std::size_t softening = plan_.connectors.size();
+  for (std::size_t c = 0; c < plan_.connectors.size(); ++c) {
+    for (const LawSlot& slot : plan_.connectors[c].laws) {
+      const int k = history_slot(slot.law->history_layout(), "CDMG", 0);
+      if (k < 0) continue;
+      const std::size_t at = slot.history + static_cast<std::size_t>(k);
+      const double grew = state_.history[at] - state_.history_n[at];
+      if (grew > growth) {
+        growth = grew;
+        largest = state_.history[at];
+        softening = c;
+      }
+    }
+  }
+  if (softening == plan_.connectors.size()) return {};
+  return fmt::format("connector element {} softening (d={:.3g}) under load control, limit point "
+                     "passed?",
+                     elements_.label(softening), largest);
+}
+
 double ConnectorSystem::nodal_value(std::int32_t node, int dof) const {
   const int eq = plan_.dofs.equation(node, dof);
   return eq >= 0 ? state_.x[eq] : 0.0;

@@ -103,6 +103,9 @@ class NonlinearProblem {
   virtual void end_increment() {}
   // What end_increment did that the log reports (one line each), taken once.
   virtual std::vector<std::string> take_events() { return {}; }
+  // A likely cause of a failed attempt read from its last (trial) state, for the reason a stop
+  // gives (a connector softening past its peak); empty when there is none.
+  virtual std::string failure_note() const { return {}; }
   // What the laws asked for in the last evaluation: a time-step ratio (below 1: retry smaller;
   // above 1: grow at most so much), whether a result was unreliable, and why.
   virtual StepRequest step_request() const { return {}; }

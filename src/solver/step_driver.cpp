@@ -286,6 +286,7 @@ class Driver {
           }
           break;
         }
+        const std::string note = smaller ? std::string() : problem_.failure_note();
         problem_.revert();
         std::string reason = smaller ? request.message : report.message;
         const bool singular = !smaller && report.outcome == NewtonOutcome::SolverFailed;
@@ -296,7 +297,9 @@ class Driver {
         // table with CONSTANT extrapolation): smaller increments are tried as for any failed
         // attempt (principle 7). When none helps, the singular DOF is the reason that stands.
         const auto give_up = [&](std::string why) {
-          return fail(singular ? reason : std::move(why), step_number, increment + 1);
+          std::string stated = singular ? reason : std::move(why);
+          if (!note.empty()) stated += "; " + note;
+          return fail(std::move(stated), step_number, increment + 1);
         };
         if (!smaller && report.outcome == NewtonOutcome::EvaluationFailed && procedure.direct) {
           return fail(reason, step_number, increment + 1);
