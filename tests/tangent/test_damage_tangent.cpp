@@ -205,6 +205,17 @@ TEST(DamageTangent, E12CompressionDoesNotDriveTensionDamage) {
   d.expect_fd_tangent(vec(-0.25), 0.09, kAxial);
 }
 
+TEST(DamageTangent, InitiationFromTheOtherSide) {
+  // One increment from compression (no lower limit: r = 0 there) into tension past the limit:
+  // damage initiates where the force crosses F_U = 90 (u_0 = 0.09), not where r would if it
+  // were linear across the sign change (§7.1). At U = 0.15 this is E12's d = 0.58.
+  StackDriver d(kE12, kAxial);
+  d.commit(vec(-0.1));
+  d.expect_fd_tangent(vec(0.15), 0.09, kAxial);
+  d.commit(vec(0.15));
+  EXPECT_NEAR(d.output("CDMG", 0), 0.58, 1e-12);
+}
+
 TEST(DamageTangent, E12ExponentialAndTabular) {
   StackDriver e(kAxialElastic + kForceInitiation +
                     "*CONNECTOR DAMAGE EVOLUTION, TYPE=MOTION, SOFTENING=EXPONENTIAL\n0.2, 5.\n",

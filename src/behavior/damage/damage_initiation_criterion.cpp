@@ -10,9 +10,9 @@ DamageInitiationCriterion::DamageInitiationCriterion(const DamageInitiation& ini
       component_(initiation.component),
       potential_(std::move(potential)) {
   // §7.1: a blank limit is no limit (∓1e36), so that side gives r = 0.
-  if (initiation.lower && *initiation.lower != 0) inverse_lower_ = 1.0 / *initiation.lower;
-  if (initiation.upper && *initiation.upper != 0) inverse_upper_ = 1.0 / *initiation.upper;
-  if (initiation.plastic_motion > 0) inverse_plastic_motion_ = 1.0 / initiation.plastic_motion;
+  if (initiation.lower) lower_ = *initiation.lower;
+  if (initiation.upper) upper_ = *initiation.upper;
+  plastic_motion_ = initiation.plastic_motion;
 }
 
 ComponentMask DamageInitiationCriterion::components() const {
@@ -22,7 +22,7 @@ ComponentMask DamageInitiationCriterion::components() const {
 
 CriterionValue DamageInitiationCriterion::evaluate(const CriterionInput& in) const {
   if (criterion_ == DamageInitiation::Criterion::PlasticMotion) {
-    return {in.equivalent * MotionSensitive(inverse_plastic_motion_), 1.0};
+    return {in.equivalent / MotionSensitive(plastic_motion_), in.equivalent, plastic_motion_, 1.0};
   }
   const SensitiveVector& x =
       criterion_ == DamageInitiation::Criterion::Force ? in.force : in.motion;
@@ -34,7 +34,8 @@ CriterionValue DamageInitiationCriterion::evaluate(const CriterionInput& in) con
   }
   // r = v/limit on the side of its sign (F_L ≤ 0 makes r ≥ 0 in compression).
   const double sign = v.value >= 0 ? 1.0 : -1.0;
-  return {v * MotionSensitive(sign > 0 ? inverse_upper_ : inverse_lower_), sign};
+  const double limit = sign > 0 ? upper_ : lower_;
+  return {limit != 0 ? v / MotionSensitive(limit) : MotionSensitive(0.0), v, limit, sign};
 }
 
 }  // namespace clinch

@@ -20,8 +20,10 @@ struct CriterionInput {
 };
 
 struct CriterionValue {
-  MotionSensitive r;  // ≥ 1: initiated
-  double sign = 1;    // sign of the measure (s_0 at initiation)
+  MotionSensitive r;        // ≥ 1: initiated
+  MotionSensitive measure;  // the signed measure v: f_i, u_i, P(f), P(u) or ū^pl
+  double limit = 0;         // the limit on v's side (0: none on that side, r = 0)
+  double sign = 1;          // sign of v (s_0 at initiation)
 };
 
 class DamageInitiationCriterion {
@@ -40,9 +42,9 @@ class DamageInitiationCriterion {
  private:
   DamageInitiation::Criterion criterion_;
   int component_;
-  // FORCE/MOTION: 1/limit on each side (0 without a limit: that side never initiates).
-  double inverse_lower_ = 0, inverse_upper_ = 0;
-  double inverse_plastic_motion_ = 0;  // PLASTIC MOTION: 1/ū^pl_0
+  // FORCE/MOTION: the limit on each side (0 without one: that side never initiates).
+  double lower_ = 0, upper_ = 0;
+  double plastic_motion_ = 0;  // PLASTIC MOTION: ū^pl_0
   std::optional<ConnectorPotential> potential_;
 };
 

@@ -104,10 +104,13 @@ MotionSensitive DamageMechanism::update(const MechanismInput& in, std::span<cons
     history[kEquivalent] = equivalent.value;
   }
   const CriterionValue now = criterion_.evaluate({in.force, in.motion, equivalent});
-  history[kCriterion] = now.r.value;
+  history[kMeasureOld] = now.measure.value;
   history[kCriterionMax] = std::max(old[kCriterionMax], now.r.value);
 
   // §7.1: the initiation point, interpolated linearly inside the increment that crosses r = 1.
+  // The signed measure v is interpolated to its limit on the trial's side, θ = (L − v_n)/(v − v_n):
+  // the same point as θ = (1 − r_n)/(r − r_n) when v_n lies on that side, and the crossing of
+  // the limit, not of the other side's r, when the increment starts on the other side.
   const bool crossing = old[kInitiated] == 0;
   MotionSensitive theta;  // where in the increment the crossing lies (crossing only)
   SensitiveVector initiation_motion;
@@ -115,8 +118,8 @@ MotionSensitive DamageMechanism::update(const MechanismInput& in, std::span<cons
   MotionSensitive measure(old[kMeasure]);
   if (crossing) {
     if (now.r.value < 1.0) return 0.0;
-    const double r_old = old[kCriterion];
-    theta = MotionSensitive(1.0 - r_old) / (now.r - MotionSensitive(r_old));
+    const double v_old = old[kMeasureOld];
+    theta = MotionSensitive(now.limit - v_old) / (now.measure - MotionSensitive(v_old));
     for (std::size_t j = 0; j < 6; ++j) {
       const MotionSensitive u_old(in.motion_old[static_cast<int>(j)]);
       initiation_motion[j] = u_old + theta * (in.motion[j] - u_old);

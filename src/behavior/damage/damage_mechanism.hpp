@@ -28,7 +28,7 @@ class DamageMechanism {
   // History of one mechanism (§7.4 "History per mechanism"), kHistorySize doubles.
   static constexpr int kInitiated = 0;
   static constexpr int kCriterionMax = 1;   // r_max (CDIF, CDIM, CDIP)
-  static constexpr int kCriterion = 2;      // r at the committed state, for the interpolation
+  static constexpr int kMeasureOld = 2;     // the criterion's signed measure v at the committed state
   static constexpr int kSign = 3;           // s_0
   static constexpr int kMeasure = 4;        // m_0 = s_0 u_0,i or P_e(u_0)
   static constexpr int kKappa = 5;          // κ = max δ
