@@ -370,9 +370,30 @@ void ConnectorSystem::end_increment() {
   }
 }
 
-// behaviors.md §7.4 (2): under load control no equilibrium exists past a softening peak, and
-// Newton fails there; the element whose damage grows most in the failed trial state is named.
-std::string ConnectorSystem::failure_note() const {
+// behaviors.md §7.4: a node that a deleted connector leaves without stiffness makes the system
+// singular there; under load control no equilibrium exists past a softening peak, and Newton
+// fails: the element whose damage grows most in the failed trial state is named.
+std::string ConnectorSystem::failure_note(int failed_equation) const {
+  const std::int32_t node = failed_equation >= 0 && failed_equation < plan_.dofs.equations()
+                                ? plan_.dofs.node_of(failed_equation)
+                                : -1;
+  const auto trial_damage = [&](std::size_t c) {
+    for (const LawSlot& slot : plan_.connectors[c].laws) {
+      const int k = history_slot(slot.law->history_layout(), "CDMG", 0);
+      if (k >= 0) return state_.history[slot.history + static_cast<std::size_t>(k)];
+    }
+    return 0.0;
+  };
+  for (std::size_t c = 0; node >= 0 && c < plan_.connectors.size(); ++c) {
+    const ConnectorRecord& r = plan_.connectors[c];
+    if (r.nodes[0] != node && r.nodes[1] != node) continue;
+    if (deleted_[c]) {
+      return fmt::format("after connector element {} was deleted (damage)", elements_.label(c));
+    }
+    if (trial_damage(c) >= 1.0) {
+      return fmt::format("connector element {} fully damaged (d=1)", elements_.label(c));
+    }
+  }
   double largest = 0, growth = 0;
   std::size_t softening = plan_.connectors.size();
   for (std::size_t c = 0; c < plan_.connectors.size(); ++c) {

@@ -70,7 +70,7 @@ class ConnectorSystem final : public NonlinearProblem {
   bool update_active_set() override;
   void end_increment() override;
   std::vector<std::string> take_events() override { return std::move(events_); }
-  std::string failure_note() const override;
+  std::string failure_note(int failed_equation) const override;
   StepRequest step_request() const override { return state_.request; }
 
   // ---- results of the last evaluation ----

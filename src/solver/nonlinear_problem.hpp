@@ -104,8 +104,9 @@ class NonlinearProblem {
   // What end_increment did that the log reports (one line each), taken once.
   virtual std::vector<std::string> take_events() { return {}; }
   // A likely cause of a failed attempt read from its last (trial) state, for the reason a stop
-  // gives (a connector softening past its peak); empty when there is none.
-  virtual std::string failure_note() const { return {}; }
+  // gives: a connector deleted next to `failed_equation` (the equation of a zero pivot, −1 if
+  // none), else a connector softening past its peak; empty when there is none.
+  virtual std::string failure_note(int /*failed_equation*/) const { return {}; }
   // What the laws asked for in the last evaluation: a time-step ratio (below 1: retry smaller;
   // above 1: grow at most so much), whether a result was unreliable, and why.
   virtual StepRequest step_request() const { return {}; }

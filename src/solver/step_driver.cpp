@@ -291,7 +291,7 @@ class Driver {
           }
           break;
         }
-        const std::string note = smaller ? std::string() : problem_.failure_note();
+        const std::string note = smaller ? std::string() : problem_.failure_note(report.failed_equation);
         problem_.revert();
         std::string reason = smaller ? request.message : report.message;
         const bool singular = !smaller && report.outcome == NewtonOutcome::SolverFailed;
