@@ -111,7 +111,14 @@ class PlanBuilder {
           plan_.rate_dependent_friction |= f.law.exponential_decay ||
                                            f.law.variable == FrictionLaw::Variable::SlipRate;
         }
-        for (auto& law : make_connector_laws(b, section.available, section.constrained)) {
+        DamageControls controls;
+        if (section.controls_index >= 0) {
+          const SectionControls& c =
+              model_.sections.controls[static_cast<std::size_t>(section.controls_index)];
+          controls = {c.element_deletion, c.max_degradation, c.viscosity};
+        }
+        for (auto& law :
+             make_connector_laws(b, section.available, section.constrained, controls)) {
           section_laws_[index].push_back(law.get());
           plan_.behaviors.push_back(std::move(law));
         }

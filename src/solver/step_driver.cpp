@@ -238,14 +238,9 @@ class Driver {
           return false;
         }
         const bool converged = report.converged();
-        // A converged attempt is still abandoned when a law asks for a smaller increment; with
-        // DIRECT the deck fixes the increments, so the request is only logged.
+        // A converged attempt is still abandoned when a law asks for a smaller increment.
         const StepRequest request = problem_.step_request();
-        const bool smaller = converged && request.dt_ratio < 1.0 && !procedure.direct;
-        if (converged && request.dt_ratio < 1.0 && procedure.direct) {
-          out_.log.warning(fmt::format("step {} increment {}: {} (kept: DIRECT fixes the increment)",
-                                       step_number, increment + 1, request.message));
-        }
+        const bool smaller = converged && request.dt_ratio < 1.0;
         const IncrementAttempt status_line{step_number, increment + 1, attempt_number,
                                            !converged || smaller, iterations, iterations + changes,
                                            total_time_ + dt, new_time, dt};
@@ -310,7 +305,10 @@ class Driver {
           return fail(reason, step_number, increment + 1);
         }
         if (procedure.direct) {
-          return give_up(fmt::format("no convergence with fixed increments ({})", reason));
+          return give_up(
+              smaller ? fmt::format("a law asks for a smaller increment than DIRECT allows ({})",
+                                    reason)
+                      : fmt::format("no convergence with fixed increments ({})", reason));
         }
         ++result_.cutbacks;
         if (++cutbacks > t.ia) {

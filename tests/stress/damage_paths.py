@@ -331,7 +331,7 @@ def main():
         count = min(args.per_deck, args.paths - done)
         drive = rng.choices(DRIVES, weights=[0.4, 0.3, 0.3])[0]
         paths = [Path(rng, done + i, drive) for i in range(count)]
-        control = (("direct", rng.choice([0.01, 0.02, 0.005])) if rng.random() < 0.3 else
+        control = (("direct", rng.choice([0.002, 0.005])) if rng.random() < 0.3 else
                    ("auto", rng.choice([0.01, 0.05, 0.1]), rng.choice([0.1, 0.2, 1.0])))
         deck = os.path.join(work, f"damage_{deck_index:04d}.inp")
         write_deck(deck, paths, control)

@@ -54,7 +54,8 @@ struct StackResult {
 // converged one.
 class StackDriver {
  public:
-  StackDriver(const std::string& body, ComponentMask available) {
+  StackDriver(const std::string& body, ComponentMask available,
+              const DamageControls& controls = {}) {
     read_deck_text("b.inp", "*CONNECTOR BEHAVIOR, NAME=B\n" + body, deck_.sources, deck_.model,
                    deck_.sink);
     for (const Diagnostic& d : deck_.sink.diagnostics()) {
@@ -62,11 +63,11 @@ class StackDriver {
         EXPECT_NE(d.severity, Severity::Error) << deck_.dump();
       }
     }
-    laws_ = make_connector_laws(deck_.model.behaviors.behaviors.at(0), available, 0);
+    laws_ = make_connector_laws(deck_.model.behaviors.behaviors.at(0), available, 0, controls);
     for (const auto& law : laws_) committed_.emplace_back(law->history_size(), 0.0);
   }
 
-  StackResult evaluate(const Vector6& u) const {
+  StackResult evaluate(const Vector6& u, double dt = 1.0) const {
     StackResult r;
     bool first = true;
     for (std::size_t l = 0; l < laws_.size(); ++l) {
@@ -74,7 +75,7 @@ class StackDriver {
       BehaviorOutput out;
       out.history_new = r.history.back();
       const Vector6 increment = u - motion_;
-      const BehaviorInput in{motion_,           increment, 1.0, 1.0, committed_[l],
+      const BehaviorInput in{motion_,           increment, 1.0, dt, committed_[l],
                              TangentRequest::Consistent, first ? nullptr : &r.force,
                              first ? nullptr : &r.tangent};
       r.ok = r.ok && laws_[l]->integrate(in, out) != IntegrationStatus::Failure;
@@ -85,8 +86,8 @@ class StackDriver {
     }
     return r;
   }
-  StackResult commit(const Vector6& u) {
-    StackResult r = evaluate(u);
+  StackResult commit(const Vector6& u, double dt = 1.0) {
+    StackResult r = evaluate(u, dt);
     EXPECT_TRUE(r.ok);
     for (const auto& h : r.history) {
       for (double v : h) EXPECT_FALSE(std::isnan(v));
@@ -104,11 +105,11 @@ class StackDriver {
     return 0.0;
   }
   // §1.4 at u from the committed state, on the columns of `mask`.
-  void expect_fd_tangent(const Vector6& u, double u_s, ComponentMask mask) const {
-    const StackResult at = evaluate(u);
+  void expect_fd_tangent(const Vector6& u, double u_s, ComponentMask mask, double dt = 1.0) const {
+    const StackResult at = evaluate(u, dt);
     ASSERT_TRUE(at.ok);
-    const auto force = [this](const Eigen::VectorXd& x, Eigen::VectorXd& f) {
-      const StackResult e = evaluate(Vector6(x));
+    const auto force = [this, dt](const Eigen::VectorXd& x, Eigen::VectorXd& f) {
+      const StackResult e = evaluate(Vector6(x), dt);
       f = e.force;
       return e.ok;
     };
@@ -358,6 +359,39 @@ TEST(DamageTangent, SeveralMechanismsMaximumMultiplicativeAffected) {
   // §7.3: d_2 = 1 − (1 − d_force)(1 − d_motion).
   d.commit(vec(0.15, 0.09));
   EXPECT_GT(d.output("CDMG", 2), d.output("CDMG", 1));
+}
+
+TEST(DamageControls, MaxDegradationAndElementDeletion) {
+  // MAX DEGRADATION 0.8: d stops at 0.8; with deletion the element goes, without it keeps
+  // (1 − 0.8) k (keywords.md §5, docs/decisions.md "Damage").
+  for (const bool deletion : {true, false}) {
+    StackDriver d(kE12, kAxial, DamageControls{deletion, 0.8, 0.0});
+    d.commit(vec(0.05));
+    d.commit(vec(0.15));
+    d.commit(vec(0.25));  // inviscid d = 0.928 > 0.8
+    EXPECT_EQ(d.output("CDMG", 1), 0.8);
+    EXPECT_EQ(d.output("deleted", 0), deletion ? 1.0 : 0.0);
+    if (!deletion) {
+      const StackResult r = d.evaluate(vec(0.3));
+      EXPECT_NEAR(r.force[0], 0.2 * kStiffness * 0.3, 1e-9);
+      EXPECT_NEAR(r.tangent(0, 0), 0.2 * kStiffness, 1e-9);
+      d.expect_fd_tangent(vec(0.3), 0.09, kAxial);
+    }
+  }
+}
+
+TEST(DamageControls, ViscousRegularisationTangent) {
+  // d_v = (η d_v,n + Δt d)/(η + Δt): the tangent scales ∂d/∂u by Δt/(η + Δt).
+  const double eta = 0.05, dt = 0.1;
+  StackDriver d(kE12, kAxial, DamageControls{true, 1.0, eta});
+  d.commit(vec(0.05), dt);
+  d.expect_fd_tangent(vec(0.10), 0.09, kAxial, dt);
+  d.commit(vec(0.10), dt);
+  EXPECT_NEAR(d.output("CDMG", 1), dt / (eta + dt) * 0.145, 1e-12);
+  d.expect_fd_tangent(vec(0.15), 0.09, kAxial, dt);
+  // Held: the regularised damage keeps catching up with the inviscid 0.145.
+  d.commit(vec(0.10), dt);
+  EXPECT_NEAR(d.output("CDMG", 1), 0.145 * (1 - std::pow(eta / (eta + dt), 2)), 1e-12);
 }
 
 TEST(DamageIncrementControl, AJumpOfDamageAsksForASmallerIncrement) {

@@ -19,6 +19,8 @@ namespace {
 constexpr double kDamageJump = 0.75;
 constexpr double kDamageTarget = 0.5;
 constexpr double kDamageSteady = 0.25;
+// Regularised damage this close to the largest damage counts as having reached it.
+constexpr double kViscousFailure = 1e-3;
 
 // The criterion outputs (output-variables.md §2): the scalar, per component, coupled.
 constexpr const char* kCriterionNames[3][2] = {
@@ -26,8 +28,9 @@ constexpr const char* kCriterionNames[3][2] = {
 
 class DamageBehavior final : public Behavior {
  public:
-  DamageBehavior(std::vector<DamageMechanism> mechanisms, const Matrix6& compliance)
-      : mechanisms_(std::move(mechanisms)), compliance_(compliance) {
+  DamageBehavior(std::vector<DamageMechanism> mechanisms, const Matrix6& compliance,
+                 const DamageControls& controls)
+      : mechanisms_(std::move(mechanisms)), compliance_(compliance), controls_(controls) {
     for (const DamageMechanism& m : mechanisms_) affected_ |= m.affected();
     const std::size_t element = mechanisms_.size() * DamageMechanism::kHistorySize;
     damage_ = element;
@@ -91,23 +94,28 @@ class DamageBehavior final : public Behavior {
     }
 
     // §7.3, §7.4: f^el = (1 − d) f^eff on the affected components; this law adds −d f^eff.
+    const double d_max = controls_.max_degradation;
     double largest = 0, growth = 0;
     bool failed = affected_ != 0;
     for (int i = 0; i < 6; ++i) {
       if (!has_component(affected_, i + 1)) continue;
-      const MotionSensitive d = degradation[static_cast<std::size_t>(i)].damage();
+      const double d_old = old[damage_ + static_cast<std::size_t>(i) + 1];
+      MotionSensitive d = degradation[static_cast<std::size_t>(i)].damage();
+      if (controls_.viscosity > 0) d = regularized(d, d_old, in.dt);
+      if (d.value >= d_max) d = MotionSensitive(d_max);
       out.force[i] = -d.value * feff[i];
       if (tangent) {
         out.tangent.row(i) = -(d.value * deff.row(i) + feff[i] * d.gradient.transpose());
       }
       h[damage_ + static_cast<std::size_t>(i) + 1] = d.value;
       largest = std::max(largest, d.value);
-      growth = std::max(growth, d.value - old[damage_ + static_cast<std::size_t>(i) + 1]);
-      failed = failed && d.value >= 1.0;
+      growth = std::max(growth, d.value - d_old);
+      failed = failed && d.value >= d_max;
     }
     h[damage_] = largest;
-    // §7.4 deletion: at the end of the increment in which every affected component failed.
-    h[deleted_] = failed ? 1.0 : 0.0;
+    // §7.4 deletion: at the end of the increment in which every affected component reached the
+    // largest damage, unless the section controls keep the element (ELEMENT DELETION=NO).
+    h[deleted_] = failed && controls_.element_deletion ? 1.0 : 0.0;
     Eigen::Map<Vector6>(h + force_) = feff;
     record_criteria(h);
     if (growth > kDamageJump) {
@@ -122,6 +130,21 @@ class DamageBehavior final : public Behavior {
   }
 
  private:
+  // VISCOSITY η (keywords.md §5): the damage used is d_v with d_v' = (d − d_v)/η, integrated by
+  // backward Euler over the increment: d_v = (η d_v,n + Δt d)/(η + Δt). It lags the inviscid d
+  // over a time scale η and reaches d_max only asymptotically, so within kViscousFailure of it
+  // it is taken as reached (the element can then be deleted).
+  MotionSensitive regularized(const MotionSensitive& d, double d_old, double dt) const {
+    const double eta = controls_.viscosity;
+    const double weight = dt / (eta + dt);
+    MotionSensitive v(eta / (eta + dt) * d_old + weight * d.value, weight * d.gradient);
+    if (v.value < d_old) v = MotionSensitive(d_old);  // d_v never decreases
+    if (v.value >= controls_.max_degradation - kViscousFailure) {
+      v = MotionSensitive(controls_.max_degradation);
+    }
+    return v;
+  }
+
   // CDIF/CDIM/CDIP: the history maximum of r per kind of criterion, as the scalar (every
   // mechanism of that kind), per component (uncoupled) and coupled (output-variables.md §2).
   void record_criteria(double* h) const {
@@ -138,6 +161,7 @@ class DamageBehavior final : public Behavior {
 
   std::vector<DamageMechanism> mechanisms_;
   Matrix6 compliance_;
+  DamageControls controls_;
   ComponentMask affected_ = 0;
   std::size_t damage_ = 0;    // the scalar CDMG, then d_i of components 1…6
   std::size_t force_ = 0;     // f^eff at the committed state, six values
@@ -149,7 +173,8 @@ class DamageBehavior final : public Behavior {
 }  // namespace
 
 std::unique_ptr<Behavior> make_damage_behavior(const ConnectorBehavior& behavior,
-                                               ComponentMask available) {
+                                               ComponentMask available,
+                                               const DamageControls& controls) {
   if (behavior.damage_initiations.empty()) return nullptr;
   std::vector<DamageMechanism> mechanisms;
   for (std::size_t k = 0; k < behavior.damage_initiations.size(); ++k) {
@@ -163,7 +188,7 @@ std::unique_ptr<Behavior> make_damage_behavior(const ConnectorBehavior& behavior
     if (!has_component(linear.components, i + 1)) padded(i, i) = 1.0;
   }
   return std::make_unique<DamageBehavior>(std::move(mechanisms),
-                                          padded.ldlt().solve(Matrix6::Identity()));
+                                          padded.ldlt().solve(Matrix6::Identity()), controls);
 }
 
 }  // namespace clinch

@@ -12,9 +12,19 @@
 
 namespace clinch {
 
+// How damage ends, from the *SECTION CONTROLS of the section (keywords.md §5): deletion once
+// every affected component reaches the largest damage, that largest damage, and the viscosity η
+// of the regularisation d_v' = (d − d_v)/η (0: none).
+struct DamageControls {
+  bool element_deletion = true;
+  double max_degradation = 1.0;
+  double viscosity = 0.0;
+};
+
 // The damage law of `behavior` on the `available` components; nullptr when the behaviour has no
 // damage initiation. The model must have passed validation.
 std::unique_ptr<Behavior> make_damage_behavior(const ConnectorBehavior& behavior,
-                                               ComponentMask available);
+                                               ComponentMask available,
+                                               const DamageControls& controls = {});
 
 }  // namespace clinch
