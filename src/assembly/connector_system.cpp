@@ -370,6 +370,26 @@ void ConnectorSystem::end_increment() {
   }
 }
 
+// The energy dissipated by the viscous regularisation of damage (*SECTION CONTROLS, VISCOSITY)
+// over the connectors that have it, so that an analyst can judge the viscosity against the
+// energy of the model.
+std::vector<std::string> ConnectorSystem::step_summary() const {
+  double energy = 0;
+  std::size_t count = 0;
+  for (const ConnectorRecord& r : plan_.connectors) {
+    for (const LawSlot& slot : r.laws) {
+      const int k = history_slot(slot.law->history_layout(), "regularisation energy", 0);
+      if (k < 0) continue;
+      energy += state_.history_n[slot.history + static_cast<std::size_t>(k)];
+      ++count;
+    }
+  }
+  if (count == 0) return {};
+  return {fmt::format("energy dissipated by the viscous regularisation of damage so far: {:.6g} "
+                      "({} connectors with VISCOSITY)",
+                      energy, count)};
+}
+
 // behaviors.md §7.4: a node that a deleted connector leaves without stiffness makes the system
 // singular there; under load control no equilibrium exists past a softening peak, and Newton
 // fails: the element whose damage grows most in the failed trial state is named.

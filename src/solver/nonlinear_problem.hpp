@@ -101,6 +101,8 @@ class NonlinearProblem {
   virtual bool update_active_set() { return false; }
   // Events of a converged, committed increment (locks engage, elements are deleted).
   virtual void end_increment() {}
+  // What the log reports at the end of a step (one line each): totals of the converged state.
+  virtual std::vector<std::string> step_summary() const { return {}; }
   // What end_increment did that the log reports (one line each), taken once.
   virtual std::vector<std::string> take_events() { return {}; }
   // A likely cause of a failed attempt read from its last (trial) state, for the reason a stop

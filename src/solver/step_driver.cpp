@@ -325,6 +325,9 @@ class Driver {
       }
     }
     conditions_.end_step(period, total_time_);
+    for (const std::string& line : problem_.step_summary()) {
+      out_.log.info(fmt::format("step {}: {}", step_number, line));
+    }
     return true;
   }
 

@@ -37,7 +37,10 @@ class DamageBehavior final : public Behavior {
     force_ = damage_ + 7;
     deleted_ = force_ + 6;
     criteria_ = deleted_ + 1;
-    layout_.resize(criteria_ + 3 * 8);
+    inviscid_ = criteria_ + 3 * 8;
+    regularisation_ = inviscid_ + 6;
+    layout_.resize(regularisation_ + 1);
+    if (controls_.viscosity > 0) layout_[regularisation_] = {"regularisation energy", 0};
     for (int i = 0; i <= 6; ++i) layout_[damage_ + static_cast<std::size_t>(i)] = {"CDMG", i};
     layout_[deleted_] = {"deleted", 0};
     for (std::size_t k = 0; k < 3; ++k) {
@@ -101,7 +104,16 @@ class DamageBehavior final : public Behavior {
       if (!has_component(affected_, i + 1)) continue;
       const double d_old = old[damage_ + static_cast<std::size_t>(i) + 1];
       MotionSensitive d = degradation[static_cast<std::size_t>(i)].damage();
-      if (controls_.viscosity > 0) d = regularized(d, d_old, in.dt);
+      if (controls_.viscosity > 0) {
+        const auto slot = inviscid_ + static_cast<std::size_t>(i);
+        h[slot] = std::min(d.value, d_max);
+        d = regularized(d, d_old, in.dt);
+        // The work of the force the regularised element carries beyond the inviscid one,
+        // (d − d_v) f^eff, along the motion (trapezoidal over the increment).
+        const double excess = (h[slot] - std::min(d.value, d_max)) * feff[i];
+        const double excess_old = (old[slot] - d_old) * old[force_ + static_cast<std::size_t>(i)];
+        h[regularisation_] += 0.5 * (excess + excess_old) * in.increment[i];
+      }
       if (d.value >= d_max) d = MotionSensitive(d_max);
       out.force[i] = -d.value * feff[i];
       if (tangent) {
@@ -167,6 +179,8 @@ class DamageBehavior final : public Behavior {
   std::size_t force_ = 0;     // f^eff at the committed state, six values
   std::size_t deleted_ = 0;   // 1 once the element is deleted (§7.4)
   std::size_t criteria_ = 0;  // CDIF, CDIF1…6, CDIFC, then CDIM…, CDIP…
+  std::size_t inviscid_ = 0;  // VISCOSITY: the damage before regularisation, per component
+  std::size_t regularisation_ = 0;  // VISCOSITY: the energy the regularisation dissipated
   std::vector<HistoryVariable> layout_;
 };
 
