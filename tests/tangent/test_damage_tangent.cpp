@@ -75,8 +75,13 @@ class StackDriver {
       BehaviorOutput out;
       out.history_new = r.history.back();
       const Vector6 increment = u - motion_;
-      const BehaviorInput in{motion_,           increment, 1.0, dt, committed_[l],
-                             TangentRequest::Consistent, first ? nullptr : &r.force,
+      const BehaviorInput in{motion_,
+                             increment,
+                             1.0,
+                             dt,
+                             committed_[l],
+                             TangentRequest::Consistent,
+                             first ? nullptr : &r.force,
                              first ? nullptr : &r.tangent};
       r.ok = r.ok && laws_[l]->integrate(in, out) != IntegrationStatus::Failure;
       r.force += out.force;
@@ -240,8 +245,8 @@ TEST(DamageTangent, E12ExponentialAndTabular) {
 }
 
 TEST(DamageTangent, E13Energy) {
-  StackDriver d(kAxialElastic + kForceInitiation + "*CONNECTOR DAMAGE EVOLUTION, TYPE=ENERGY\n10.\n",
-                kAxial);
+  StackDriver d(
+      kAxialElastic + kForceInitiation + "*CONNECTOR DAMAGE EVOLUTION, TYPE=ENERGY\n10.\n", kAxial);
   d.commit(vec(0.05));
   d.expect_fd_tangent(vec(0.10), 0.09, kAxial);
   d.commit(vec(0.10));

@@ -86,9 +86,9 @@ class DamageBehavior final : public Behavior {
     std::array<DamageDegradation, 6> degradation;
     for (std::size_t m = 0; m < mechanisms_.size(); ++m) {
       const std::size_t at = m * DamageMechanism::kHistorySize;
-      const MotionSensitive d = mechanisms_[m].update(
-          input, in.history_old.subspan(at, DamageMechanism::kHistorySize),
-          out.history_new.subspan(at, DamageMechanism::kHistorySize));
+      const MotionSensitive d =
+          mechanisms_[m].update(input, in.history_old.subspan(at, DamageMechanism::kHistorySize),
+                                out.history_new.subspan(at, DamageMechanism::kHistorySize));
       for (int i = 0; i < 6; ++i) {
         if (has_component(mechanisms_[m].affected(), i + 1)) {
           degradation[static_cast<std::size_t>(i)].add(d, mechanisms_[m].degradation());
@@ -175,11 +175,11 @@ class DamageBehavior final : public Behavior {
   Matrix6 compliance_;
   DamageControls controls_;
   ComponentMask affected_ = 0;
-  std::size_t damage_ = 0;    // the scalar CDMG, then d_i of components 1…6
-  std::size_t force_ = 0;     // f^eff at the committed state, six values
-  std::size_t deleted_ = 0;   // 1 once the element is deleted (§7.4)
-  std::size_t criteria_ = 0;  // CDIF, CDIF1…6, CDIFC, then CDIM…, CDIP…
-  std::size_t inviscid_ = 0;  // VISCOSITY: the damage before regularisation, per component
+  std::size_t damage_ = 0;          // the scalar CDMG, then d_i of components 1…6
+  std::size_t force_ = 0;           // f^eff at the committed state, six values
+  std::size_t deleted_ = 0;         // 1 once the element is deleted (§7.4)
+  std::size_t criteria_ = 0;        // CDIF, CDIF1…6, CDIFC, then CDIM…, CDIP…
+  std::size_t inviscid_ = 0;        // VISCOSITY: the damage before regularisation, per component
   std::size_t regularisation_ = 0;  // VISCOSITY: the energy the regularisation dissipated
   std::vector<HistoryVariable> layout_;
 };

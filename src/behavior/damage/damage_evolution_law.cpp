@@ -18,8 +18,7 @@ DamageEvolutionLaw::DamageEvolutionLaw(const DamageEvolution& evolution, bool pl
       failure_motion_(evolution.failure_motion),
       exponent_(evolution.exponent),
       fracture_energy_(evolution.fracture_energy) {
-  if (type_ == DamageEvolution::Type::Motion &&
-      softening_ == DamageEvolution::Softening::Tabular) {
+  if (type_ == DamageEvolution::Type::Motion && softening_ == DamageEvolution::Softening::Tabular) {
     table_ = PiecewiseLinearTable::from_points(evolution.table, evolution.extrapolation);
   }
 }

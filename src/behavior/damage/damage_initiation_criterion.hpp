@@ -14,9 +14,9 @@ namespace clinch {
 
 // What a criterion reads at one state, each with its gradient against the trial motion.
 struct CriterionInput {
-  const SensitiveVector& force;        // f^eff, the undamaged elastic-plastic force
-  const SensitiveVector& motion;       // u
-  const MotionSensitive& equivalent;   // ū^pl of the component's plasticity (PLASTIC MOTION)
+  const SensitiveVector& force;       // f^eff, the undamaged elastic-plastic force
+  const SensitiveVector& motion;      // u
+  const MotionSensitive& equivalent;  // ū^pl of the component's plasticity (PLASTIC MOTION)
 };
 
 struct CriterionValue {

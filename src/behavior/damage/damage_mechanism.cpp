@@ -38,7 +38,8 @@ DamageMechanism::DamageMechanism(const ConnectorBehavior& behavior, std::size_t 
   initiation_plastic_motion_ = init.plastic_motion;
   affected_ = criterion_.components();
   if (init.evolution >= 0) {
-    const DamageEvolution& evo = behavior.damage_evolutions[static_cast<std::size_t>(init.evolution)];
+    const DamageEvolution& evo =
+        behavior.damage_evolutions[static_cast<std::size_t>(init.evolution)];
     law_.emplace(evo, init.criterion == DamageInitiation::Criterion::PlasticMotion);
     degradation_ = evo.degradation;
     // §7.2: AFFECTED COMPONENTS, else the initiation's component or its potential's components.
@@ -149,12 +150,12 @@ MotionSensitive DamageMechanism::update(const MechanismInput& in, std::span<cons
     MotionSensitive start = theta;
     if (!crossing) {
       const double delta_old =
-          plastic_criterion ? old[kEquivalent] - initiation_plastic_motion_
-                            : motion_measure(constant_vector(in.motion_old), sign).value -
-                                  measure.value;
-      start = delta_old < kappa_old ? MotionSensitive(kappa_old - delta_old) /
-                                          (delta - MotionSensitive(delta_old))
-                                    : MotionSensitive(0.0);
+          plastic_criterion
+              ? old[kEquivalent] - initiation_plastic_motion_
+              : motion_measure(constant_vector(in.motion_old), sign).value - measure.value;
+      start = delta_old < kappa_old
+                  ? MotionSensitive(kappa_old - delta_old) / (delta - MotionSensitive(delta_old))
+                  : MotionSensitive(0.0);
     }
     const auto at_start = [&](double old_value, const MotionSensitive& value) {
       return MotionSensitive(old_value) + start * (value - MotionSensitive(old_value));
@@ -180,7 +181,8 @@ MotionSensitive DamageMechanism::update(const MechanismInput& in, std::span<cons
   }
   history[kWork] = work.value;
 
-  const MotionSensitive d = larger(MotionSensitive(old[kDamage]), law_->damage(kappa, measure, work));
+  const MotionSensitive d =
+      larger(MotionSensitive(old[kDamage]), law_->damage(kappa, measure, work));
   history[kDamage] = d.value;
   return d;
 }

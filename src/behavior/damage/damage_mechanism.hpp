@@ -16,24 +16,24 @@ namespace clinch {
 // The committed state of the element that every mechanism reads, and the trial one with its
 // gradients against the trial motion.
 struct MechanismInput {
-  const Vector6& motion_old;     // u_n
-  const Vector6& force_old;      // f^eff_n
+  const Vector6& motion_old;      // u_n
+  const Vector6& force_old;       // f^eff_n
   const SensitiveVector& motion;  // u
   const SensitiveVector& force;   // f^eff
-  const Matrix6& compliance;     // K⁻¹ of the linear elasticity, padded (PLASTIC MOTION)
+  const Matrix6& compliance;      // K⁻¹ of the linear elasticity, padded (PLASTIC MOTION)
 };
 
 class DamageMechanism {
  public:
   // History of one mechanism (§7.4 "History per mechanism"), kHistorySize doubles.
   static constexpr int kInitiated = 0;
-  static constexpr int kCriterionMax = 1;   // r_max (CDIF, CDIM, CDIP)
-  static constexpr int kMeasureOld = 2;     // the criterion's signed measure v at the committed state
-  static constexpr int kSign = 3;           // s_0
-  static constexpr int kMeasure = 4;        // m_0 = s_0 u_0,i or P_e(u_0)
-  static constexpr int kKappa = 5;          // κ = max δ
-  static constexpr int kWork = 6;           // W (ENERGY)
-  static constexpr int kDamage = 7;         // d_m
+  static constexpr int kCriterionMax = 1;  // r_max (CDIF, CDIM, CDIP)
+  static constexpr int kMeasureOld = 2;  // the criterion's signed measure v at the committed state
+  static constexpr int kSign = 3;        // s_0
+  static constexpr int kMeasure = 4;     // m_0 = s_0 u_0,i or P_e(u_0)
+  static constexpr int kKappa = 5;       // κ = max δ
+  static constexpr int kWork = 6;        // W (ENERGY)
+  static constexpr int kDamage = 7;      // d_m
   static constexpr int kPlasticMotion = 8;  // u^pl of the criterion's component (PLASTIC MOTION)
   static constexpr int kEquivalent = 9;     // ū^pl of that component
   static constexpr int kInitiationMotion = 10;  // u_0, six values
@@ -65,7 +65,7 @@ class DamageMechanism {
   // Coupled FORCE/MOTION: P_e, the evolution potential, or the Euclidean norm of the affected
   // components' motions without one (§7.2, not confirmed).
   std::optional<ConnectorPotential> evolution_potential_;
-  ComponentMask work_components_ = 0;  // the motions whose work W integrates
+  ComponentMask work_components_ = 0;     // the motions whose work W integrates
   double initiation_plastic_motion_ = 0;  // ū^pl_0
 };
 
