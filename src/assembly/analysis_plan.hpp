@@ -59,6 +59,13 @@ struct ConnectorLockRule {
   ConnectorCriterionBounds bounds;
 };
 
+// *CONNECTOR FAILURE (behaviors.md §5.3): a criterion on `component`, releasing `releases`.
+struct ConnectorReleaseRule {
+  int component = 0;
+  ComponentMask releases = 0;
+  ConnectorCriterionBounds bounds;
+};
+
 struct ConnectorRecord {
   std::int32_t element = 0;  // global element index
   std::int32_t section = 0;
@@ -69,6 +76,7 @@ struct ConnectorRecord {
   Vector6 reference = Vector6::Zero();  // ref_i: u = p − ref (behaviors.md §3)
   const ConnectorStops* stops = nullptr;  // into AnalysisPlan::stop_tables; null: no stops
   std::vector<ConnectorLockRule> locks;
+  std::vector<ConnectorReleaseRule> failures;
   // Local columns 0…11 of [u_a, θ_a, u_b, θ_b] that have an equation, in order; then the
   // components that own a multiplier.
   std::array<std::int8_t, 12> columns{};

@@ -11,12 +11,16 @@ namespace {
 // The constraint equation g of a multiplier row and whether it is active (connection-types.md
 // §3.8, behaviors.md §4.4, §5): constrained and RIGID components hold c_i = 0, a connector motion
 // holds c_i at its target, a lock at its position, a stop at its limit; an inactive row holds
-// λ = 0.
+// λ = 0, and so does every row of a component released by *CONNECTOR FAILURE.
 bool constraint_gap(const ConnectorRecord& r, const ConnectorConditions& conditions,
                     const ConnectorActiveSet& set, const KinematicsResult& k, int i, double& g) {
   const auto slot = static_cast<std::size_t>(i - 1);
   const auto status = static_cast<StopStatus>(set.status[slot]);
-  if (has_component(r.constrained | r.rigid, i)) {
+  if (has_component(r.constrained, i)) {
+    g = k.change[i - 1];
+  } else if (has_component(set.released, i)) {
+    return false;  // §5.3: free from then on
+  } else if (has_component(r.rigid, i)) {
     g = k.change[i - 1];
   } else if (has_component(conditions.motion, i)) {
     g = k.change[i - 1] - conditions.motion_target[i - 1];
@@ -117,10 +121,15 @@ EvalStatus ConnectorElements::evaluate(std::size_t c, const ElementContext& cont
     if (active) reaction[i - 1] += lambda;
   }
 
-  // The law stack (§1.3), on the constitutive motion u = p − ref (§1.1).
+  // The law stack (§1.3), on the constitutive motion u = p − ref (§1.1). A released component
+  // (§5.3) is held at its motion at release, so that its laws' history stays frozen.
   const Vector6 u = k.position - r.reference;
-  const Vector6 motion_old = state.position_n[c] - r.reference;
-  const Vector6 increment = u - motion_old;
+  Vector6 motion_old = state.position_n[c] - r.reference;
+  Vector6 law_motion = u;
+  for (int i = 0; i < 6; ++i) {
+    if (has_component(set.released, i + 1)) law_motion[i] = motion_old[i] = set.release_motion[i];
+  }
+  const Vector6 increment = law_motion - motion_old;
   Vector6 law_force = Vector6::Zero(), friction = Vector6::Zero(), viscous = Vector6::Zero();
   Matrix6 stiffness = Matrix6::Zero(), force_stiffness = Matrix6::Zero();
   const TangentRequest request = want_tangent ? TangentRequest::Consistent : TangentRequest::None;
@@ -160,6 +169,18 @@ EvalStatus ConnectorElements::evaluate(std::size_t c, const ElementContext& cont
       if (slot.law->needs_connector_forces()) force_stiffness += out.force_tangent;
     }
     first = false;
+  }
+
+  // §5.3: every behaviour force on a released component is zero, and nothing depends on its
+  // (frozen) motion.
+  for (int i = 0; i < 6; ++i) {
+    if (!has_component(set.released, i + 1)) continue;
+    law_force[i] = friction[i] = viscous[i] = 0.0;
+    if (want_tangent) {
+      stiffness.row(i).setZero();
+      stiffness.col(i).setZero();
+      force_stiffness.row(i).setZero();
+    }
   }
 
   // Forces (connection-types.md §4): RIGID multipliers are elastic forces (CEF), the others CRF;

@@ -370,6 +370,49 @@ void ConnectorSystem::end_increment() {
   }
 }
 
+// behaviors.md §5.3: a failure criterion met on the converged state releases its components for
+// good; each rule fires once.
+std::vector<std::string> ConnectorSystem::release_failed_components() {
+  std::vector<std::string> events;
+  for (std::size_t c = 0; c < plan_.connectors.size(); ++c) {
+    const ConnectorRecord& r = plan_.connectors[c];
+    ConnectorActiveSet& set = state_.active_sets[c];
+    for (std::size_t k = 0; k < r.failures.size(); ++k) {
+      if (set.fired & (1u << k)) continue;
+      const ConnectorReleaseRule& rule = r.failures[k];
+      const ConnectorResult& out = state_.results[c];
+      const double p = out.position[rule.component - 1];
+      const double f = out.total[rule.component - 1];
+      const ConnectorCriterionBounds& b = rule.bounds;
+      std::string why;
+      if (b.force_upper && f >= *b.force_upper) {
+        why = fmt::format("component {} force {:.6g} ≥ F_U = {:.6g}", rule.component, f,
+                          *b.force_upper);
+      } else if (b.force_lower && f <= *b.force_lower) {
+        why = fmt::format("component {} force {:.6g} ≤ F_L = {:.6g}", rule.component, f,
+                          *b.force_lower);
+      } else if (b.position_upper && p >= *b.position_upper) {
+        why = fmt::format("component {} position {:.6g} ≥ p_U = {:.6g}", rule.component, p,
+                          *b.position_upper);
+      } else if (b.position_lower && p <= *b.position_lower) {
+        why = fmt::format("component {} position {:.6g} ≤ p_L = {:.6g}", rule.component, p,
+                          *b.position_lower);
+      } else {
+        continue;
+      }
+      set.fired |= 1u << k;
+      for (int i = 0; i < 6; ++i) {
+        if (has_component(rule.releases, i + 1) && !has_component(set.released, i + 1)) {
+          set.release_motion[i] = out.constitutive[i];
+        }
+      }
+      set.released |= rule.releases;
+      events.push_back(fmt::format("connector element {} failed ({})", elements_.label(c), why));
+    }
+  }
+  return events;
+}
+
 // The energy dissipated by the viscous regularisation of damage (*SECTION CONTROLS, VISCOSITY)
 // over the connectors that have it, so that an analyst can judge the viscosity against the
 // energy of the model.
@@ -409,6 +452,10 @@ std::string ConnectorSystem::failure_note(int failed_equation) const {
     if (r.nodes[0] != node && r.nodes[1] != node) continue;
     if (deleted_[c]) {
       return fmt::format("after connector element {} was deleted (damage)", elements_.label(c));
+    }
+    if (state_.active_sets[c].released != 0) {
+      return fmt::format("after connector element {} failed (*CONNECTOR FAILURE)",
+                         elements_.label(c));
     }
     if (trial_damage(c) >= 1.0) {
       return fmt::format("connector element {} fully damaged (d=1)", elements_.label(c));
@@ -456,13 +503,12 @@ ConnectorOutput ConnectorSystem::connector_output(std::size_t connector) const {
   static_cast<ConnectorResult&>(out) = state_.results[connector];
   const ConnectorRecord& r = plan_.connectors[connector];
   out.status = state_.active_sets[connector].status;
-  // output-variables.md §2: CSLST 4 on every component of a deleted element.
-  if (deleted_[connector]) {
-    for (int i = 0; i < 6; ++i) {
-      if (has_component(r.available | r.constrained, i + 1)) {
-        out.status[static_cast<std::size_t>(i)] = 4;
-      }
-    }
+  // output-variables.md §2: CSLST 4 on every component of a deleted element and on the
+  // components a *CONNECTOR FAILURE released.
+  const ComponentMask four =
+      deleted_[connector] ? r.available | r.constrained : state_.active_sets[connector].released;
+  for (int i = 0; i < 6; ++i) {
+    if (has_component(four, i + 1)) out.status[static_cast<std::size_t>(i)] = 4;
   }
   std::size_t l = 0;
   for (const LawSlot& slot : r.laws) {

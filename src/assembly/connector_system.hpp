@@ -72,6 +72,7 @@ class ConnectorSystem final : public NonlinearProblem {
   std::vector<std::string> take_events() override { return std::move(events_); }
   std::string failure_note(int failed_equation) const override;
   std::vector<std::string> step_summary() const override;
+  std::vector<std::string> release_failed_components() override;
   StepRequest step_request() const override { return state_.request; }
 
   // ---- results of the last evaluation ----

@@ -1,7 +1,7 @@
 // What `clinch run` cannot run yet although `clinch check` validates it (README, docs/decisions.md
-// "Behaviours not yet run": *CONNECTOR FAILURE and two forms of damage): reported by both
-// commands, at the keyword, so that `check` never passes a deck that `run` then refuses, and the
-// refusal names file, line and column.
+// "Behaviours not yet run": two forms of damage): reported by both commands, at the keyword, so
+// that `check` never passes a deck that `run` then refuses, and the refusal names file, line and
+// column.
 #include <fmt/format.h>
 
 #include "base/diagnostic.hpp"
@@ -55,9 +55,6 @@ void report_run_refusals(const Model& model, DiagnosticSink& sink) {
                "CRITERION=FORCE in a behavior that also has friction, stops, locks or RIGID "
                "elasticity");
       }
-    }
-    if (!behavior.failures.empty()) {
-      refuse(behavior.failures.front().loc, "*CONNECTOR FAILURE");
     }
   }
 }

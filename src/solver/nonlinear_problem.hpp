@@ -101,6 +101,10 @@ class NonlinearProblem {
   virtual bool update_active_set() { return false; }
   // Events of a converged, committed increment (locks engage, elements are deleted).
   virtual void end_increment() {}
+  // Applies the events of a converged state that change the problem itself and require the
+  // increment to be solved again (*CONNECTOR FAILURE releasing components): one log line each;
+  // empty when there is none. The caller then reverts and re-solves the same increment.
+  virtual std::vector<std::string> release_failed_components() { return {}; }
   // What the log reports at the end of a step (one line each): totals of the converged state.
   virtual std::vector<std::string> step_summary() const { return {}; }
   // What end_increment did that the log reports (one line each), taken once.

@@ -246,6 +246,22 @@ class Driver {
                                            total_time_ + dt, new_time, dt};
         if (!converged || smaller) out_.status.write_attempt(status_line);
         if (!outputs_written(step_number, increment + 1)) return false;
+        // §5.3: a failure criterion met on the converged state releases its components; the
+        // same increment is then solved again (an attempt of its own, with the same time).
+        if (converged && !smaller) {
+          const std::vector<std::string> failures = problem_.release_failed_components();
+          if (!failures.empty()) {
+            for (const std::string& f : failures) {
+              out_.log.info(fmt::format("step {} increment {}: {}; the increment is solved again",
+                                        step_number, increment + 1, f));
+            }
+            IncrementAttempt redone = status_line;
+            redone.cut_back = true;
+            out_.status.write_attempt(redone);
+            problem_.revert();
+            continue;
+          }
+        }
         if (converged && !smaller) {
           problem_.commit();
           criteria_.accept_increment(report.iterations.back());
