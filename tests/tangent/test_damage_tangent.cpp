@@ -316,7 +316,14 @@ TEST(DamageTangent, E15CoupledUnsymmetric) {
     SCOPED_TRACE("t = 1.5 on the envelope, off the path direction");
     d.expect_fd_tangent(vec(0.15, 0.07, 0.01), 0.05, kCartesian);
   }
-  d.commit(vec(0.15, 0.075));
+  {
+    // §7.5 E15 at t = 1.5 (four increments of 0.5 as in the spec).
+    const StackResult r = d.commit(vec(0.15, 0.075));
+    EXPECT_NEAR(d.output("CDMG", 0), 0.946486898, 5e-10);
+    EXPECT_NEAR(r.force[0], 8.026965, 5e-7);
+    EXPECT_NEAR(r.force[1], 4.013483, 5e-7);
+    EXPECT_NEAR(d.output("CDIF", 0), 2.121320, 5e-7);
+  }
   {
     SCOPED_TRACE("unloading: (1 − d) K on components 1–2, K on the unaffected component 3");
     const StackResult r = d.evaluate(vec(0.1, 0.05, 0.02));
@@ -325,6 +332,10 @@ TEST(DamageTangent, E15CoupledUnsymmetric) {
     EXPECT_NEAR(r.tangent(2, 2), kStiffness, 1e-12);
     d.expect_fd_tangent(vec(0.1, 0.05, 0.02), 0.05, kCartesian);
   }
+  // t = 2: fully damaged on 1–2, deleted.
+  d.commit(vec(0.2, 0.1));
+  EXPECT_EQ(d.output("CDMG", 0), 1.0);
+  EXPECT_EQ(d.output("deleted", 0), 1.0);
 }
 
 TEST(DamageTangent, CoupledMotionDefaultNormAndEnergy) {
