@@ -45,15 +45,13 @@ void report_run_refusals(const Model& model, DiagnosticSink& sink) {
       if (d.coupled() && d.criterion == DamageInitiation::Criterion::PlasticMotion) {
         refuse(d.criterion_loc, "CRITERION=PLASTIC MOTION without COMPONENT (coupled)");
       }
-      // The FORCE criterion reads the total force (behaviors.md §7.1); the damage law sees the
-      // elastic-plastic force only, which is the total force unless friction, stops, locks or
-      // RIGID elasticity act on the connector.
+      // The FORCE criterion reads the total force (behaviors.md §7.1): the damage law sees the
+      // elastic-plastic force below it and the constraint forces, but friction comes after it
+      // in the stack, and a RIGID component's force is a multiplier it cannot degrade.
       if (d.criterion == DamageInitiation::Criterion::Force &&
-          (!behavior.frictions.empty() || !behavior.stops.empty() || !behavior.locks.empty() ||
-           has_rigid_elasticity(behavior))) {
+          (!behavior.frictions.empty() || has_rigid_elasticity(behavior))) {
         refuse(d.criterion_loc,
-               "CRITERION=FORCE in a behavior that also has friction, stops, locks or RIGID "
-               "elasticity");
+               "CRITERION=FORCE in a behavior that also has friction or RIGID elasticity");
       }
     }
   }

@@ -44,6 +44,7 @@ Vector6 vec(double a, double b = 0, double c = 0) {
 struct StackResult {
   Vector6 force = Vector6::Zero();
   Matrix6 tangent = Matrix6::Zero();
+  Matrix6 force_tangent = Matrix6::Zero();  // against the constraint forces λ
   std::vector<std::vector<double>> history;
   bool ok = true;
   double dt_ratio = std::numeric_limits<double>::infinity();
@@ -67,7 +68,8 @@ class StackDriver {
     for (const auto& law : laws_) committed_.emplace_back(law->history_size(), 0.0);
   }
 
-  StackResult evaluate(const Vector6& u, double dt = 1.0) const {
+  StackResult evaluate(const Vector6& u, double dt = 1.0,
+                       const Vector6& lambda = Vector6::Zero()) const {
     StackResult r;
     bool first = true;
     for (std::size_t l = 0; l < laws_.size(); ++l) {
@@ -82,10 +84,13 @@ class StackDriver {
                              committed_[l],
                              TangentRequest::Consistent,
                              first ? nullptr : &r.force,
-                             first ? nullptr : &r.tangent};
+                             first ? nullptr : &r.tangent,
+                             first ? nullptr : &r.force_tangent,
+                             &lambda};
       r.ok = r.ok && laws_[l]->integrate(in, out) != IntegrationStatus::Failure;
       r.force += out.force;
       r.tangent += out.tangent;
+      if (laws_[l]->needs_connector_forces()) r.force_tangent += out.force_tangent;
       r.dt_ratio = std::min(r.dt_ratio, out.suggested_dt_ratio);
       first = false;
     }
@@ -108,6 +113,19 @@ class StackDriver {
       if (slot >= 0) return committed_[l][static_cast<std::size_t>(slot)];
     }
     return 0.0;
+  }
+  // §1.4 against the constraint forces at (u, λ): the FORCE criterion reads the total force
+  // f^eff + λ, so the initiation point moves with λ. f_s: the force scale of the step h.
+  void expect_fd_constraint_tangent(const Vector6& u, const Vector6& lambda, double f_s,
+                                    ComponentMask mask) const {
+    const StackResult at = evaluate(u, 1.0, lambda);
+    ASSERT_TRUE(at.ok);
+    const auto force = [this, &u](const Eigen::VectorXd& x, Eigen::VectorXd& f) {
+      const StackResult e = evaluate(u, 1.0, Vector6(x));
+      f = e.force;
+      return e.ok;
+    };
+    expect_fd_tangent_rule(force, lambda, at.force_tangent, f_s, 1.0, mask);
   }
   // §1.4 at u from the committed state, on the columns of `mask`.
   void expect_fd_tangent(const Vector6& u, double u_s, ComponentMask mask, double dt = 1.0) const {
@@ -220,6 +238,23 @@ TEST(DamageTangent, InitiationFromTheOtherSide) {
   d.expect_fd_tangent(vec(0.15), 0.09, kAxial);
   d.commit(vec(0.15));
   EXPECT_NEAR(d.output("CDMG", 0), 0.58, 1e-12);
+}
+
+TEST(DamageTangent, ForceCriterionOnTheTotalForce) {
+  // §7.1: a stop's force on the component counts. From f^c = 50 (λ = 0) at U = 0.05 to
+  // f^c = 100 + 20 at U = 0.1 with λ = 20, the total force crosses 90 at θ = 40/70, so
+  // u_0 = 0.05 + (4/7) 0.05 rather than 0.09; through the crossing increment the degraded force
+  // depends on λ (the interpolated initiation point), and that tangent is checked too.
+  StackDriver d(kE12, kAxial);
+  const Vector6 lambda = vec(20.0);
+  EXPECT_TRUE(d.evaluate(vec(0.05)).ok);
+  d.commit(vec(0.05));
+  d.expect_fd_constraint_tangent(vec(0.10), lambda, 90, kAxial);
+  d.expect_fd_tangent(vec(0.10), 0.09, kAxial);
+  const StackResult r = d.evaluate(vec(0.10), 1.0, lambda);
+  const double u0 = 0.05 + 4.0 / 7.0 * 0.05, kappa = 0.1 - u0;
+  EXPECT_NEAR(r.force[0], u0 * (1 - kappa / 0.2) / 0.1 * 100.0, 1e-9);
+  EXPECT_NE(r.force_tangent(0, 0), 0.0);
 }
 
 TEST(DamageTangent, E12ExponentialAndTabular) {

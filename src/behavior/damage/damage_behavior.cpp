@@ -31,7 +31,11 @@ class DamageBehavior final : public Behavior {
   DamageBehavior(std::vector<DamageMechanism> mechanisms, const Matrix6& compliance,
                  const DamageControls& controls)
       : mechanisms_(std::move(mechanisms)), compliance_(compliance), controls_(controls) {
-    for (const DamageMechanism& m : mechanisms_) affected_ |= m.affected();
+    for (const DamageMechanism& m : mechanisms_) {
+      affected_ |= m.affected();
+      force_criterion_ =
+          force_criterion_ || m.criterion().criterion() == DamageInitiation::Criterion::Force;
+    }
     const std::size_t element = mechanisms_.size() * DamageMechanism::kHistorySize;
     damage_ = element;
     force_ = damage_ + 7;
@@ -56,6 +60,8 @@ class DamageBehavior final : public Behavior {
   // The f^eff ⊗ ∂d/∂u term (§7.4) is unsymmetric, and softening makes the system indefinite:
   // the step takes the LU solver.
   bool tangent_is_symmetric() const override { return false; }
+  // The FORCE criterion reads the total force, constraint forces included (§7.1).
+  bool needs_connector_forces() const override { return force_criterion_; }
   bool deletes_element(std::span<const double> history) const override {
     return history[deleted_] != 0;
   }
@@ -77,16 +83,20 @@ class DamageBehavior final : public Behavior {
       return IntegrationStatus::Success;
     }
     const Vector6 u = in.motion_old + in.increment;
-    SensitiveVector force, motion = motion_vector(u);
+    SensitiveVector force, total_force, motion = motion_vector(u);
     for (int j = 0; j < 6; ++j) {
-      force[static_cast<std::size_t>(j)] = MotionSensitive(feff[j], deff.row(j).transpose());
+      const auto s = static_cast<std::size_t>(j);
+      force[s] = TrialSensitive::of_motion(feff[j], deff.row(j).transpose());
+      total_force[s] = in.connector_forces
+                           ? force[s] + TrialSensitive::constraint_force(*in.connector_forces, j)
+                           : force[s];
     }
     const Vector6 force_old = Eigen::Map<const Vector6>(old + force_);
-    const MechanismInput input{in.motion_old, force_old, motion, force, compliance_};
+    const MechanismInput input{in.motion_old, force_old, motion, force, total_force, compliance_};
     std::array<DamageDegradation, 6> degradation;
     for (std::size_t m = 0; m < mechanisms_.size(); ++m) {
       const std::size_t at = m * DamageMechanism::kHistorySize;
-      const MotionSensitive d =
+      const TrialSensitive d =
           mechanisms_[m].update(input, in.history_old.subspan(at, DamageMechanism::kHistorySize),
                                 out.history_new.subspan(at, DamageMechanism::kHistorySize));
       for (int i = 0; i < 6; ++i) {
@@ -103,7 +113,7 @@ class DamageBehavior final : public Behavior {
     for (int i = 0; i < 6; ++i) {
       if (!has_component(affected_, i + 1)) continue;
       const double d_old = old[damage_ + static_cast<std::size_t>(i) + 1];
-      MotionSensitive d = degradation[static_cast<std::size_t>(i)].damage();
+      TrialSensitive d = degradation[static_cast<std::size_t>(i)].damage();
       if (controls_.viscosity > 0) {
         const auto slot = inviscid_ + static_cast<std::size_t>(i);
         h[slot] = std::min(d.value, d_max);
@@ -114,10 +124,12 @@ class DamageBehavior final : public Behavior {
         const double excess_old = (old[slot] - d_old) * old[force_ + static_cast<std::size_t>(i)];
         h[regularisation_] += 0.5 * (excess + excess_old) * in.increment[i];
       }
-      if (d.value >= d_max) d = MotionSensitive(d_max);
+      if (d.value >= d_max) d = TrialSensitive(d_max);
       out.force[i] = -d.value * feff[i];
       if (tangent) {
-        out.tangent.row(i) = -(d.value * deff.row(i) + feff[i] * d.gradient.transpose());
+        out.tangent.row(i) = -(d.value * deff.row(i) + feff[i] * d.gradient.head<6>().transpose());
+        // Through the FORCE criterion's constraint forces (the initiation point, §7.1).
+        out.force_tangent.row(i) = -feff[i] * d.gradient.tail<6>().transpose();
       }
       h[damage_ + static_cast<std::size_t>(i) + 1] = d.value;
       largest = std::max(largest, d.value);
@@ -146,13 +158,13 @@ class DamageBehavior final : public Behavior {
   // backward Euler over the increment: d_v = (η d_v,n + Δt d)/(η + Δt). It lags the inviscid d
   // over a time scale η and reaches d_max only asymptotically, so within kViscousFailure of it
   // it is taken as reached (the element can then be deleted).
-  MotionSensitive regularized(const MotionSensitive& d, double d_old, double dt) const {
+  TrialSensitive regularized(const TrialSensitive& d, double d_old, double dt) const {
     const double eta = controls_.viscosity;
     const double weight = dt / (eta + dt);
-    MotionSensitive v(eta / (eta + dt) * d_old + weight * d.value, weight * d.gradient);
-    if (v.value < d_old) v = MotionSensitive(d_old);  // d_v never decreases
+    TrialSensitive v(eta / (eta + dt) * d_old + weight * d.value, weight * d.gradient);
+    if (v.value < d_old) v = TrialSensitive(d_old);  // d_v never decreases
     if (v.value >= controls_.max_degradation - kViscousFailure) {
-      v = MotionSensitive(controls_.max_degradation);
+      v = TrialSensitive(controls_.max_degradation);
     }
     return v;
   }
@@ -175,6 +187,7 @@ class DamageBehavior final : public Behavior {
   Matrix6 compliance_;
   DamageControls controls_;
   ComponentMask affected_ = 0;
+  bool force_criterion_ = false;
   std::size_t damage_ = 0;          // the scalar CDMG, then d_i of components 1…6
   std::size_t force_ = 0;           // f^eff at the committed state, six values
   std::size_t deleted_ = 0;         // 1 once the element is deleted (§7.4)

@@ -23,22 +23,22 @@ DamageEvolutionLaw::DamageEvolutionLaw(const DamageEvolution& evolution, bool pl
   }
 }
 
-MotionSensitive DamageEvolutionLaw::remaining_fraction(const MotionSensitive& kappa) const {
+TrialSensitive DamageEvolutionLaw::remaining_fraction(const TrialSensitive& kappa) const {
   if (kappa.value >= failure_motion_) return 0.0;
-  const MotionSensitive x = kappa / MotionSensitive(failure_motion_);
-  if (softening_ == DamageEvolution::Softening::Linear) return MotionSensitive(1.0) - x;
+  const TrialSensitive x = kappa / TrialSensitive(failure_motion_);
+  if (softening_ == DamageEvolution::Softening::Linear) return TrialSensitive(1.0) - x;
   // EXPONENTIAL: g = 1 − (1 − e^(−a x))/(1 − e^(−a)).
   const double scale = 1.0 / (1.0 - std::exp(-exponent_));
-  return MotionSensitive(1.0) -
-         (MotionSensitive(1.0) - exp(MotionSensitive(-exponent_) * x)) * MotionSensitive(scale);
+  return TrialSensitive(1.0) -
+         (TrialSensitive(1.0) - exp(TrialSensitive(-exponent_) * x)) * TrialSensitive(scale);
 }
 
-MotionSensitive DamageEvolutionLaw::damage(const MotionSensitive& kappa,
-                                           const MotionSensitive& initiation_measure,
-                                           const MotionSensitive& work) const {
+TrialSensitive DamageEvolutionLaw::damage(const TrialSensitive& kappa,
+                                          const TrialSensitive& initiation_measure,
+                                          const TrialSensitive& work) const {
   if (type_ == DamageEvolution::Type::Energy) {
-    const MotionSensitive d = MotionSensitive(1.0) - exp(-work / MotionSensitive(fracture_energy_));
-    return d.value >= kEnergyFailure ? MotionSensitive(1.0) : d;
+    const TrialSensitive d = TrialSensitive(1.0) - exp(-work / TrialSensitive(fracture_energy_));
+    return d.value >= kEnergyFailure ? TrialSensitive(1.0) : d;
   }
   if (softening_ == DamageEvolution::Softening::Tabular) {
     // TABULAR gives d itself (§7.2), clamped to [0, 1].
@@ -47,12 +47,12 @@ MotionSensitive DamageEvolutionLaw::damage(const MotionSensitive& kappa,
     if (s.value >= 1) return 1.0;
     return {s.value, s.slope * kappa.gradient};
   }
-  const MotionSensitive g = remaining_fraction(kappa);
+  const TrialSensitive g = remaining_fraction(kappa);
   if (g.value <= 0) return 1.0;
   // PLASTIC MOTION: (1 − d) F_y follows g; FORCE/MOTION: the envelope force k u_0 g(κ), so
   // d = 1 − m_0 g/(m_0 + κ).
-  if (plastic_) return MotionSensitive(1.0) - g;
-  return MotionSensitive(1.0) - initiation_measure * g / (initiation_measure + kappa);
+  if (plastic_) return TrialSensitive(1.0) - g;
+  return TrialSensitive(1.0) - initiation_measure * g / (initiation_measure + kappa);
 }
 
 }  // namespace clinch

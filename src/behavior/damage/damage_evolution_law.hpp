@@ -5,7 +5,7 @@
 
 #include <optional>
 
-#include "src/behavior/damage/motion_sensitive.hpp"
+#include "src/behavior/damage/trial_sensitive.hpp"
 #include "src/behavior/piecewise_linear_table.hpp"
 #include "src/model/behavior_model.hpp"
 
@@ -20,12 +20,12 @@ class DamageEvolutionLaw {
 
   // d_m from κ = max δ and m_0, the initiation measure (s_0 u_0,i or P_e(u_0)); ENERGY reads W
   // only. Not yet clamped by the history (the caller keeps d_m from decreasing).
-  MotionSensitive damage(const MotionSensitive& kappa, const MotionSensitive& initiation_measure,
-                         const MotionSensitive& work) const;
+  TrialSensitive damage(const TrialSensitive& kappa, const TrialSensitive& initiation_measure,
+                        const TrialSensitive& work) const;
 
  private:
   // g(κ), the remaining fraction of the initiation force (LINEAR, EXPONENTIAL).
-  MotionSensitive remaining_fraction(const MotionSensitive& kappa) const;
+  TrialSensitive remaining_fraction(const TrialSensitive& kappa) const;
 
   DamageEvolution::Type type_;
   DamageEvolution::Softening softening_;

@@ -22,11 +22,11 @@ ComponentMask DamageInitiationCriterion::components() const {
 
 CriterionValue DamageInitiationCriterion::evaluate(const CriterionInput& in) const {
   if (criterion_ == DamageInitiation::Criterion::PlasticMotion) {
-    return {in.equivalent / MotionSensitive(plastic_motion_), in.equivalent, plastic_motion_, 1.0};
+    return {in.equivalent / TrialSensitive(plastic_motion_), in.equivalent, plastic_motion_, 1.0};
   }
   const SensitiveVector& x =
-      criterion_ == DamageInitiation::Criterion::Force ? in.force : in.motion;
-  MotionSensitive v;
+      criterion_ == DamageInitiation::Criterion::Force ? in.total_force : in.motion;
+  TrialSensitive v;
   if (component_ > 0) {
     v = x[static_cast<std::size_t>(component_ - 1)];
   } else {
@@ -35,7 +35,7 @@ CriterionValue DamageInitiationCriterion::evaluate(const CriterionInput& in) con
   // r = v/limit on the side of its sign (F_L ≤ 0 makes r ≥ 0 in compression).
   const double sign = v.value >= 0 ? 1.0 : -1.0;
   const double limit = sign > 0 ? upper_ : lower_;
-  return {limit != 0 ? v / MotionSensitive(limit) : MotionSensitive(0.0), v, limit, sign};
+  return {limit != 0 ? v / TrialSensitive(limit) : TrialSensitive(0.0), v, limit, sign};
 }
 
 }  // namespace clinch

@@ -14,16 +14,18 @@ namespace clinch {
 
 // What a criterion reads at one state, each with its gradient against the trial motion.
 struct CriterionInput {
-  const SensitiveVector& force;       // f^eff, the undamaged elastic-plastic force
-  const SensitiveVector& motion;      // u
-  const MotionSensitive& equivalent;  // ū^pl of the component's plasticity (PLASTIC MOTION)
+  // f^c = f^eff + λ: the undamaged elastic-plastic force plus the constraint forces (stops, locks,
+  // connector motions) of each component, the total force of §7.1 without friction.
+  const SensitiveVector& total_force;
+  const SensitiveVector& motion;     // u
+  const TrialSensitive& equivalent;  // ū^pl of the component's plasticity (PLASTIC MOTION)
 };
 
 struct CriterionValue {
-  MotionSensitive r;        // ≥ 1: initiated
-  MotionSensitive measure;  // the signed measure v: f_i, u_i, P(f), P(u) or ū^pl
-  double limit = 0;         // the limit on v's side (0: none on that side, r = 0)
-  double sign = 1;          // sign of v (s_0 at initiation)
+  TrialSensitive r;        // ≥ 1: initiated
+  TrialSensitive measure;  // the signed measure v: f_i, u_i, P(f), P(u) or ū^pl
+  double limit = 0;        // the limit on v's side (0: none on that side, r = 0)
+  double sign = 1;         // sign of v (s_0 at initiation)
 };
 
 class DamageInitiationCriterion {

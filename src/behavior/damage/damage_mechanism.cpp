@@ -25,7 +25,7 @@ std::optional<ConnectorPotential> compiled(const ConnectorBehavior& behavior,
   return ConnectorPotential::compile(behavior, *p);
 }
 
-MotionSensitive magnitude(const MotionSensitive& x) { return x.value < 0 ? -x : x; }
+TrialSensitive magnitude(const TrialSensitive& x) { return x.value < 0 ? -x : x; }
 
 }  // namespace
 
@@ -56,12 +56,12 @@ DamageMechanism::DamageMechanism(const ConnectorBehavior& behavior, std::size_t 
   work_components_ = static_cast<ComponentMask>(work_components_ & available);
 }
 
-MotionSensitive DamageMechanism::motion_measure(const SensitiveVector& u, double sign) const {
+TrialSensitive DamageMechanism::motion_measure(const SensitiveVector& u, double sign) const {
   const int i = criterion_.component();
-  if (i > 0) return MotionSensitive(sign) * u[static_cast<std::size_t>(i - 1)];
+  if (i > 0) return TrialSensitive(sign) * u[static_cast<std::size_t>(i - 1)];
   if (evolution_potential_) return evaluate_potential(*evolution_potential_, u);
   // The Euclidean norm of the affected components' motions (§7.2, not confirmed).
-  MotionSensitive square;
+  TrialSensitive square;
   for (int j = 0; j < 6; ++j) {
     if (has_component(affected_, j + 1)) {
       square = square + u[static_cast<std::size_t>(j)] * u[static_cast<std::size_t>(j)];
@@ -72,39 +72,39 @@ MotionSensitive DamageMechanism::motion_measure(const SensitiveVector& u, double
   return {norm, square.gradient / (2.0 * norm)};
 }
 
-MotionSensitive DamageMechanism::equivalent_plastic(const MechanismInput& in,
-                                                    std::span<const double> old,
-                                                    MotionSensitive& plastic) const {
+TrialSensitive DamageMechanism::equivalent_plastic(const MechanismInput& in,
+                                                   std::span<const double> old,
+                                                   TrialSensitive& plastic) const {
   // u^pl = u − K⁻¹ f^eff on the component; uncoupled backward-Euler flow moves u^pl_i by
   // ±Δλ and ū by Δλ (§6.3), so Δū = |Δu^pl_i|.
   const auto i = static_cast<std::size_t>(criterion_.component() - 1);
   plastic = in.motion[i];
   for (std::size_t j = 0; j < 6; ++j) {
     const double c = in.compliance(static_cast<int>(i), static_cast<int>(j));
-    if (c != 0) plastic = plastic - MotionSensitive(c) * in.force[j];
+    if (c != 0) plastic = plastic - TrialSensitive(c) * in.force[j];
   }
-  const MotionSensitive flow = plastic - MotionSensitive(old[kPlasticMotion]);
+  const TrialSensitive flow = plastic - TrialSensitive(old[kPlasticMotion]);
   // Round-off of an elastic increment is not flow.
   const double noise = 1e-13 * (std::fabs(in.motion[i].value) + std::fabs(plastic.value));
   if (std::fabs(flow.value) <= noise) {
-    plastic = MotionSensitive(old[kPlasticMotion]);
+    plastic = TrialSensitive(old[kPlasticMotion]);
     return old[kEquivalent];
   }
-  return MotionSensitive(old[kEquivalent]) + magnitude(flow);
+  return TrialSensitive(old[kEquivalent]) + magnitude(flow);
 }
 
-MotionSensitive DamageMechanism::update(const MechanismInput& in, std::span<const double> old,
-                                        std::span<double> history) const {
+TrialSensitive DamageMechanism::update(const MechanismInput& in, std::span<const double> old,
+                                       std::span<double> history) const {
   std::memcpy(history.data(), old.data(), kHistorySize * sizeof(double));
   const bool plastic_criterion =
       criterion_.criterion() == DamageInitiation::Criterion::PlasticMotion;
-  MotionSensitive plastic, equivalent;
+  TrialSensitive plastic, equivalent;
   if (plastic_criterion) {
     equivalent = equivalent_plastic(in, old, plastic);
     history[kPlasticMotion] = plastic.value;
     history[kEquivalent] = equivalent.value;
   }
-  const CriterionValue now = criterion_.evaluate({in.force, in.motion, equivalent});
+  const CriterionValue now = criterion_.evaluate({in.total_force, in.motion, equivalent});
   history[kMeasureOld] = now.measure.value;
   history[kCriterionMax] = std::max(old[kCriterionMax], now.r.value);
 
@@ -113,21 +113,21 @@ MotionSensitive DamageMechanism::update(const MechanismInput& in, std::span<cons
   // the same point as θ = (1 − r_n)/(r − r_n) when v_n lies on that side, and the crossing of
   // the limit, not of the other side's r, when the increment starts on the other side.
   const bool crossing = old[kInitiated] == 0;
-  MotionSensitive theta;  // where in the increment the crossing lies (crossing only)
+  TrialSensitive theta;  // where in the increment the crossing lies (crossing only)
   SensitiveVector initiation_motion;
   double sign = old[kSign];
-  MotionSensitive measure(old[kMeasure]);
+  TrialSensitive measure(old[kMeasure]);
   if (crossing) {
     if (now.r.value < 1.0) return 0.0;
     const double v_old = old[kMeasureOld];
-    theta = MotionSensitive(now.limit - v_old) / (now.measure - MotionSensitive(v_old));
+    theta = TrialSensitive(now.limit - v_old) / (now.measure - TrialSensitive(v_old));
     for (std::size_t j = 0; j < 6; ++j) {
-      const MotionSensitive u_old(in.motion_old[static_cast<int>(j)]);
+      const TrialSensitive u_old(in.motion_old[static_cast<int>(j)]);
       initiation_motion[j] = u_old + theta * (in.motion[j] - u_old);
       history[static_cast<std::size_t>(kInitiationMotion) + j] = initiation_motion[j].value;
     }
     sign = now.sign;
-    measure = plastic_criterion ? MotionSensitive(initiation_plastic_motion_)
+    measure = plastic_criterion ? TrialSensitive(initiation_plastic_motion_)
                                 : motion_measure(initiation_motion, sign);
     history[kInitiated] = 1;
     history[kSign] = sign;
@@ -136,44 +136,44 @@ MotionSensitive DamageMechanism::update(const MechanismInput& in, std::span<cons
   if (!law_) return 0.0;
 
   // §7.2: δ, the post-initiation motion, and κ = max δ.
-  const MotionSensitive delta = plastic_criterion
-                                    ? equivalent - MotionSensitive(initiation_plastic_motion_)
-                                    : motion_measure(in.motion, sign) - measure;
+  const TrialSensitive delta = plastic_criterion
+                                   ? equivalent - TrialSensitive(initiation_plastic_motion_)
+                                   : motion_measure(in.motion, sign) - measure;
   const double kappa_old = old[kKappa];
-  const MotionSensitive kappa = larger(MotionSensitive(kappa_old), delta);
+  const TrialSensitive kappa = larger(TrialSensitive(kappa_old), delta);
   history[kKappa] = kappa.value;
 
   // ENERGY: W grows over the part of the increment beyond the envelope, from δ = κ_n (or the
   // initiation point) to δ, by the trapezoidal rule with the start interpolated (§7.2).
-  MotionSensitive work(old[kWork]);
+  TrialSensitive work(old[kWork]);
   if (law_->energy_based() && delta.value > kappa_old) {
-    MotionSensitive start = theta;
+    TrialSensitive start = theta;
     if (!crossing) {
       const double delta_old =
           plastic_criterion
               ? old[kEquivalent] - initiation_plastic_motion_
               : motion_measure(constant_vector(in.motion_old), sign).value - measure.value;
       start = delta_old < kappa_old
-                  ? MotionSensitive(kappa_old - delta_old) / (delta - MotionSensitive(delta_old))
-                  : MotionSensitive(0.0);
+                  ? TrialSensitive(kappa_old - delta_old) / (delta - TrialSensitive(delta_old))
+                  : TrialSensitive(0.0);
     }
-    const auto at_start = [&](double old_value, const MotionSensitive& value) {
-      return MotionSensitive(old_value) + start * (value - MotionSensitive(old_value));
+    const auto at_start = [&](double old_value, const TrialSensitive& value) {
+      return TrialSensitive(old_value) + start * (value - TrialSensitive(old_value));
     };
     if (plastic_criterion) {
       // W = ∫ F_y dū^pl with F_y = |f^eff| on the yield surface.
       const auto i = static_cast<std::size_t>(criterion_.component() - 1);
-      const MotionSensitive yield = magnitude(in.force[i]);
-      const MotionSensitive yield_start =
+      const TrialSensitive yield = magnitude(in.force[i]);
+      const TrialSensitive yield_start =
           at_start(std::fabs(in.force_old[static_cast<int>(i)]), yield);
-      work = work + MotionSensitive(0.5) * (yield_start + yield) *
+      work = work + TrialSensitive(0.5) * (yield_start + yield) *
                         (equivalent - at_start(old[kEquivalent], equivalent));
     } else {
       // W = ∫ f^eff · du over the components δ measures.
       for (std::size_t j = 0; j < 6; ++j) {
         if (!has_component(work_components_, static_cast<int>(j) + 1)) continue;
         const int jj = static_cast<int>(j);
-        work = work + MotionSensitive(0.5) *
+        work = work + TrialSensitive(0.5) *
                           (at_start(in.force_old[jj], in.force[j]) + in.force[j]) *
                           (in.motion[j] - at_start(in.motion_old[jj], in.motion[j]));
       }
@@ -181,8 +181,7 @@ MotionSensitive DamageMechanism::update(const MechanismInput& in, std::span<cons
   }
   history[kWork] = work.value;
 
-  const MotionSensitive d =
-      larger(MotionSensitive(old[kDamage]), law_->damage(kappa, measure, work));
+  const TrialSensitive d = larger(TrialSensitive(old[kDamage]), law_->damage(kappa, measure, work));
   history[kDamage] = d.value;
   return d;
 }

@@ -16,11 +16,12 @@ namespace clinch {
 // The committed state of the element that every mechanism reads, and the trial one with its
 // gradients against the trial motion.
 struct MechanismInput {
-  const Vector6& motion_old;      // u_n
-  const Vector6& force_old;       // f^eff_n
-  const SensitiveVector& motion;  // u
-  const SensitiveVector& force;   // f^eff
-  const Matrix6& compliance;      // K⁻¹ of the linear elasticity, padded (PLASTIC MOTION)
+  const Vector6& motion_old;           // u_n
+  const Vector6& force_old;            // f^eff_n
+  const SensitiveVector& motion;       // u
+  const SensitiveVector& force;        // f^eff
+  const SensitiveVector& total_force;  // f^eff + λ (the FORCE criterion)
+  const Matrix6& compliance;           // K⁻¹ of the linear elasticity, padded (PLASTIC MOTION)
 };
 
 class DamageMechanism {
@@ -44,8 +45,8 @@ class DamageMechanism {
 
   // Writes the trial history into `history` (kHistorySize values, starting from `old`) and
   // returns d_m with its gradient.
-  MotionSensitive update(const MechanismInput& in, std::span<const double> old,
-                         std::span<double> history) const;
+  TrialSensitive update(const MechanismInput& in, std::span<const double> old,
+                        std::span<double> history) const;
 
   ComponentMask affected() const { return affected_; }
   DamageEvolution::Degradation degradation() const { return degradation_; }
@@ -53,10 +54,10 @@ class DamageMechanism {
 
  private:
   // δ's measure of the motion: s_0 u_i (uncoupled) or P_e(u) (coupled).
-  MotionSensitive motion_measure(const SensitiveVector& u, double sign) const;
+  TrialSensitive motion_measure(const SensitiveVector& u, double sign) const;
   // ū^pl of the criterion's component at the trial state (uncoupled plasticity: Δū = |Δu^pl|).
-  MotionSensitive equivalent_plastic(const MechanismInput& in, std::span<const double> old,
-                                     MotionSensitive& plastic) const;
+  TrialSensitive equivalent_plastic(const MechanismInput& in, std::span<const double> old,
+                                    TrialSensitive& plastic) const;
 
   DamageInitiationCriterion criterion_;
   std::optional<DamageEvolutionLaw> law_;  // none: initiation is only monitored

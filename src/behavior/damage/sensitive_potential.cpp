@@ -2,12 +2,12 @@
 
 namespace clinch {
 
-MotionSensitive evaluate_potential(const ConnectorPotential& potential, const SensitiveVector& x) {
+TrialSensitive evaluate_potential(const ConnectorPotential& potential, const SensitiveVector& x) {
   Vector6 values;
   for (int j = 0; j < 6; ++j) values[j] = x[static_cast<std::size_t>(j)].value;
   PotentialValue p;
   potential.evaluate(values, p, false);
-  MotionSensitive v(p.value);
+  TrialSensitive v(p.value);
   for (int j = 0; j < 6; ++j) {
     if (p.gradient[j] != 0) v.gradient += p.gradient[j] * x[static_cast<std::size_t>(j)].gradient;
   }
@@ -16,13 +16,13 @@ MotionSensitive evaluate_potential(const ConnectorPotential& potential, const Se
 
 SensitiveVector constant_vector(const Vector6& x) {
   SensitiveVector v;
-  for (int j = 0; j < 6; ++j) v[static_cast<std::size_t>(j)] = MotionSensitive(x[j]);
+  for (int j = 0; j < 6; ++j) v[static_cast<std::size_t>(j)] = TrialSensitive(x[j]);
   return v;
 }
 
 SensitiveVector motion_vector(const Vector6& u) {
   SensitiveVector v;
-  for (int j = 0; j < 6; ++j) v[static_cast<std::size_t>(j)] = MotionSensitive::motion(u, j);
+  for (int j = 0; j < 6; ++j) v[static_cast<std::size_t>(j)] = TrialSensitive::motion(u, j);
   return v;
 }
 
