@@ -134,6 +134,7 @@ EvalStatus ConnectorElements::evaluate(std::size_t c, const ElementContext& cont
   Matrix6 stiffness = Matrix6::Zero(), force_stiffness = Matrix6::Zero();
   const TangentRequest request = want_tangent ? TangentRequest::Consistent : TangentRequest::None;
   bool first = true;
+  const LawSlot* below = nullptr;
   for (const LawSlot& slot : r.laws) {
     const std::size_t size = slot.law->history_size();
     BehaviorOutput out;
@@ -147,7 +148,12 @@ EvalStatus ConnectorElements::evaluate(std::size_t c, const ElementContext& cont
                            first ? nullptr : &law_force,
                            first ? nullptr : &stiffness,
                            first || !r.laws.needs_connector_forces ? nullptr : &force_stiffness,
-                           r.laws.needs_connector_forces ? &reaction : nullptr};
+                           r.laws.needs_connector_forces ? &reaction : nullptr,
+                           below ? std::span<const double>(state.history.data() + below->history,
+                                                           below->law->history_size())
+                                 : std::span<const double>(),
+                           below ? below->law->history_layout()
+                                 : std::span<const HistoryVariable>()};
     const IntegrationStatus status = slot.law->integrate(in, out);
     if (status == IntegrationStatus::Failure) {
       return {false, fmt::format("connector element {}: {}", label(c), out.message)};
@@ -169,6 +175,7 @@ EvalStatus ConnectorElements::evaluate(std::size_t c, const ElementContext& cont
       if (slot.law->needs_connector_forces()) force_stiffness += out.force_tangent;
     }
     first = false;
+    below = &slot;
   }
 
   // §5.3: every behaviour force on a released component is zero, and nothing depends on its

@@ -47,6 +47,10 @@ struct BehaviorInput {
   // its active constraints (constrained and RIGID components, stops, locks, connector motions),
   // 0 elsewhere. Set only for a law that needs_connector_forces().
   const Vector6* connector_forces = nullptr;
+  // The trial history of the law right before this one and its layout (empty for the first):
+  // damage reads the equivalent plastic motion of a coupled plasticity there (behaviors.md §7.1).
+  std::span<const double> history_below = {};
+  std::span<const HistoryVariable> layout_below = {};
 };
 
 struct BehaviorOutput {

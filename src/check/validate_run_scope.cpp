@@ -1,5 +1,5 @@
 // What `clinch run` cannot run yet although `clinch check` validates it (README, docs/decisions.md
-// "Behaviours not yet run": two forms of damage): reported by both commands, at the keyword, so
+// "Behaviours not yet run": FORCE damage beside friction or RIGID): reported by both commands, so
 // that `check` never passes a deck that `run` then refuses, and the refusal names file, line and
 // column.
 #include <fmt/format.h>
@@ -41,10 +41,6 @@ void report_run_refusals(const Model& model, DiagnosticSink& sink) {
     };
     for (const DamageInitiation& d : behavior.damage_initiations) {
       if (!d.valid) continue;
-      // A coupled PLASTIC MOTION criterion needs ū^pl of the coupled return and its tangent.
-      if (d.coupled() && d.criterion == DamageInitiation::Criterion::PlasticMotion) {
-        refuse(d.criterion_loc, "CRITERION=PLASTIC MOTION without COMPONENT (coupled)");
-      }
       // The FORCE criterion reads the total force (behaviors.md §7.1): the damage law sees the
       // elastic-plastic force below it and the constraint forces, but friction comes after it
       // in the stack, and a RIGID component's force is a multiplier it cannot degrade.

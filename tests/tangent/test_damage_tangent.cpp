@@ -77,16 +77,19 @@ class StackDriver {
       BehaviorOutput out;
       out.history_new = r.history.back();
       const Vector6 increment = u - motion_;
-      const BehaviorInput in{motion_,
-                             increment,
-                             1.0,
-                             dt,
-                             committed_[l],
-                             TangentRequest::Consistent,
-                             first ? nullptr : &r.force,
-                             first ? nullptr : &r.tangent,
-                             first ? nullptr : &r.force_tangent,
-                             &lambda};
+      const BehaviorInput in{
+          motion_,
+          increment,
+          1.0,
+          dt,
+          committed_[l],
+          TangentRequest::Consistent,
+          first ? nullptr : &r.force,
+          first ? nullptr : &r.tangent,
+          first ? nullptr : &r.force_tangent,
+          &lambda,
+          first ? std::span<const double>() : r.history[l - 1],
+          first ? std::span<const HistoryVariable>() : laws_[l - 1]->history_layout()};
       r.ok = r.ok && laws_[l]->integrate(in, out) != IntegrationStatus::Failure;
       r.force += out.force;
       r.tangent += out.tangent;
@@ -332,6 +335,41 @@ const std::string kCartesianElastic =
 const std::string kE15Initiation =
     "*CONNECTOR DAMAGE INITIATION, CRITERION=FORCE\n, 1.\n"
     "*CONNECTOR POTENTIAL\n1, 100.\n2, 50.\n";
+
+// Coupled PLASTIC MOTION (§7.1): a circular coupled plasticity P = |(f1, f2)|/R, F_y = 80,
+// damage at ū^pl_0 = 0.02 with linear softening over 0.1. ū is the coupled return's Δλ.
+const std::string kCoupledPlastic =
+    kCartesianElastic +
+    "*CONNECTOR PLASTICITY\n*CONNECTOR HARDENING, TYPE=ISOTROPIC\n80., 0.\n"
+    "*CONNECTOR POTENTIAL\n1, 1.\n2, 1.\n"
+    "*CONNECTOR DAMAGE INITIATION, CRITERION=PLASTIC MOTION\n0.02\n";
+
+TEST(DamageTangent, CoupledPlasticMotion) {
+  StackDriver d(kCoupledPlastic + "*CONNECTOR DAMAGE EVOLUTION, TYPE=MOTION\n0.1\n", kCartesian);
+  // Radial path along (0.8, 0.6): yield at |u| = 0.08; ū = |u| − 0.08 on it.
+  d.commit(vec(0.08, 0.06));  // |u| = 0.1: ū = 0.02 − just initiated
+  EXPECT_NEAR(d.output("CDIP", 0), 1.0, 1e-9);
+  EXPECT_NEAR(d.output("CDIPC", 0), 1.0, 1e-9);
+  d.expect_fd_tangent(vec(0.12, 0.09, 0.01), 0.08, kCartesian);  // |u| = 0.15, off the radial line
+  d.commit(vec(0.12, 0.09));                                     // ū = 0.07, δ = 0.05: d = 0.5
+  EXPECT_NEAR(d.output("CDMG", 1), 0.5, 1e-9);
+  EXPECT_NEAR(d.output("CDMG", 2), 0.5, 1e-9);
+  const StackResult r = d.evaluate(vec(0.12, 0.09));
+  EXPECT_NEAR(r.force.head<2>().norm(), 0.5 * 80, 1e-9);
+  d.expect_fd_tangent(vec(0.14, 0.1, 0.0), 0.08, kCartesian);
+  // ENERGY: W = ∫ P(f^eff) dū. One increment from |u| = 0.05 (elastic, P = 50) to 0.15
+  // (ū = 0.07, P = 80) crosses ū_0 = 0.02 at θ = 2/7; §7.2 starts the trapezoid there with the
+  // integrand interpolated between the increment's ends: W = (50 + 30·2/7 + 80)/2 · 0.05.
+  StackDriver e(kCoupledPlastic + "*CONNECTOR DAMAGE EVOLUTION, TYPE=ENERGY\n4.\n", kCartesian);
+  e.commit(vec(0.04, 0.03));
+  e.expect_fd_tangent(vec(0.12, 0.09), 0.08, kCartesian);  // crosses ū_0 inside the increment
+  e.commit(vec(0.12, 0.09));
+  const double work = 0.5 * (50 + 30 * 2.0 / 7 + 80) * 0.05;
+  EXPECT_NEAR(e.output("CDMG", 1), 1 - std::exp(-work / 4), 1e-9);
+  // Then along the surface: W grows by F_y Δū exactly.
+  e.commit(vec(0.16, 0.12));  // ū = 0.12
+  EXPECT_NEAR(e.output("CDMG", 1), 1 - std::exp(-(work + 80 * 0.05) / 4), 1e-9);
+}
 
 TEST(DamageTangent, E15CoupledUnsymmetric) {
   StackDriver d(kCartesianElastic + kE15Initiation +

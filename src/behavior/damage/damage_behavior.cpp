@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 #include <vector>
 
 #include "src/behavior/damage/damage_degradation.hpp"
@@ -92,7 +93,11 @@ class DamageBehavior final : public Behavior {
                            : force[s];
     }
     const Vector6 force_old = Eigen::Map<const Vector6>(old + force_);
-    const MechanismInput input{in.motion_old, force_old, motion, force, total_force, compliance_};
+    const int below = history_slot(in.layout_below, "CUPEQC", 0);
+    const double coupled_equivalent = below >= 0 ? in.history_below[static_cast<std::size_t>(below)]
+                                                 : std::numeric_limits<double>::quiet_NaN();
+    const MechanismInput input{in.motion_old, force_old,         motion, force, total_force,
+                               compliance_,   coupled_equivalent};
     std::array<DamageDegradation, 6> degradation;
     for (std::size_t m = 0; m < mechanisms_.size(); ++m) {
       const std::size_t at = m * DamageMechanism::kHistorySize;

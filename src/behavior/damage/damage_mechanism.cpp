@@ -37,6 +37,17 @@ DamageMechanism::DamageMechanism(const ConnectorBehavior& behavior, std::size_t 
   const DamageInitiation& init = behavior.damage_initiations[initiation];
   initiation_plastic_motion_ = init.plastic_motion;
   affected_ = criterion_.components();
+  if (init.coupled() && init.criterion == DamageInitiation::Criterion::PlasticMotion) {
+    // §7.1: a coupled PLASTIC MOTION criterion follows the behaviour's coupled plasticity; without
+    // AFFECTED COMPONENTS it degrades the components of its potential.
+    for (std::size_t k = 0; k < behavior.plasticities.size() && !plastic_potential_; ++k) {
+      if (behavior.plasticities[k].coupled()) {
+        plastic_potential_ =
+            compiled(behavior, PotentialOwner::Kind::Plasticity, static_cast<std::int32_t>(k));
+      }
+    }
+    if (plastic_potential_) affected_ = plastic_potential_->components();
+  }
   if (init.evolution >= 0) {
     const DamageEvolution& evo =
         behavior.damage_evolutions[static_cast<std::size_t>(init.evolution)];
@@ -93,13 +104,62 @@ TrialSensitive DamageMechanism::equivalent_plastic(const MechanismInput& in,
   return TrialSensitive(old[kEquivalent]) + magnitude(flow);
 }
 
+TrialSensitive DamageMechanism::coupled_equivalent_plastic(const MechanismInput& in,
+                                                           std::span<const double> old) const {
+  // ū = ū_n + Δλ with Δu^pl = Δλ n, n = ∂P/∂f at the returned force (§6.4). The value is the
+  // coupled return's own (CUPEQC of the law below); its gradient comes from
+  // Δλ = n·Δu^pl/(n·n), Δu^pl = Δu − K⁻¹ Δf^eff, exact on a smooth part of the surface (at a
+  // kink or a MAX corner the flow is a combination of directions and the tangent is inexact).
+  const double unchanged = old[kEquivalent];
+  if (!plastic_potential_ || std::isnan(in.coupled_equivalent) ||
+      in.coupled_equivalent <= unchanged) {
+    return unchanged;
+  }
+  Vector6 f;
+  for (int j = 0; j < 6; ++j) f[j] = in.force[static_cast<std::size_t>(j)].value;
+  PotentialValue p;
+  plastic_potential_->evaluate(f, p, true);
+  TrialSensitive along, length;
+  for (int k = 0; k < 6; ++k) {
+    if (p.gradient[k] == 0 && p.hessian.row(k).isZero()) continue;
+    TrialSensitive n(p.gradient[k]);
+    for (int j = 0; j < 6; ++j) {
+      if (p.hessian(k, j) != 0) {
+        n.gradient += p.hessian(k, j) * in.force[static_cast<std::size_t>(j)].gradient;
+      }
+    }
+    TrialSensitive flow = in.motion[static_cast<std::size_t>(k)] - TrialSensitive(in.motion_old[k]);
+    for (int j = 0; j < 6; ++j) {
+      const double c = in.compliance(k, j);
+      if (c != 0) {
+        flow = flow - TrialSensitive(c) *
+                          (in.force[static_cast<std::size_t>(j)] - TrialSensitive(in.force_old[j]));
+      }
+    }
+    along = along + n * flow;
+    length = length + n * n;
+  }
+  if (length.value <= 0) return in.coupled_equivalent;
+  TrialSensitive equivalent = TrialSensitive(unchanged) + along / length;
+  equivalent.value = in.coupled_equivalent;
+  return equivalent;
+}
+
+TrialSensitive DamageMechanism::yield_measure(const SensitiveVector& force) const {
+  if (plastic_potential_) return evaluate_potential(*plastic_potential_, force);
+  return magnitude(force[static_cast<std::size_t>(criterion_.component() - 1)]);
+}
+
 TrialSensitive DamageMechanism::update(const MechanismInput& in, std::span<const double> old,
                                        std::span<double> history) const {
   std::memcpy(history.data(), old.data(), kHistorySize * sizeof(double));
   const bool plastic_criterion =
       criterion_.criterion() == DamageInitiation::Criterion::PlasticMotion;
   TrialSensitive plastic, equivalent;
-  if (plastic_criterion) {
+  if (plastic_criterion && criterion_.component() == 0) {
+    equivalent = coupled_equivalent_plastic(in, old);
+    history[kEquivalent] = equivalent.value;
+  } else if (plastic_criterion) {
     equivalent = equivalent_plastic(in, old, plastic);
     history[kPlasticMotion] = plastic.value;
     history[kEquivalent] = equivalent.value;
@@ -161,11 +221,10 @@ TrialSensitive DamageMechanism::update(const MechanismInput& in, std::span<const
       return TrialSensitive(old_value) + start * (value - TrialSensitive(old_value));
     };
     if (plastic_criterion) {
-      // W = ∫ F_y dū^pl with F_y = |f^eff| on the yield surface.
-      const auto i = static_cast<std::size_t>(criterion_.component() - 1);
-      const TrialSensitive yield = magnitude(in.force[i]);
+      // W = ∫ F_y dū^pl with F_y = |f^eff| (uncoupled) or P(f^eff) (coupled) on the surface.
+      const TrialSensitive yield = yield_measure(in.force);
       const TrialSensitive yield_start =
-          at_start(std::fabs(in.force_old[static_cast<int>(i)]), yield);
+          at_start(yield_measure(constant_vector(in.force_old)).value, yield);
       work = work + TrialSensitive(0.5) * (yield_start + yield) *
                         (equivalent - at_start(old[kEquivalent], equivalent));
     } else {

@@ -22,6 +22,9 @@ struct MechanismInput {
   const SensitiveVector& force;        // f^eff
   const SensitiveVector& total_force;  // f^eff + λ (the FORCE criterion)
   const Matrix6& compliance;           // K⁻¹ of the linear elasticity, padded (PLASTIC MOTION)
+  // ū^pl of the coupled plasticity at the trial state, read from the law below (CUPEQC); NaN
+  // when there is none.
+  double coupled_equivalent;
 };
 
 class DamageMechanism {
@@ -58,6 +61,11 @@ class DamageMechanism {
   // ū^pl of the criterion's component at the trial state (uncoupled plasticity: Δū = |Δu^pl|).
   TrialSensitive equivalent_plastic(const MechanismInput& in, std::span<const double> old,
                                     TrialSensitive& plastic) const;
+  // ū^pl of the coupled plasticity at the trial state.
+  TrialSensitive coupled_equivalent_plastic(const MechanismInput& in,
+                                            std::span<const double> old) const;
+  // The size of the effective force on the yield surface: |f_i| (uncoupled), P(f) (coupled).
+  TrialSensitive yield_measure(const SensitiveVector& force) const;
 
   DamageInitiationCriterion criterion_;
   std::optional<DamageEvolutionLaw> law_;  // none: initiation is only monitored
@@ -68,6 +76,8 @@ class DamageMechanism {
   std::optional<ConnectorPotential> evolution_potential_;
   ComponentMask work_components_ = 0;     // the motions whose work W integrates
   double initiation_plastic_motion_ = 0;  // ū^pl_0
+  // Coupled PLASTIC MOTION: the potential of the coupled plasticity.
+  std::optional<ConnectorPotential> plastic_potential_;
 };
 
 }  // namespace clinch
