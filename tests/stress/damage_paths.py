@@ -5,7 +5,9 @@ Each path is one damaged connector between a held node a and a node b (behaviors
   sometimes a lower limit), sometimes a second MOTION mechanism with MULTIPLICATIVE degradation;
 - plastic: AXIAL with perfect plasticity F_y and PLASTIC MOTION initiation;
 - coupled: CARTESIAN, k on 1-3, FORCE initiation through a potential on components 1 and 2,
-  evolution through a potential on their motions or the default norm (both translations).
+  evolution through a potential on their motions or the default norm (both translations);
+- coupled_plastic: CARTESIAN, k on 1-3, coupled plasticity with an elliptic potential on
+  components 1 and 2 and perfect plasticity F_y, coupled PLASTIC MOTION initiation.
 Evolution: TYPE=MOTION with LINEAR, EXPONENTIAL or TABULAR softening, or TYPE=ENERGY.
 
 One deck holds --per-deck paths (default 5) of one drive, each with its own nodes, behaviour and
@@ -26,7 +28,7 @@ are the converged increments, so a stopped run is checked on the rows it kept):
    criterion is below 1, CDMG > 0 once it has passed 1.01 (every law grows from κ = 0);
 2. once CDMG = 1 the element is deleted: every force is 0 from then on;
 3. the degraded force: CTF_i = (1 - CDMG) k CU_i on the affected components (elastic kinds);
-   |CTF1| <= (1 - CDMG) F_y (plastic);
+   |CTF1| <= (1 - CDMG) F_y (plastic); P(CTF) <= (1 - CDMG) F_y (coupled_plastic);
 4. equilibrium: CTF of the damaged connector = CTF of the series connector (series); CTF of the
    damaged + parallel connectors = the applied load (load).
 tol = --rtol (default 1e-6) times the connector's peak force.
@@ -52,9 +54,11 @@ import subprocess
 import sys
 import tempfile
 
-KINDS = ["force", "motion", "plastic", "coupled"]
+KINDS = ["force", "motion", "plastic", "coupled", "coupled_plastic"]
 DRIVES = ["direct", "series", "load"]
-CRITERION_OUTPUT = {"force": "CDIF", "motion": "CDIM", "plastic": "CDIP", "coupled": "CDIF"}
+CRITERION_OUTPUT = {"force": "CDIF", "motion": "CDIM", "plastic": "CDIP", "coupled": "CDIF",
+                    "coupled_plastic": "CDIP"}
+TWO_D = ("coupled", "coupled_plastic")  # CARTESIAN, driven in x and y
 
 
 def fmt(x):
@@ -113,7 +117,7 @@ class Path:
         if self.kind == "motion":
             self.limit = rng.uniform(0.03, 0.15)
             self.peak = self.k * self.limit
-        elif self.kind == "plastic":
+        elif self.kind in ("plastic", "coupled_plastic"):
             self.fy = rng.uniform(50.0, 150.0)
             self.ubar0 = rng.uniform(0.01, 0.1)
             self.limit = self.fy
@@ -146,14 +150,19 @@ class Path:
                                    for _ in range(n - 1)]
         else:
             self.values = walk(rng, n, unit, 0.4)
-            if self.kind == "coupled":
+            if self.kind in TWO_D:
                 self.values_y = walk(rng, n, unit, 0.2 * rng.choice([-1.0, 1.0]))
 
     def behavior_lines(self):
         lines = [f"*CONNECTOR BEHAVIOR, NAME=B{self.j}"]
-        for comp in (1, 2, 3) if self.kind == "coupled" else (1,):
+        for comp in (1, 2, 3) if self.kind in TWO_D else (1,):
             lines += [f"*CONNECTOR ELASTICITY, COMPONENT={comp}", fmt(self.k)]
-        if self.kind == "plastic":
+        if self.kind == "coupled_plastic":
+            lines += ["*CONNECTOR PLASTICITY", "*CONNECTOR HARDENING, TYPE=ISOTROPIC",
+                      f"{fmt(self.fy)}, 0.", "*CONNECTOR POTENTIAL",
+                      f"1, {fmt(self.radii[0])}", f"2, {fmt(self.radii[1])}",
+                      "*CONNECTOR DAMAGE INITIATION, CRITERION=PLASTIC MOTION", fmt(self.ubar0)]
+        elif self.kind == "plastic":
             lines += ["*CONNECTOR PLASTICITY, COMPONENT=1", "*CONNECTOR HARDENING, TYPE=ISOTROPIC",
                       f"{fmt(self.fy)}, 0."]
             lines += ["*CONNECTOR DAMAGE INITIATION, COMPONENT=1, CRITERION=PLASTIC MOTION",
@@ -194,7 +203,7 @@ class Path:
         lines = ["*NODE", f"{self.a}, 0., {fmt(y)}, 0.", f"{self.b}, 10., {fmt(y)}, 0."]
         if self.drive == "series":
             lines.append(f"{self.c}, 20., {fmt(y)}, 0.")
-        section = "CARTESIAN," if self.kind == "coupled" else "AXIAL,"
+        section = "CARTESIAN," if self.kind in TWO_D else "AXIAL,"
         lines += ["*ELEMENT, TYPE=CONN3D2, ELSET=DAMAGED", f"{self.element}, {self.a}, {self.b}",
                   f"*ELSET, ELSET=E{self.j}", f"{self.element}",
                   f"*CONNECTOR SECTION, ELSET=E{self.j}, BEHAVIOR=B{self.j}", section]
@@ -206,15 +215,15 @@ class Path:
                       f"*CONNECTOR SECTION, ELSET=O{self.j}, BEHAVIOR=K{self.j}", "AXIAL,",
                       f"*CONNECTOR BEHAVIOR, NAME=K{self.j}", "*CONNECTOR ELASTICITY, COMPONENT=1",
                       fmt(self.ratio * self.k)]
-        lines += ["*BOUNDARY", f"{self.a}, 1, 6" if self.kind == "coupled" else f"{self.a}, 1, 3"]
-        if self.kind == "coupled":
+        lines += ["*BOUNDARY", f"{self.a}, 1, 6" if self.kind in TWO_D else f"{self.a}, 1, 3"]
+        if self.kind in TWO_D:
             lines += [f"{self.b}, 3, 3"]
         else:
             lines += [f"{self.b}, 2, 3"]
             if self.drive == "series":
                 lines.append(f"{self.c}, 2, 3")
         lines += amplitude_lines(f"A{self.j}", self.times, self.values)
-        if self.kind == "coupled":
+        if self.kind in TWO_D:
             lines += amplitude_lines(f"Y{self.j}", self.times, self.values_y)
         return lines
 
@@ -223,7 +232,7 @@ class Path:
             return [f"*CLOAD, AMPLITUDE=A{self.j}", f"{self.b}, 1, 1.0"]
         node = self.c if self.drive == "series" else self.b
         lines = [f"*BOUNDARY, AMPLITUDE=A{self.j}", f"{node}, 1, 1, 1.0"]
-        if self.kind == "coupled":
+        if self.kind in TWO_D:
             lines += [f"*BOUNDARY, AMPLITUDE=Y{self.j}", f"{node}, 2, 2, 1.0"]
         return lines
 
@@ -277,7 +286,7 @@ def check_path(p, rows, rtol):
     criterion = CRITERION_OUTPUT[p.kind]
     previous_d = previous_r = 0.0
     failed = False
-    comps = (1, 2) if p.kind == "coupled" else (1,)
+    comps = (1, 2) if p.kind in TWO_D else (1,)
     for r in rows:
         where = f"element {e} ({p.kind}, {p.drive}, {p.softening}) at t={r['total_time']:.6g}"
         d, crit = r[f"CDMG@{e}"], r[f"{criterion}@{e}"]
@@ -295,6 +304,10 @@ def check_path(p, rows, rtol):
         if p.kind == "plastic":
             if abs(forces[0]) > (1.0 - d) * p.fy + tol:
                 problems.append(f"{where}: |CTF1| {forces[0]} above (1 - d) F_y")
+        elif p.kind == "coupled_plastic":
+            size = math.hypot(forces[0] / p.radii[0], forces[1] / p.radii[1])
+            if size > (1.0 - d) * p.fy + tol:
+                problems.append(f"{where}: P(CTF) {size} above (1 - d) F_y")
         else:
             for i, f in zip(comps, forces):
                 expected = (1.0 - d) * p.k * r[f"CU{i}@{e}"] if not failed else 0.0
@@ -354,10 +367,10 @@ def main():
         done += count
         deck_index += 1
     print(f"{args.paths} damage paths in {deck_index} decks (seed {args.seed}), work dir {work}")
-    print(f"{'':16}{'paths':>7}{'completed':>11}{'stopped':>9}{'deleted':>9}{'rows':>9}")
+    print(f"{'':22}{'paths':>7}{'completed':>11}{'stopped':>9}{'deleted':>9}{'rows':>9}")
     for key in sorted(stats):
         s = stats[key]
-        print(f"{key[0] + ' ' + key[1]:16}{s['paths']:>7}{s['completed']:>11}{s['stopped']:>9}"
+        print(f"{key[0] + ' ' + key[1]:22}{s['paths']:>7}{s['completed']:>11}{s['stopped']:>9}"
               f"{s['deleted']:>9}{s['rows']:>9}")
     mean = total_iterations / total_increments if total_increments else 0.0
     print(f"Newton iterations per converged increment: {mean:.3f} "
