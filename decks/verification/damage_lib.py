@@ -111,13 +111,16 @@ def check(actual, expected, tol, what):
 
 class CoupledElasticDamage:
     """Uncoupled linear elasticity k_i; coupled FORCE initiation r = P(f)/F_U with
-    P(f) = (Σ |f_i/R_i|^2)^(1/2); evolution δ = P_e(u) − P_e(u_0), P_e(u) = (Σ |u_i/S_i|^2)^(1/2),
+    P(f) = (Σ |f_i/R_i|^α_i)^(1/β) (α_i = β = 2 unless given); evolution δ = P_e(u) − P_e(u_0),
+    P_e(u) = (Σ |u_i/S_i|^2)^(1/2),
     with the force-shape law d = 1 − m_0 g(κ)/(m_0 + κ), m_0 = P_e(u_0) (behaviors.md §7.2). The
     initiation point is interpolated linearly in r between the ends of the increment that crosses
     r = 1 (§7.1): θ = (1 − r_n)/(r − r_n), u_0 = u_n + θ (u − u_n)."""
 
-    def __init__(self, k, force_scales, force_limit, motion_scales, law):
+    def __init__(self, k, force_scales, force_limit, motion_scales, law, alphas=None, beta=2.0):
         self.k, self.R, self.F, self.S, self.law = k, force_scales, force_limit, motion_scales, law
+        self.alphas = alphas or [2.0] * len(k)
+        self.beta = beta
         self.u_n = [0.0] * len(k)
         self.r_n = 0.0
         self.r_max = 0.0
@@ -126,7 +129,8 @@ class CoupledElasticDamage:
         self.d = 0.0
 
     def criterion(self, u):
-        return math.sqrt(sum((ki * ui / ri) ** 2 for ki, ui, ri in zip(self.k, u, self.R))) / self.F
+        s = sum(abs(ki * ui / ri) ** a for ki, ui, ri, a in zip(self.k, u, self.R, self.alphas))
+        return s ** (1.0 / self.beta) / self.F
 
     def measure(self, u):
         return math.sqrt(sum((ui / si) ** 2 for ui, si in zip(u, self.S)))

@@ -18,7 +18,8 @@ import golden_lib as g  # noqa: E402
 
 e15 = dl.CoupledElasticDamage([1000.0] * 2, [100.0, 50.0], 1.0, [1.0, 1.0], ("LINEAR", 0.1))
 six = dl.CoupledElasticDamage([1000.0] * 3 + [200.0] * 3, [60.0, 40.0, 30.0, 20.0, 15.0, 25.0], 1.0,
-                              [1.0, 1.0, 1.0, 0.5, 0.5, 0.5], ("EXPONENTIAL", 0.08, 2.0))
+                              [1.0, 1.0, 1.0, 0.5, 0.5, 0.5], ("EXPONENTIAL", 0.08, 2.0),
+                              alphas=[2.0, 2.0, 2.0, 3.0, 3.0, 1.5], beta=2.5)
 
 T1 = [0.03, 0.02, 0.01]
 R2 = [0.05, 0.04, -0.06]
@@ -77,7 +78,8 @@ dl.check(e15_rows[1.8][1], 1.0, 0.0, "E15 failed at t = 1.8")
 g.write_golden(__file__, [
     "damage_coupled_potential: element 1 = E15 (CARTESIAN, P = |(f1/100, f2/50)| = 1, P_e = |(u1, u2)|,",
     "linear 0.1) along U = t (0.1, 0.05), t = 0.5, 1, 1.2, ..., 2 (deleted at 1.8). Element 2: CARTESIAN +",
-    "CARDAN, P = |(f_i/R_i)|, R = 60, 40, 30, 20, 15, 25; P_e = |(u_i/S_i)|, S = 1, 1, 1, .5, .5, .5;",
+    "CARDAN, P = (sum |f_i/R_i|^a_i)^(1/b), R = 60, 40, 30, 20, 15, 25, a = 2, 2, 2, 3, 3, 1.5, b = 2.5;",
+    "P_e = |(u_i/S_i)|, S = 1, 1, 1, .5, .5, .5;",
     "EXPONENTIAL (0.08, 2); translations, then rotations (initiates inside step 2), unload, reload x2.",
     "Initiation point by linear interpolation of r in the crossing increment (behaviors.md §7.1)",
 ], names, rows)
