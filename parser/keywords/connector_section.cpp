@@ -578,7 +578,8 @@ class SpringHandler : public KeywordHandler {
 };
 
 // ---------------------------------------------------------------------------------------------
-// *SECTION CONTROLS (keywords.md §5): only the values matching behaviors.md §7.4.
+// *SECTION CONTROLS (keywords.md §5): ELEMENT DELETION, MAX DEGRADATION and VISCOSITY of the
+// damage of the connectors that name them (docs/decisions.md "Damage").
 
 constexpr std::string_view kSectionControlsParams[] = {"NAME", "ELEMENTDELETION", "MAXDEGRADATION",
                                                        "VISCOSITY"};
@@ -604,28 +605,16 @@ class SectionControlsHandler : public KeywordHandler {
     }
     SectionControls controls;
     controls.keyword_loc = ctx.keyword().loc;
-    bool ok = true;
-    if (params.enum_value("ELEMENT DELETION") == "NO") {
-      ctx.report(DiagCode::unsupported_option, params.loc("ELEMENT DELETION", true),
-                 "ELEMENT DELETION=NO is not supported by clinch (damaged connectors are always "
-                 "removed at full degradation)");
-      ok = false;
-    }
+    controls.element_deletion = params.enum_value("ELEMENT DELETION") != "NO";
     if (params.value("MAX DEGRADATION")) {
       if (auto value = ctx.real_param("MAX DEGRADATION")) {
         const Field& field = *params.value("MAX DEGRADATION");
         if (!(*value > 0 && *value <= 1)) {
           ctx.report(DiagCode::value_out_of_range, field,
                      fmt::format("MAX DEGRADATION {} is out of range (0, 1]", field.text));
-          ok = false;
-        } else if (*value != 1.0) {
-          ctx.report(
-              DiagCode::unsupported_option, field,
-              fmt::format("MAX DEGRADATION={} is not supported by clinch (only 1.0)", field.text));
-          ok = false;
+        } else {
+          controls.max_degradation = *value;
         }
-      } else {
-        ok = false;
       }
     }
     if (params.value("VISCOSITY")) {
@@ -634,18 +623,12 @@ class SectionControlsHandler : public KeywordHandler {
         if (*value < 0) {
           ctx.report(DiagCode::value_out_of_range, field,
                      fmt::format("VISCOSITY {} is out of range (at least 0)", field.text));
-          ok = false;
-        } else if (*value > 0) {
-          ctx.report(DiagCode::unsupported_option, field,
-                     "viscous regularisation of damage (VISCOSITY > 0) is not supported by "
-                     "clinch");
-          ok = false;
+        } else {
+          controls.viscosity = *value;
         }
-      } else {
-        ok = false;
       }
     }
-    (void)ok;  // the controls are registered anyway so that CONTROLS= finds them
+    // The controls are registered even after an error, so that CONTROLS= finds them.
     std::optional<Name> name = ctx.name_param("NAME");
     if (!name) return;
     controls.name = *name;

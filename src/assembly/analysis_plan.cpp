@@ -23,13 +23,6 @@ Matrix3 to_matrix(const Triad& t) {
   return m;
 }
 
-// Behaviour options that clinch run does not integrate yet: the run refuses the deck instead of
-// ignoring them.
-std::string unsupported_behavior(const ConnectorBehavior& b) {
-  if (!b.damage_initiations.empty()) return "*CONNECTOR DAMAGE INITIATION";
-  if (!b.failures.empty()) return "*CONNECTOR FAILURE";
-  return {};
-}
 
 // Components a *CONNECTOR MOTION of any step (or model data) prescribes, per element; the
 // targets as validation resolved them.
@@ -112,7 +105,14 @@ class PlanBuilder {
           plan_.rate_dependent_friction |= f.law.exponential_decay ||
                                            f.law.variable == FrictionLaw::Variable::SlipRate;
         }
-        for (auto& law : make_connector_laws(b, section.available, section.constrained)) {
+        DamageControls controls;
+        if (section.controls_index >= 0) {
+          const SectionControls& c =
+              model_.sections.controls[static_cast<std::size_t>(section.controls_index)];
+          controls = {c.element_deletion, c.max_degradation, c.viscosity};
+        }
+        for (auto& law :
+             make_connector_laws(b, section.available, section.constrained, controls)) {
           section_laws_[index].push_back(law.get());
           plan_.behaviors.push_back(std::move(law));
         }
@@ -152,14 +152,6 @@ class PlanBuilder {
         section.behavior_index >= 0
             ? &model_.behaviors.behaviors[static_cast<std::size_t>(section.behavior_index)]
             : nullptr;
-    if (behavior) {
-      if (std::string what = unsupported_behavior(*behavior); !what.empty()) {
-        *error = fmt::format("connector behavior '{}' uses {}, which clinch run does not "
-                             "support yet (clinch check validates it)",
-                             behavior->name.display, what);
-        return false;
-      }
-    }
     ConnectorRecord r;
     r.element = e;
     r.section = s;
@@ -220,6 +212,13 @@ class PlanBuilder {
             lock.locked == 0 ? r.available : (component_bit(lock.locked) & r.available);
         r.locks.push_back({lock.component, locks, lock.bounds});
         multiplied |= locks;
+      }
+      // §5.3: RELEASE=ALL frees every available component, never a constrained one.
+      for (const ConnectorFailure& failure : behavior->failures) {
+        const ComponentMask releases = failure.released == 0
+                                           ? r.available
+                                           : (component_bit(failure.released) & r.available);
+        r.failures.push_back({failure.component, releases, failure.bounds});
       }
     }
     for (int c = 0; c < 12; ++c) {

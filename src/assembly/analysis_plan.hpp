@@ -36,7 +36,8 @@ struct LawSlot {
   std::size_t history = 0;
 };
 struct LawStack {
-  static constexpr int kMaxLaws = 7;  // elastic-plastic, damping, five friction definitions
+  // elastic-plastic, damage, damping, five friction definitions
+  static constexpr int kMaxLaws = 8;
   std::array<LawSlot, kMaxLaws> slots{};
   int count = 0;
   bool needs_connector_forces = false;  // some law reads the constraint forces
@@ -58,6 +59,13 @@ struct ConnectorLockRule {
   ConnectorCriterionBounds bounds;
 };
 
+// *CONNECTOR FAILURE (behaviors.md §5.3): a criterion on `component`, releasing `releases`.
+struct ConnectorReleaseRule {
+  int component = 0;
+  ComponentMask releases = 0;
+  ConnectorCriterionBounds bounds;
+};
+
 struct ConnectorRecord {
   std::int32_t element = 0;  // global element index
   std::int32_t section = 0;
@@ -68,6 +76,7 @@ struct ConnectorRecord {
   Vector6 reference = Vector6::Zero();  // ref_i: u = p − ref (behaviors.md §3)
   const ConnectorStops* stops = nullptr;  // into AnalysisPlan::stop_tables; null: no stops
   std::vector<ConnectorLockRule> locks;
+  std::vector<ConnectorReleaseRule> failures;
   // Local columns 0…11 of [u_a, θ_a, u_b, θ_b] that have an equation, in order; then the
   // components that own a multiplier.
   std::array<std::int8_t, 12> columns{};

@@ -38,6 +38,12 @@ struct ConnectorResult {
 struct ConnectorActiveSet {
   std::array<std::uint8_t, 6> status{}, status_n{};
   Vector6 lock_position = Vector6::Zero();
+  // *CONNECTOR FAILURE (behaviors.md §5.3): the released components, for good once a converged
+  // increment met a criterion (not reverted by a cutback), the constitutive motion their laws
+  // stay frozen at, and which rules have fired.
+  ComponentMask released = 0;
+  Vector6 release_motion = Vector6::Zero();
+  std::uint32_t fired = 0;
 };
 
 // Adds a law's request to `request`: the smallest ratio wins, with its message.

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace clinch {
@@ -10,12 +11,16 @@ namespace {
 // The constraint equation g of a multiplier row and whether it is active (connection-types.md
 // §3.8, behaviors.md §4.4, §5): constrained and RIGID components hold c_i = 0, a connector motion
 // holds c_i at its target, a lock at its position, a stop at its limit; an inactive row holds
-// λ = 0.
+// λ = 0, and so does every row of a component released by *CONNECTOR FAILURE.
 bool constraint_gap(const ConnectorRecord& r, const ConnectorConditions& conditions,
                     const ConnectorActiveSet& set, const KinematicsResult& k, int i, double& g) {
   const auto slot = static_cast<std::size_t>(i - 1);
   const auto status = static_cast<StopStatus>(set.status[slot]);
-  if (has_component(r.constrained | r.rigid, i)) {
+  if (has_component(r.constrained, i)) {
+    g = k.change[i - 1];
+  } else if (has_component(set.released, i)) {
+    return false;  // §5.3: free from then on
+  } else if (has_component(r.rigid, i)) {
     g = k.change[i - 1];
   } else if (has_component(conditions.motion, i)) {
     g = k.change[i - 1] - conditions.motion_target[i - 1];
@@ -51,10 +56,50 @@ std::string ConnectorElements::label(std::size_t c) const {
   return qualified_label(model_, element.instance, element.label);
 }
 
+bool is_deleted(const ConnectorRecord& r, const AnalysisState& state) {
+  for (const LawSlot& slot : r.laws) {
+    if (slot.law->deletes_element(std::span<const double>(state.history_n.data() + slot.history,
+                                                          slot.law->history_size()))) {
+      return true;
+    }
+  }
+  return false;
+}
+
+// A deleted element (behaviors.md §7.4): no force, no stiffness, every multiplier row inactive
+// (λ = 0), its laws' history and its motions frozen at deletion, and forces reported as 0.
+EvalStatus ConnectorElements::evaluate_deleted(std::size_t c, AnalysisState& state,
+                                               bool want_tangent, LocalSystem& local) const {
+  const ConnectorRecord& r = plan_.connectors[c];
+  const int n = r.column_count;
+  for (const LawSlot& slot : r.laws) {
+    std::copy_n(state.history_n.begin() + static_cast<std::ptrdiff_t>(slot.history),
+                slot.law->history_size(),
+                state.history.begin() + static_cast<std::ptrdiff_t>(slot.history));
+  }
+  for (int a = 0; a < n; ++a) local.r[a] = 0.0;
+  for (int j = 0; j < r.multiplier_count; ++j) {
+    local.active[static_cast<std::size_t>(j)] = 0;
+    local.r[n + j] = state.x[r.local.equation[static_cast<std::size_t>(n + j)]];
+  }
+  if (want_tangent) {
+    const int m = n + r.multiplier_count;
+    local.k.topLeftCorner(m, m).setZero();
+    for (int j = 0; j < r.multiplier_count; ++j) local.k(n + j, n + j) = 1.0;
+  }
+  ConnectorResult& result = state.results[c];
+  for (Vector6* v : {&result.elastic, &result.multiplier, &result.friction, &result.viscous,
+                     &result.applied, &result.total}) {
+    v->setZero();
+  }
+  return {};
+}
+
 EvalStatus ConnectorElements::evaluate(std::size_t c, const ElementContext& context,
                                        AnalysisState& state, bool want_tangent,
                                        LocalSystem& local) const {
   const ConnectorRecord& r = plan_.connectors[c];
+  if (is_deleted(r, state)) return evaluate_deleted(c, state, want_tangent, local);
   KinematicsResult& k = local.kinematics;
   plan_.kinematics[r.kinematics].evaluate(node_pose(plan_.dofs, state, r.nodes[0]),
                                           node_pose(plan_.dofs, state, r.nodes[1]), context.nlgeom,
@@ -76,14 +121,20 @@ EvalStatus ConnectorElements::evaluate(std::size_t c, const ElementContext& cont
     if (active) reaction[i - 1] += lambda;
   }
 
-  // The law stack (§1.3), on the constitutive motion u = p − ref (§1.1).
+  // The law stack (§1.3), on the constitutive motion u = p − ref (§1.1). A released component
+  // (§5.3) is held at its motion at release, so that its laws' history stays frozen.
   const Vector6 u = k.position - r.reference;
-  const Vector6 motion_old = state.position_n[c] - r.reference;
-  const Vector6 increment = u - motion_old;
+  Vector6 motion_old = state.position_n[c] - r.reference;
+  Vector6 law_motion = u;
+  for (int i = 0; i < 6; ++i) {
+    if (has_component(set.released, i + 1)) law_motion[i] = motion_old[i] = set.release_motion[i];
+  }
+  const Vector6 increment = law_motion - motion_old;
   Vector6 law_force = Vector6::Zero(), friction = Vector6::Zero(), viscous = Vector6::Zero();
   Matrix6 stiffness = Matrix6::Zero(), force_stiffness = Matrix6::Zero();
   const TangentRequest request = want_tangent ? TangentRequest::Consistent : TangentRequest::None;
   bool first = true;
+  const LawSlot* below = nullptr;
   for (const LawSlot& slot : r.laws) {
     const std::size_t size = slot.law->history_size();
     BehaviorOutput out;
@@ -97,7 +148,12 @@ EvalStatus ConnectorElements::evaluate(std::size_t c, const ElementContext& cont
                            first ? nullptr : &law_force,
                            first ? nullptr : &stiffness,
                            first || !r.laws.needs_connector_forces ? nullptr : &force_stiffness,
-                           r.laws.needs_connector_forces ? &reaction : nullptr};
+                           r.laws.needs_connector_forces ? &reaction : nullptr,
+                           below ? std::span<const double>(state.history.data() + below->history,
+                                                           below->law->history_size())
+                                 : std::span<const double>(),
+                           below ? below->law->history_layout()
+                                 : std::span<const HistoryVariable>()};
     const IntegrationStatus status = slot.law->integrate(in, out);
     if (status == IntegrationStatus::Failure) {
       return {false, fmt::format("connector element {}: {}", label(c), out.message)};
@@ -119,6 +175,19 @@ EvalStatus ConnectorElements::evaluate(std::size_t c, const ElementContext& cont
       if (slot.law->needs_connector_forces()) force_stiffness += out.force_tangent;
     }
     first = false;
+    below = &slot;
+  }
+
+  // §5.3: every behaviour force on a released component is zero, and nothing depends on its
+  // (frozen) motion.
+  for (int i = 0; i < 6; ++i) {
+    if (!has_component(set.released, i + 1)) continue;
+    law_force[i] = friction[i] = viscous[i] = 0.0;
+    if (want_tangent) {
+      stiffness.row(i).setZero();
+      stiffness.col(i).setZero();
+      force_stiffness.row(i).setZero();
+    }
   }
 
   // Forces (connection-types.md §4): RIGID multipliers are elastic forces (CEF), the others CRF;

@@ -41,9 +41,15 @@ class ConnectorElements {
   std::string label(std::size_t c) const;  // the element's label, for messages
 
  private:
+  EvalStatus evaluate_deleted(std::size_t c, AnalysisState& state, bool want_tangent,
+                              LocalSystem& local) const;
+
   const Model& model_;
   const AnalysisPlan& plan_;
 };
+
+// True when a law of connector `r` has deleted it at the committed state (damage, §7.4).
+bool is_deleted(const ConnectorRecord& r, const AnalysisState& state);
 
 // The pose of `node` in the state (zero displacement and identity rotation for the ground).
 NodePose node_pose(const DofMap& dofs, const AnalysisState& state, std::int32_t node);

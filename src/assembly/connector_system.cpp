@@ -56,7 +56,8 @@ ConnectorSystem::ConnectorSystem(const Model& model, const AnalysisPlan& plan)
       springs_(plan.springs.size()),
       multiplier_active_(static_cast<std::size_t>(plan.dofs.equations()), 0),
       internal_(Eigen::VectorXd::Zero(plan.dofs.equations())),
-      predictor_(internal_) {
+      predictor_(internal_),
+      deleted_(plan.connectors.size(), 0) {
   use_storage(true);
 }
 
@@ -357,7 +358,130 @@ void ConnectorSystem::measure(const Eigen::VectorXd& residual, const Eigen::Vect
 
 bool ConnectorSystem::update_active_set() { return update_stops(plan_, conditions_, state_); }
 
-void ConnectorSystem::end_increment() { engage_locks(plan_, state_); }
+void ConnectorSystem::end_increment() {
+  engage_locks(plan_, state_);
+  // §7.4: an element whose affected components all reached d = 1 leaves the assembly now.
+  for (std::size_t c = 0; c < plan_.connectors.size(); ++c) {
+    const ConnectorRecord& r = plan_.connectors[c];
+    if (deleted_[c] || r.laws.empty() || !is_deleted(r, state_)) continue;
+    deleted_[c] = 1;
+    events_.push_back(fmt::format("connector element {} deleted: every component its damage "
+                                  "affects is fully damaged (d = 1)",
+                                  elements_.label(c)));
+  }
+}
+
+// behaviors.md §5.3: a failure criterion met on the converged state releases its components for
+// good; each rule fires once.
+std::vector<std::string> ConnectorSystem::release_failed_components() {
+  std::vector<std::string> events;
+  for (std::size_t c = 0; c < plan_.connectors.size(); ++c) {
+    const ConnectorRecord& r = plan_.connectors[c];
+    ConnectorActiveSet& set = state_.active_sets[c];
+    for (std::size_t k = 0; k < r.failures.size(); ++k) {
+      if (set.fired & (1u << k)) continue;
+      const ConnectorReleaseRule& rule = r.failures[k];
+      const ConnectorResult& out = state_.results[c];
+      const double p = out.position[rule.component - 1];
+      const double f = out.total[rule.component - 1];
+      const ConnectorCriterionBounds& b = rule.bounds;
+      std::string why;
+      if (b.force_upper && f >= *b.force_upper) {
+        why = fmt::format("component {} force {:.6g} ≥ F_U = {:.6g}", rule.component, f,
+                          *b.force_upper);
+      } else if (b.force_lower && f <= *b.force_lower) {
+        why = fmt::format("component {} force {:.6g} ≤ F_L = {:.6g}", rule.component, f,
+                          *b.force_lower);
+      } else if (b.position_upper && p >= *b.position_upper) {
+        why = fmt::format("component {} position {:.6g} ≥ p_U = {:.6g}", rule.component, p,
+                          *b.position_upper);
+      } else if (b.position_lower && p <= *b.position_lower) {
+        why = fmt::format("component {} position {:.6g} ≤ p_L = {:.6g}", rule.component, p,
+                          *b.position_lower);
+      } else {
+        continue;
+      }
+      set.fired |= 1u << k;
+      for (int i = 0; i < 6; ++i) {
+        if (has_component(rule.releases, i + 1) && !has_component(set.released, i + 1)) {
+          set.release_motion[i] = out.constitutive[i];
+        }
+      }
+      set.released |= rule.releases;
+      events.push_back(fmt::format("connector element {} failed ({})", elements_.label(c), why));
+    }
+  }
+  return events;
+}
+
+// The energy dissipated by the viscous regularisation of damage (*SECTION CONTROLS, VISCOSITY)
+// over the connectors that have it, so that an analyst can judge the viscosity against the
+// energy of the model.
+std::vector<std::string> ConnectorSystem::step_summary() const {
+  double energy = 0;
+  std::size_t count = 0;
+  for (const ConnectorRecord& r : plan_.connectors) {
+    for (const LawSlot& slot : r.laws) {
+      const int k = history_slot(slot.law->history_layout(), "regularisation energy", 0);
+      if (k < 0) continue;
+      energy += state_.history_n[slot.history + static_cast<std::size_t>(k)];
+      ++count;
+    }
+  }
+  if (count == 0) return {};
+  return {fmt::format("energy dissipated by the viscous regularisation of damage so far: {:.6g} "
+                      "({} connectors with VISCOSITY)",
+                      energy, count)};
+}
+
+// behaviors.md §7.4: a node that a deleted connector leaves without stiffness makes the system
+// singular there; under load control no equilibrium exists past a softening peak, and Newton
+// fails: the element whose damage grows most in the failed trial state is named.
+std::string ConnectorSystem::failure_note(int failed_equation) const {
+  const std::int32_t node = failed_equation >= 0 && failed_equation < plan_.dofs.equations()
+                                ? plan_.dofs.node_of(failed_equation)
+                                : -1;
+  const auto trial_damage = [&](std::size_t c) {
+    for (const LawSlot& slot : plan_.connectors[c].laws) {
+      const int k = history_slot(slot.law->history_layout(), "CDMG", 0);
+      if (k >= 0) return state_.history[slot.history + static_cast<std::size_t>(k)];
+    }
+    return 0.0;
+  };
+  for (std::size_t c = 0; node >= 0 && c < plan_.connectors.size(); ++c) {
+    const ConnectorRecord& r = plan_.connectors[c];
+    if (r.nodes[0] != node && r.nodes[1] != node) continue;
+    if (deleted_[c]) {
+      return fmt::format("after connector element {} was deleted (damage)", elements_.label(c));
+    }
+    if (state_.active_sets[c].released != 0) {
+      return fmt::format("after connector element {} failed (*CONNECTOR FAILURE)",
+                         elements_.label(c));
+    }
+    if (trial_damage(c) >= 1.0) {
+      return fmt::format("connector element {} fully damaged (d=1)", elements_.label(c));
+    }
+  }
+  double largest = 0, growth = 0;
+  std::size_t softening = plan_.connectors.size();
+  for (std::size_t c = 0; c < plan_.connectors.size(); ++c) {
+    for (const LawSlot& slot : plan_.connectors[c].laws) {
+      const int k = history_slot(slot.law->history_layout(), "CDMG", 0);
+      if (k < 0) continue;
+      const std::size_t at = slot.history + static_cast<std::size_t>(k);
+      const double grew = state_.history[at] - state_.history_n[at];
+      if (grew > growth) {
+        growth = grew;
+        largest = state_.history[at];
+        softening = c;
+      }
+    }
+  }
+  if (softening == plan_.connectors.size()) return {};
+  return fmt::format("connector element {} softening (d={:.3g}) under load control, limit point "
+                     "passed?",
+                     elements_.label(softening), largest);
+}
 
 double ConnectorSystem::nodal_value(std::int32_t node, int dof) const {
   const int eq = plan_.dofs.equation(node, dof);
@@ -380,6 +504,13 @@ ConnectorOutput ConnectorSystem::connector_output(std::size_t connector) const {
   static_cast<ConnectorResult&>(out) = state_.results[connector];
   const ConnectorRecord& r = plan_.connectors[connector];
   out.status = state_.active_sets[connector].status;
+  // output-variables.md §2: CSLST 4 on every component of a deleted element and on the
+  // components a *CONNECTOR FAILURE released.
+  const ComponentMask four =
+      deleted_[connector] ? r.available | r.constrained : state_.active_sets[connector].released;
+  for (int i = 0; i < 6; ++i) {
+    if (has_component(four, i + 1)) out.status[static_cast<std::size_t>(i)] = 4;
+  }
   std::size_t l = 0;
   for (const LawSlot& slot : r.laws) {
     out.laws[l++] = {

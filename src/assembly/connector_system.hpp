@@ -69,6 +69,10 @@ class ConnectorSystem final : public NonlinearProblem {
   void revert() override { state_.revert(); }
   bool update_active_set() override;
   void end_increment() override;
+  std::vector<std::string> take_events() override { return std::move(events_); }
+  std::string failure_note(int failed_equation) const override;
+  std::vector<std::string> step_summary() const override;
+  std::vector<std::string> release_failed_components() override;
   StepRequest step_request() const override { return state_.request; }
 
   // ---- results of the last evaluation ----
@@ -115,6 +119,8 @@ class ConnectorSystem final : public NonlinearProblem {
   // K_fp·(target − u)_p while prescribed DOFs are short of their targets (predicting_).
   Eigen::VectorXd predictor_;
   bool predicting_ = false;
+  std::vector<std::uint8_t> deleted_;  // per connector: deleted by damage (§7.4)
+  std::vector<std::string> events_;
 };
 
 }  // namespace clinch

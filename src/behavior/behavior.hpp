@@ -47,6 +47,10 @@ struct BehaviorInput {
   // its active constraints (constrained and RIGID components, stops, locks, connector motions),
   // 0 elsewhere. Set only for a law that needs_connector_forces().
   const Vector6* connector_forces = nullptr;
+  // The trial history of the law right before this one and its layout (empty for the first):
+  // damage reads the equivalent plastic motion of a coupled plasticity there (behaviors.md §7.1).
+  std::span<const double> history_below = {};
+  std::span<const HistoryVariable> layout_below = {};
 };
 
 struct BehaviorOutput {
@@ -80,6 +84,9 @@ class Behavior {
   // force_tangent, and the element's tangent is unsymmetric.
   virtual bool needs_connector_forces() const { return false; }
   virtual ForceKind force_kind() const { return ForceKind::Elastic; }
+  // True when the committed `history` says the element is deleted (damage, behaviors.md §7.4):
+  // it then contributes no force, no stiffness and no constraint rows.
+  virtual bool deletes_element(std::span<const double> /*history*/) const { return false; }
   virtual IntegrationStatus integrate(const BehaviorInput& in, BehaviorOutput& out) const = 0;
 
   std::size_t history_size() const { return history_layout().size(); }

@@ -21,8 +21,8 @@ void validate_history(Model& model, DiagnosticSink& sink);
 
 void validate_model(Model& model, DiagnosticSink& sink);
 
-// Errors for what `clinch run` cannot run yet although validate_model accepts it (damage
-// initiation, connector failure). `clinch check` and `clinch run` both call it after reading, so
+// Errors for what `clinch run` cannot run yet although validate_model accepts it (FORCE damage
+// beside friction or RIGID elasticity). `clinch check` and `clinch run` both call it after reading, so
 // that check never passes a deck that run refuses; tests of the validation alone do not.
 void report_run_refusals(const Model& model, DiagnosticSink& sink);
 

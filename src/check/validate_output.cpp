@@ -44,7 +44,8 @@ bool produces(const BehaviorFeatures& f, OutputProducer producer) {
     case OutputProducer::PlasticMotionCriterion:
       return f.plastic_motion_criterion;
     case OutputProducer::StopsOrLocks:
-      return f.stops_or_locks;
+      // CSLST is 4 on every component of an element deleted by damage (output-variables.md §2).
+      return f.stops_or_locks || f.damage;
     case OutputProducer::Friction:
       return f.friction;
   }

@@ -1,6 +1,7 @@
 // What `clinch run` cannot run yet although `clinch check` validates it (README, docs/decisions.md
-// "Behaviours not yet run"): reported by both commands, at the keyword, so that `check` never
-// passes a deck that `run` then refuses, and the refusal names file, line and column.
+// "Behaviours not yet run": FORCE damage beside friction or RIGID): reported by both commands, so
+// that `check` never passes a deck that `run` then refuses, and the refusal names file, line and
+// column.
 #include <fmt/format.h>
 
 #include "base/diagnostic.hpp"
@@ -8,6 +9,16 @@
 #include "src/model/model.hpp"
 
 namespace clinch {
+namespace {
+
+bool has_rigid_elasticity(const ConnectorBehavior& behavior) {
+  for (const ConnectorElasticity& e : behavior.elasticities) {
+    if (e.kind == ConnectorElasticity::Kind::Rigid) return true;
+  }
+  return false;
+}
+
+}  // namespace
 
 void report_run_refusals(const Model& model, DiagnosticSink& sink) {
   const auto& behaviors = model.behaviors.behaviors;
@@ -28,11 +39,16 @@ void report_run_refusals(const Model& model, DiagnosticSink& sink) {
           .notes.push_back(
               {behavior.loc, fmt::format("in connector behavior '{}'", behavior.name.display)});
     };
-    if (!behavior.damage_initiations.empty()) {
-      refuse(behavior.damage_initiations.front().loc, "*CONNECTOR DAMAGE INITIATION");
-    }
-    if (!behavior.failures.empty()) {
-      refuse(behavior.failures.front().loc, "*CONNECTOR FAILURE");
+    for (const DamageInitiation& d : behavior.damage_initiations) {
+      if (!d.valid) continue;
+      // The FORCE criterion reads the total force (behaviors.md §7.1): the damage law sees the
+      // elastic-plastic force below it and the constraint forces, but friction comes after it
+      // in the stack, and a RIGID component's force is a multiplier it cannot degrade.
+      if (d.criterion == DamageInitiation::Criterion::Force &&
+          (!behavior.frictions.empty() || has_rigid_elasticity(behavior))) {
+        refuse(d.criterion_loc,
+               "CRITERION=FORCE in a behavior that also has friction or RIGID elasticity");
+      }
     }
   }
 }

@@ -52,7 +52,8 @@ struct Orientation {
   bool used = false;  // referenced by a section or spring (W0501 otherwise)
 };
 
-// *SECTION CONTROLS (keywords.md §5). v1 accepts only the values that match behaviors.md §7.4.
+// *SECTION CONTROLS (keywords.md §5): how damage ends in the connectors of the sections that name
+// them (behaviors.md §7.4): deletion, the largest damage, viscous regularisation.
 struct SectionControls {
   Name name;
   SourceLoc keyword_loc;

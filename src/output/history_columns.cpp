@@ -16,12 +16,15 @@ std::string set_label(const TargetRef& set, bool element) {
 }
 
 // Connector quantities of output-variables.md §2 that clinch run produces; every other connector
-// identifier (damage, velocities) is 0 for the behaviours a run accepts.
+// identifier (velocities) is 0 for the behaviours a run accepts.
 double connector_value(const ConnectorOutput& out, const std::string& variable, int component) {
   if (variable == "CUPEQ" && component == 0) return out.scalar_equivalent_plastic();
-  // friction.md §6: the scalar outputs of a coupled friction definition.
-  if (variable == "CUPEQC" || variable == "CSFC" || variable == "CNFC" || variable == "CASUC") {
-    return out.history_value(variable, 0);
+  // friction.md §6: the scalar outputs of a coupled friction definition. Damage (behaviors.md
+  // §7): CDMG and the criteria, as scalars (component 0), per component and coupled.
+  if (variable == "CUPEQC" || variable == "CSFC" || variable == "CNFC" || variable == "CASUC" ||
+      variable == "CDMG" || variable == "CDIF" || variable == "CDIM" || variable == "CDIP" ||
+      variable == "CDIFC" || variable == "CDIMC" || variable == "CDIPC") {
+    return out.history_value(variable, component);
   }
   if (component < 1) return 0.0;
   const int i = component - 1;
@@ -149,6 +152,11 @@ std::vector<HistoryColumns::Request> HistoryColumns::expand_step(
                  : BehaviorFeatures{};
       std::vector<std::string> variables = {"CTF", "CU"};
       if (features.plasticity) variables.insert(variables.end(), {"CUP", "CUPEQ"});
+      // Damage: CDMG and the criteria in use, as scalars (§4).
+      if (features.damage) variables.push_back("CDMG");
+      if (features.force_criterion) variables.push_back("CDIF");
+      if (features.motion_criterion) variables.push_back("CDIM");
+      if (features.plastic_motion_criterion) variables.push_back("CDIP");
       bool stops = !r.locks.empty();
       stops |= r.stops != nullptr;
       if (stops) variables.insert(variables.end(), {"CRF", "CSLST"});
@@ -157,7 +165,8 @@ std::vector<HistoryColumns::Request> HistoryColumns::expand_step(
       for (const std::string& v : variables) {
         OutputIdentifier id;
         id.variable = v;
-        id.components = v == "CUPEQ" ? 0 : 0b111111;  // the scalar CUPEQ (§1.2)
+        const bool scalar = v == "CUPEQ" || v == "CDMG" || v == "CDIF" || v == "CDIM" || v == "CDIP";
+        id.components = scalar ? 0 : 0b111111;  // the scalars of §1.2
         element_columns(id, {e}, request, false, false, "");
       }
     }

@@ -246,6 +246,22 @@ class Driver {
                                            total_time_ + dt, new_time, dt};
         if (!converged || smaller) out_.status.write_attempt(status_line);
         if (!outputs_written(step_number, increment + 1)) return false;
+        // §5.3: a failure criterion met on the converged state releases its components; the
+        // same increment is then solved again (an attempt of its own, with the same time).
+        if (converged && !smaller) {
+          const std::vector<std::string> failures = problem_.release_failed_components();
+          if (!failures.empty()) {
+            for (const std::string& f : failures) {
+              out_.log.info(fmt::format("step {} increment {}: {}; the increment is solved again",
+                                        step_number, increment + 1, f));
+            }
+            IncrementAttempt redone = status_line;
+            redone.cut_back = true;
+            out_.status.write_attempt(redone);
+            problem_.revert();
+            continue;
+          }
+        }
         if (converged && !smaller) {
           problem_.commit();
           criteria_.accept_increment(report.iterations.back());
@@ -267,6 +283,9 @@ class Driver {
           // A lock engages at the converged state; its row shows the unlocked state
           // (behaviors.md §5.2, example E5).
           problem_.end_increment();
+          for (const std::string& event : problem_.take_events()) {
+            out_.log.info(fmt::format("step {} increment {}: {}", step_number, increment, event));
+          }
           out_.progress.update(step_number, increment, total_time_);
           if (!procedure.direct) {
             // keywords.md §16: D_B after a hard increment, D_D after two easy ones.
@@ -283,6 +302,7 @@ class Driver {
           }
           break;
         }
+        const std::string note = smaller ? std::string() : problem_.failure_note(report.failed_equation);
         problem_.revert();
         std::string reason = smaller ? request.message : report.message;
         const bool singular = !smaller && report.outcome == NewtonOutcome::SolverFailed;
@@ -293,7 +313,9 @@ class Driver {
         // table with CONSTANT extrapolation): smaller increments are tried as for any failed
         // attempt (principle 7). When none helps, the singular DOF is the reason that stands.
         const auto give_up = [&](std::string why) {
-          return fail(singular ? reason : std::move(why), step_number, increment + 1);
+          std::string stated = singular ? reason : std::move(why);
+          if (!note.empty()) stated += "; " + note;
+          return fail(std::move(stated), step_number, increment + 1);
         };
         if (!smaller && report.outcome == NewtonOutcome::EvaluationFailed && procedure.direct) {
           return fail(reason, step_number, increment + 1);
@@ -319,6 +341,9 @@ class Driver {
       }
     }
     conditions_.end_step(period, total_time_);
+    for (const std::string& line : problem_.step_summary()) {
+      out_.log.info(fmt::format("step {}: {}", step_number, line));
+    }
     return true;
   }
 
