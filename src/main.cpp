@@ -108,7 +108,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 1024));
   study->add_option("--columns", study_options.columns,
                     "estimate only the history columns whose whole name matches this regular "
-                    "expression (RE2 syntax; default: all)");
+                    "expression (RE2 syntax; default: all but the status codes CSLST and "
+                    "CSLIPST)");
   study->add_flag("--no-plot", [&](std::int64_t) { study_options.plot = false; },
                   "skip the work-precision plot (it needs python3 with matplotlib)");
   study->add_flag("--quiet", study_options.quiet, "print nothing but warnings and errors");

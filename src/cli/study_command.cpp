@@ -26,6 +26,13 @@ namespace fs = std::filesystem;
 
 constexpr int kExitStudied = 0, kExitDeckErrors = 1, kExitTooFewRuns = 2, kExitUsage = 3;
 
+// Stop/lock and stick/slip status columns hold codes, not quantities that converge with the
+// increment size: a status that switches one increment later would read as a 100 % error. They
+// are left out unless --columns asks for them.
+bool is_status_column(const std::string& name) {
+  return name.rfind("CSLST", 0) == 0 || name.rfind("CSLIPST", 0) == 0;
+}
+
 std::string progress_text(const std::vector<SettingOutcome>& outcomes,
                           const std::vector<LadderSetting>& settings, double seconds) {
   std::size_t done = 0;
@@ -162,8 +169,9 @@ int run_study(const StudyOptions& options) {
     std::vector<std::string> names;
     const CsvTable& finest = tables.back();
     for (std::size_t c = 4; c < finest.columns.size(); ++c) {
-      if (!pattern || re2::RE2::FullMatch(finest.columns[c], *pattern)) {
-        names.push_back(finest.columns[c]);
+      const std::string& name = finest.columns[c];
+      if (pattern ? re2::RE2::FullMatch(name, *pattern) : !is_status_column(name)) {
+        names.push_back(name);
       }
     }
     if (names.empty()) {

@@ -188,15 +188,19 @@ def convergence(page, data):
     cut = {(a["step"], a["increment"], a["attempt"]) for a in attempts if a["cut_back"]}
     fig = Figure(figsize=(7.2, 3.8))
     ax = fig.add_subplot()
-    x, residual, correction, spans = [], [], [], []
+    x, residual, correction, spans, slot = [], [], [], [], 0
     for key in keys:
         records = by_attempt.get(key, [])
-        first = len(x) + 1
+        first = slot + 1
         for r in records or [None]:
-            x.append(len(x) + 1)
+            x.append(slot := slot + 1)
             residual.append(r["residual"] if r and r["residual"] > 0.0 else math.nan)
             correction.append(r["correction"] if r and r["correction"] > 0.0 else math.nan)
-        spans.append((key, first, len(x)))
+        spans.append((key, first, slot))
+        # A gap between attempts: each attempt's iterations make their own line.
+        x.append(slot + 0.5)
+        residual.append(math.nan)
+        correction.append(math.nan)
     ax.plot(x, residual, "o-", markersize=3, label="residual norm", gid="norm-residual")
     ax.plot(x, correction, "s--", markersize=3, label="correction norm", gid="norm-correction")
     cutbacks = 0

@@ -7,7 +7,8 @@ mapping, run at two fine increment counts and extrapolated to zero increment (Ri
 order, the order of backward Euler): spot_weld_paths/reference.py (nested bisections) and
 plastic_lib.QuadraticCoupled (scalar bisection) for plastic_coupled_circle, whose element 1
 (circle, perfectly plastic) is also checked against the closed form of the continuous radial
-path, tan(theta/2 + pi/4) = tan(theta0/2 + pi/4) exp(k du2 / F_y).
+path, tan(theta/2 + pi/4) = tan(theta0/2 + pi/4) exp(k du2 / F_y). friction_square_path has a
+closed form along the whole path (decks/bench/friction_work_precision.py).
 
 True and estimated errors are measured as the study measures them: at the times of the
 coarsest setting, the largest |value - reference| of a column over its largest |value|, and the
@@ -92,8 +93,33 @@ def circle_closed_form_check(names, limit_rows):
     assert error < 1e-5, error
 
 
+def friction_rows(increments):
+    """friction_square_path in closed form (decks/bench/friction_work_precision.py exact_side:
+    stick until |f| reaches F_lim, then the force turns towards the side's direction with
+    tan(theta/2) decaying as exp(-(k/F_lim) s)), at `increments` points per step; exact at
+    every point, so no extrapolation is needed. Step 1 presses (no tangential motion), steps
+    2-9 drive node b around the square twice."""
+    sys.path.insert(0, os.path.join(VERIFICATION, "..", "bench"))
+    import friction_work_precision as wp
+    k, flim, side = 1.0e4, 0.25 * 410.0, 0.02
+    wp.STICK, wp.CAPACITY = k, flim
+    corners = [(0.0, 0.0)] + [(side, 0.0), (side, side), (0.0, side), (0.0, 0.0)] * 2
+    names = ["CSF2@40", "CSF3@40", "CSF2@41", "CSF3@41", "CASUC@41"]
+    rows = [(i / increments, [0.0] * len(names)) for i in range(increments + 1)]
+    f, gamma = (0.0, 0.0), 0.0
+    for n, (p, q) in enumerate(zip(corners, corners[1:]), start=1):
+        length = math.hypot(q[0] - p[0], q[1] - p[1])
+        e = ((q[0] - p[0]) / length, (q[1] - p[1]) / length)
+        for i in range(1, increments + 1):
+            fi, gi = wp.exact_side(f, gamma, e, length * i / increments)
+            rows.append((n + i / increments, [fi[0], fi[1], fi[0], fi[1], gi]))
+        f, gamma = fi, gi
+    return names, rows
+
+
 CASES = {
     "spot_weld_paths": (spot_weld_rows, 1024, None),
+    "friction_square_path": (friction_rows, 0, None),
     "plastic_coupled_circle": (circle_rows, 4096, circle_closed_form_check),
 }
 
@@ -125,11 +151,14 @@ def main():
         estimates = {r["column"]: float(r["estimated_error"]) for r in csv.DictReader(f)
                      if r["setting"] == chosen["setting"]}
 
-    names, rows_fine = rows_of(fine)
-    _, rows_half = rows_of(fine // 2)
-    half_at = {round(t, 12): v for t, v in rows_half}
-    limit = [(t, [2.0 * a - b for a, b in zip(v, half_at[round(t, 12)])])
-             for t, v in rows_fine if round(t, 12) in half_at]
+    if fine == 0:  # a closed form along the whole path
+        names, limit = rows_of(64)
+    else:
+        names, rows_fine = rows_of(fine)
+        _, rows_half = rows_of(fine // 2)
+        half_at = {round(t, 12): v for t, v in rows_half}
+        limit = [(t, [2.0 * a - b for a, b in zip(v, half_at[round(t, 12)])])
+                 for t, v in rows_fine if round(t, 12) in half_at]
     if check:
         check(names, limit)
 
