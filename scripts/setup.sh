@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Installs what clinch needs on Debian 12 (as root: matplotlib draws the plots of `clinch study`
-# and `clinch report`, Chromium loads the report page in its test), makes OpenBLAS the BLAS and LAPACK that
+# Installs what clinch needs on Debian 12 (as root), makes OpenBLAS the BLAS and LAPACK that
 # SuiteSparse uses, and builds a Release build/clinch. Safe to run again: it installs only
-# what is missing and rebuilds incrementally.
+# what is missing and rebuilds incrementally. matplotlib draws the plots of `clinch study` and
+# `clinch report`; Chromium loads the report page in its test.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
