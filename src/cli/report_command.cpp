@@ -1,10 +1,10 @@
 #include "src/cli/report_command.hpp"
 
+#include <fmt/format.h>
+
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-
-#include <fmt/format.h>
 
 #include "src/output/csv_table.hpp"
 #include "src/output/iteration_log_reader.hpp"
@@ -35,12 +35,12 @@ std::optional<std::string> only_job(const fs::path& dir, std::string* error) {
     return std::nullopt;
   }
   if (jobs.size() != 1) {
-    *error = jobs.empty()
-                 ? fmt::format("'{}' holds no <job>.history.csv: is it a `clinch run --out` "
-                               "directory?",
-                               dir.string())
-                 : fmt::format("'{}' holds {} history tables: choose one with --job",
-                               dir.string(), jobs.size());
+    *error = jobs.empty() ? fmt::format(
+                                "'{}' holds no <job>.history.csv: is it a `clinch run --out` "
+                                "directory?",
+                                dir.string())
+                          : fmt::format("'{}' holds {} history tables: choose one with --job",
+                                        dir.string(), jobs.size());
     return std::nullopt;
   }
   return jobs.front();
@@ -97,8 +97,7 @@ int run_report(const ReportOptions& options) {
     std::ifstream probe(*options.study);
     std::string header;
     if (!probe || !std::getline(probe, header)) {
-      std::cerr << fmt::format("clinch: error: cannot read the study table '{}'\n",
-                               *options.study);
+      std::cerr << fmt::format("clinch: error: cannot read the study table '{}'\n", *options.study);
       return kExitUsage;
     }
     if (header.rfind("setting,scale,state,", 0) != 0) {
@@ -108,8 +107,7 @@ int run_report(const ReportOptions& options) {
     }
     inputs.study_csv = fs::absolute(*options.study).string();
   }
-  const std::string page =
-      options.output.value_or((dir / (*job + ".report.html")).string());
+  const std::string page = options.output.value_or((dir / (*job + ".report.html")).string());
   const std::string data_path = page + ".json";
   {
     std::ofstream out(data_path);

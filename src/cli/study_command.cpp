@@ -1,13 +1,13 @@
 #include "src/cli/study_command.hpp"
 
+#include <fmt/format.h>
+#include <re2/re2.h>
+
 #include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <thread>
-
-#include <fmt/format.h>
-#include <re2/re2.h>
 
 #include "parser/deck_reader.hpp"
 #include "parser/diagnostic_render.hpp"
@@ -41,7 +41,8 @@ std::string progress_text(const std::vector<SettingOutcome>& outcomes,
     if (outcomes[i].state == SettingState::Completed || outcomes[i].state == SettingState::Failed) {
       ++done;
     }
-    if (outcomes[i].state == SettingState::Running) running.push_back(scale_text(settings[i].scale));
+    if (outcomes[i].state == SettingState::Running)
+      running.push_back(scale_text(settings[i].scale));
   }
   std::string text = fmt::format("study: {} of {} settings done", done, outcomes.size());
   if (!running.empty()) {
@@ -80,9 +81,10 @@ int run_study(const StudyOptions& options) {
   if (options.columns) {
     pattern = compile_column_pattern(*options.columns, &error);
     if (!pattern) {
-      std::cerr << fmt::format("clinch: error: --columns '{}' is not a valid regular expression: "
-                               "{}\n",
-                               *options.columns, error);
+      std::cerr << fmt::format(
+          "clinch: error: --columns '{}' is not a valid regular expression: "
+          "{}\n",
+          *options.columns, error);
       return kExitUsage;
     }
   }
@@ -108,8 +110,7 @@ int run_study(const StudyOptions& options) {
     out << scaled->text(scale);
     out.close();
     if (ec || !out) {
-      std::cerr << fmt::format("clinch: error: cannot write the scaled deck '{}'\n",
-                               deck.string());
+      std::cerr << fmt::format("clinch: error: cannot write the scaled deck '{}'\n", deck.string());
       return kExitUsage;
     }
     ladder.push_back({scale, deck.string(), dir.string(), job});
@@ -190,10 +191,11 @@ int run_study(const StudyOptions& options) {
   if (options.rtol) result.chosen = cheapest_setting(result, *options.rtol);
 
   if (!options.quiet) {
-    std::cout << fmt::format("{}: {} settings, increments scaled from 1 down to {} (ratio {:g}); "
-                             "runs in {}\n",
-                             deck_name, ladder.size(), scale_text(ladder.back().scale),
-                             options.ratio, work.string())
+    std::cout << fmt::format(
+                     "{}: {} settings, increments scaled from 1 down to {} (ratio {:g}); "
+                     "runs in {}\n",
+                     deck_name, ladder.size(), scale_text(ladder.back().scale), options.ratio,
+                     work.string())
               << render_study_table(result);
   }
   const std::string settings_csv = (work / (job + ".study.csv")).string();

@@ -1,9 +1,9 @@
 #include "src/output/iteration_log_reader.hpp"
 
+#include <fmt/format.h>
+
 #include <cstdio>
 #include <fstream>
-
-#include <fmt/format.h>
 
 namespace clinch {
 

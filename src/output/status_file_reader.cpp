@@ -1,9 +1,9 @@
 #include "src/output/status_file_reader.hpp"
 
+#include <fmt/format.h>
+
 #include <fstream>
 #include <sstream>
-
-#include <fmt/format.h>
 
 namespace clinch {
 
@@ -13,7 +13,9 @@ int StatusRecord::converged_increments() const {
   return n;
 }
 
-int StatusRecord::cutbacks() const { return static_cast<int>(attempts.size()) - converged_increments(); }
+int StatusRecord::cutbacks() const {
+  return static_cast<int>(attempts.size()) - converged_increments();
+}
 
 int StatusRecord::total_iterations() const {
   int n = 0;

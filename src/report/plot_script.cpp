@@ -1,5 +1,7 @@
 #include "src/report/plot_script.hpp"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <spawn.h>
 #include <sys/wait.h>
 
@@ -7,9 +9,6 @@
 #include <cstring>
 #include <filesystem>
 #include <optional>
-
-#include <fmt/format.h>
-#include <fmt/ranges.h>
 
 #include "src/study/ladder_runner.hpp"
 
@@ -73,9 +72,10 @@ bool run_plot_script(const std::string& script, const std::vector<std::string>& 
                      std::string* error) {
   const std::optional<fs::path> path = find_script(script);
   if (!path) {
-    *error = fmt::format("the plotting script '{}' is not installed next to clinch (looked in "
-                         "share/clinch and ../share/clinch beside {})",
-                         script, current_executable());
+    *error = fmt::format(
+        "the plotting script '{}' is not installed next to clinch (looked in "
+        "share/clinch and ../share/clinch beside {})",
+        script, current_executable());
     return false;
   }
   std::vector<std::string> full = args;
@@ -96,9 +96,10 @@ bool run_plot_script(const std::string& script, const std::vector<std::string>& 
     *error = fmt::format("{} {} failed with status {}", python, path->string(), status);
     return false;
   }
-  *error = fmt::format("cannot plot: python3 with matplotlib is needed (Debian: apt-get install "
-                       "python3-matplotlib; or set CLINCH_PYTHON); tried {}",
-                       fmt::join(tried, ", "));
+  *error = fmt::format(
+      "cannot plot: python3 with matplotlib is needed (Debian: apt-get install "
+      "python3-matplotlib; or set CLINCH_PYTHON); tried {}",
+      fmt::join(tried, ", "));
   return false;
 }
 

@@ -9,9 +9,12 @@ nlohmann::json table_json(const CsvTable& table) {
 
 const char* verdict_text(ColumnVerdict verdict) {
   switch (verdict) {
-    case ColumnVerdict::Pass: return "pass";
-    case ColumnVerdict::Fail: return "fail";
-    case ColumnVerdict::Missing: return "missing";
+    case ColumnVerdict::Pass:
+      return "pass";
+    case ColumnVerdict::Fail:
+      return "fail";
+    case ColumnVerdict::Missing:
+      return "missing";
   }
   return "";
 }
@@ -60,8 +63,10 @@ nlohmann::json report_data(const ReportInputs& in) {
                                {"failed_rows", c.failed_rows},
                                {"compared_rows", c.compared_rows}};
       if (c.has_worst) {
-        column["worst"] = {{"total_time", c.total_time}, {"result", c.result},
-                           {"golden", c.golden},         {"difference", c.difference},
+        column["worst"] = {{"total_time", c.total_time},
+                           {"result", c.result},
+                           {"golden", c.golden},
+                           {"difference", c.difference},
                            {"allowed", c.allowed}};
       }
       columns.push_back(column);

@@ -4,11 +4,10 @@
 // the same code as `clinch compare`).
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "src/output/csv_table.hpp"
 #include "src/output/run_log.hpp"
@@ -20,7 +19,7 @@ namespace clinch {
 struct ReportInputs {
   std::string job;
   const CsvTable* history = nullptr;
-  const StatusRecord* status = nullptr;                  // null when the run left no .sta
+  const StatusRecord* status = nullptr;                      // null when the run left no .sta
   const std::vector<IterationRecord>* iterations = nullptr;  // null when it left no .log
   const CsvTable* golden = nullptr;
   const TableComparison* comparison = nullptr;  // with golden

@@ -1,9 +1,9 @@
 #include "src/study/convergence_estimate.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-
-#include <fmt/format.h>
 
 namespace clinch {
 namespace {
@@ -57,9 +57,9 @@ std::optional<StudyEstimate> estimate_errors(const std::vector<const CsvTable*>&
                  coarsest.columns.end());
   }
   // The order needs the three finest runs one ratio apart.
-  const bool consecutive =
-      runs >= 3 && std::abs(scales[runs - 3] / scales[runs - 2] / ratio - 1.0) < 1e-9 &&
-      std::abs(scales[runs - 2] / scales[runs - 1] / ratio - 1.0) < 1e-9;
+  const bool consecutive = runs >= 3 &&
+                           std::abs(scales[runs - 3] / scales[runs - 2] / ratio - 1.0) < 1e-9 &&
+                           std::abs(scales[runs - 2] / scales[runs - 1] / ratio - 1.0) < 1e-9;
   estimate.worst_difference.assign(runs, 0.0);
   estimate.worst_estimated.assign(runs, 0.0);
   estimate.worst_column.assign(runs, "");
@@ -105,7 +105,7 @@ std::optional<StudyEstimate> estimate_errors(const std::vector<const CsvTable*>&
       } else if (d1 > d2) {
         c.order = std::log(d1 / d2) / std::log(ratio);
         c.status = c.order >= kMinOrder && c.order <= kMaxOrder ? OrderStatus::Observed
-                                                                 : OrderStatus::NotObserved;
+                                                                : OrderStatus::NotObserved;
       } else {
         c.status = OrderStatus::NotObserved;
       }

@@ -9,9 +9,9 @@
 //
 // With d1 = |v(F-2) - v(F-1)| and d2 = |v(F-1) - v(F)| (largest over the times), the observed
 // order is p = log(d1/d2) / log(ratio). Where p is plausible (kMinOrder..kMaxOrder), the limit is
-// v(F) + (v(F) - v(F-1)) / (ratio^p - 1) and each run's estimated error is its largest distance from
-// that limit. Elsewhere the estimate is the difference from the finest run, a lower bound that the
-// study flags.
+// v(F) + (v(F) - v(F-1)) / (ratio^p - 1) and each run's estimated error is its largest distance
+// from that limit. Elsewhere the estimate is the difference from the finest run, a lower bound that
+// the study flags.
 #pragma once
 
 #include <cstddef>
@@ -29,24 +29,24 @@ inline constexpr double kMaxOrder = 10.0;
 inline constexpr double kRoundOff = 1e-10;
 
 enum class OrderStatus {
-  Observed,      // p plausible: Richardson estimate
-  Agree,         // the finest runs agree to round-off: the finest run's error is taken as zero
-  NotObserved,   // differences do not shrink at a plausible rate: the estimate is a lower bound
-  TooFewRuns,    // fewer than three consecutive completed runs at the fine end
-  ZeroColumn,    // the column is zero in every run: no relative error
+  Observed,     // p plausible: Richardson estimate
+  Agree,        // the finest runs agree to round-off: the finest run's error is taken as zero
+  NotObserved,  // differences do not shrink at a plausible rate: the estimate is a lower bound
+  TooFewRuns,   // fewer than three consecutive completed runs at the fine end
+  ZeroColumn,   // the column is zero in every run: no relative error
 };
 
 struct ColumnEstimate {
   std::string name;
-  double scale = 0.0;                 // largest |value| over runs and times
+  double scale = 0.0;  // largest |value| over runs and times
   OrderStatus status = OrderStatus::TooFewRuns;
-  double order = 0.0;                 // p when Observed
-  std::vector<double> difference;     // per run: largest |v - v(finest)| / scale
-  std::vector<double> estimated;      // per run: estimated error / scale
+  double order = 0.0;              // p when Observed
+  std::vector<double> difference;  // per run: largest |v - v(finest)| / scale
+  std::vector<double> estimated;   // per run: estimated error / scale
 };
 
 struct StudyEstimate {
-  std::vector<double> times;          // the comparison times (the coarsest run's rows)
+  std::vector<double> times;  // the comparison times (the coarsest run's rows)
   std::vector<ColumnEstimate> columns;
   // Per run, the worst column: its relative difference from the finest run, the estimated
   // error, and whether every column's estimate rests on an observed order (or on agreement).

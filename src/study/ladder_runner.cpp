@@ -1,6 +1,7 @@
 #include "src/study/ladder_runner.hpp"
 
 #include <fcntl.h>
+#include <fmt/format.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -10,8 +11,6 @@
 #include <cstring>
 #include <filesystem>
 #include <thread>
-
-#include <fmt/format.h>
 
 extern char** environ;
 
@@ -41,8 +40,8 @@ std::optional<pid_t> spawn_run(const std::string& clinch, const LadderSetting& s
   posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, out.c_str(),
                                    O_WRONLY | O_CREAT | O_TRUNC, 0644);
   posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
-  std::vector<std::string> args = {clinch, "run", "--quiet", "--out", s.out_dir,
-                                   "--job", s.job,  s.deck};
+  std::vector<std::string> args = {clinch,    "run",   "--quiet", "--out",
+                                   s.out_dir, "--job", s.job,     s.deck};
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);

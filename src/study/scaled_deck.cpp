@@ -1,10 +1,10 @@
 #include "src/study/scaled_deck.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-
-#include <fmt/format.h>
 
 namespace clinch {
 namespace {
@@ -58,9 +58,10 @@ std::optional<ScaledDeck> ScaledDeck::prepare(const Model& model, const SourceMa
     start = end + 1;
   }
   const auto outside_deck = [&](SourceLoc loc, std::string_view what) {
-    *error = fmt::format("{}: error: {} lies in an included file: `clinch study` scales the "
-                         "*STATIC lines of the deck file itself (move the step into it)",
-                         sources.format(loc), what);
+    *error = fmt::format(
+        "{}: error: {} lies in an included file: `clinch study` scales the "
+        "*STATIC lines of the deck file itself (move the step into it)",
+        sources.format(loc), what);
   };
   for (std::size_t i = 0; i < model.history.steps.size(); ++i) {
     const Step& step = model.history.steps[i];
@@ -87,8 +88,7 @@ std::optional<ScaledDeck> ScaledDeck::prepare(const Model& model, const SourceMa
       const std::string& line = deck.lines_[step.loc.line - 1];
       const std::size_t comma = line.find(',', step.loc.column - 1);
       inc.line = step.loc.line;
-      inc.begin = inc.end =
-          (comma == std::string::npos ? content_length(line) : comma) + 1;
+      inc.begin = inc.end = (comma == std::string::npos ? content_length(line) : comma) + 1;
     }
     deck.edits_.push_back(inc);
     // The data line: replaced whole, or added after the keyword line and its continuations.
@@ -138,7 +138,7 @@ std::string ScaledDeck::text(double scale) const {
         replacement = it->begin == it->end ? fmt::format(", INC={}", scaled.max_increments)
                                            : fmt::format("{}", scaled.max_increments);
       } else {
-        replacement = it->begin == it->end ? "\n" + static_data_line(scaled)
+        replacement = it->begin == it->end ? fmt::format("\n{}", static_data_line(scaled))
                                            : static_data_line(scaled);
       }
     }

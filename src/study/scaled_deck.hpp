@@ -42,12 +42,12 @@ class ScaledDeck {
 
  private:
   struct Edit {
-    std::size_t line = 0;       // 1-based
-    std::size_t begin = 0;      // 1-based column of the first replaced character
-    std::size_t end = 0;        // 1-based column past the last one (begin == end: insertion)
-    std::string replacement;    // may depend on the scale: see Kind
+    std::size_t line = 0;     // 1-based
+    std::size_t begin = 0;    // 1-based column of the first replaced character
+    std::size_t end = 0;      // 1-based column past the last one (begin == end: insertion)
+    std::string replacement;  // may depend on the scale: see Kind
     enum class Kind { Fixed, StaticData, StepInc } kind = Kind::Fixed;
-    std::size_t step = 0;       // for StaticData and StepInc
+    std::size_t step = 0;  // for StaticData and StepInc
   };
 
   std::vector<std::string> lines_;  // the deck's lines without their line ends
@@ -56,7 +56,7 @@ class ScaledDeck {
     int max_increments = 0;
   };
   std::vector<StepIncrements> steps_;
-  std::vector<Edit> edits_;         // sorted by (line, begin)
+  std::vector<Edit> edits_;  // sorted by (line, begin)
 };
 
 }  // namespace clinch

@@ -1,8 +1,8 @@
 #include "src/study/study_result.hpp"
 
-#include <cmath>
-
 #include <fmt/format.h>
+
+#include <cmath>
 
 namespace clinch {
 
@@ -23,7 +23,8 @@ std::optional<std::size_t> cheapest_setting(const StudyResult& result, double rt
     }
     const StudySetting& b = result.settings[*best];
     const int work = setting_work(*s.status), best_work = setting_work(*b.status);
-    if (work < best_work || (work == best_work && s.outcome.wall_seconds < b.outcome.wall_seconds)) {
+    if (work < best_work ||
+        (work == best_work && s.outcome.wall_seconds < b.outcome.wall_seconds)) {
       best = i;
     }
   }

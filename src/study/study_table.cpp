@@ -1,34 +1,41 @@
 #include "src/study/study_table.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <fstream>
-
-#include <fmt/format.h>
 
 namespace clinch {
 namespace {
 
 std::string state_text(const StudySetting& s) {
   switch (s.outcome.state) {
-    case SettingState::Completed: return "COMPLETED";
+    case SettingState::Completed:
+      return "COMPLETED";
     case SettingState::Failed:
       if (s.status && !s.status->ending.empty()) return s.status->ending;
       if (!s.outcome.note.empty()) return "FAILED: " + s.outcome.note;
       return fmt::format("FAILED: clinch run exited with {} (see {})", s.outcome.exit_code,
                          s.history.substr(0, s.history.rfind('/')) + "/run.out");
     case SettingState::Running:
-    case SettingState::NotRun: break;
+    case SettingState::NotRun:
+      break;
   }
   return s.outcome.note.empty() ? "not run" : s.outcome.note;
 }
 
 const char* order_text(OrderStatus status) {
   switch (status) {
-    case OrderStatus::Observed: return "observed";
-    case OrderStatus::Agree: return "agree";
-    case OrderStatus::NotObserved: return "not-observed";
-    case OrderStatus::TooFewRuns: return "too-few-runs";
-    case OrderStatus::ZeroColumn: return "zero-column";
+    case OrderStatus::Observed:
+      return "observed";
+    case OrderStatus::Agree:
+      return "agree";
+    case OrderStatus::NotObserved:
+      return "not-observed";
+    case OrderStatus::TooFewRuns:
+      return "too-few-runs";
+    case OrderStatus::ZeroColumn:
+      return "zero-column";
   }
   return "";
 }
@@ -55,14 +62,18 @@ bool write_file(const std::string& path, const std::string& text, std::string* e
 }  // namespace
 
 std::string render_study_table(const StudyResult& result) {
-  std::string out = fmt::format(
-      "{:>7} {:>7} {:>6} {:>7} {:>8} {:>6} {:>9} {:>11} {:>11}  {:<16} {}\n", "setting",
-      "scale", "incs", "iters", "cutbacks", "work", "wall s", "vs finest", "est. error", "worst column", "status");
-  const StudyEstimate* e = result.estimate ? &*result.estimate : nullptr;
+  std::string out =
+      fmt::format("{:>7} {:>7} {:>6} {:>7} {:>8} {:>6} {:>9} {:>11} {:>11}  {:<16} {}\n", "setting",
+                  "scale", "incs", "iters", "cutbacks", "work", "wall s", "vs finest", "est. error",
+                  "worst column", "status");
+  // One completed setting has nothing to be compared with.
+  const StudyEstimate* e = result.estimate && result.estimate->worst_difference.size() >= 2
+                               ? &*result.estimate
+                               : nullptr;
   for (std::size_t i = 0; i < result.settings.size(); ++i) {
     const StudySetting& s = result.settings[i];
-    std::string incs = "-", iters = "-", cuts = "-", work = "-", wall = "-", diff = "-",
-                est = "-", worst = "";
+    std::string incs = "-", iters = "-", cuts = "-", work = "-", wall = "-", diff = "-", est = "-",
+                worst = "";
     if (s.status) {
       incs = fmt::format("{}", s.status->converged_increments());
       iters = fmt::format("{}", s.status->total_iterations());
@@ -107,10 +118,10 @@ std::string render_study_table(const StudyResult& result) {
       counts[static_cast<int>(OrderStatus::TooFewRuns)],
       counts[static_cast<int>(OrderStatus::ZeroColumn)]);
   if (least_converged != nullptr) {
-    out += fmt::format("least converged column: {}, observed order {:.2f}, estimated error of the "
-                       "finest setting {:.2e}\n",
-                       least_converged->name, least_converged->order,
-                       least_converged->estimated.back());
+    out += fmt::format(
+        "least converged column: {}, observed order {:.2f}, estimated error of the "
+        "finest setting {:.2e}\n",
+        least_converged->name, least_converged->order, least_converged->estimated.back());
   }
   if (result.rtol) {
     if (result.chosen) {
@@ -119,13 +130,13 @@ std::string render_study_table(const StudyResult& result) {
           "--rtol {:g}: setting {} (scale {}, {} increments, {} iterations, work {}), estimated "
           "error {:.2e}{}\n",
           *result.rtol, *result.chosen + 1, scale_text(s.scale), s.status->converged_increments(),
-          s.status->total_iterations(), setting_work(*s.status), e->worst_estimated[static_cast<std::size_t>(s.run)],
+          s.status->total_iterations(), setting_work(*s.status),
+          e->worst_estimated[static_cast<std::size_t>(s.run)],
           e->estimate_is_bound[static_cast<std::size_t>(s.run)]
               ? " (a lower bound: some columns show no convergence order)"
               : "");
     } else {
-      out += fmt::format("--rtol {:g}: no setting has an estimated error below it\n",
-                         *result.rtol);
+      out += fmt::format("--rtol {:g}: no setting has an estimated error below it\n", *result.rtol);
     }
   }
   return out;
@@ -143,23 +154,23 @@ bool write_settings_csv(const StudyResult& result, const std::string& path, std:
         s.outcome.state == SettingState::Completed || s.outcome.state == SettingState::Failed;
     const bool estimated = e != nullptr && s.run >= 0;
     const auto r = static_cast<std::size_t>(std::max(0, s.run));
-    text += fmt::format(
-        "{},{:.17g},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", i + 1, s.scale,
-        s.outcome.state == SettingState::Completed ? "completed"
-        : s.outcome.state == SettingState::Failed  ? "failed"
-                                                   : "not-run",
-        ran ? fmt::format("{}", s.outcome.exit_code) : "",
-        ran ? fmt::format("{:.6g}", s.outcome.wall_seconds) : "",
-        s.status ? fmt::format("{}", s.status->converged_increments()) : "",
-        s.status ? fmt::format("{}", s.status->total_iterations()) : "",
-        s.status ? fmt::format("{}", s.status->cutbacks()) : "",
-        s.status ? fmt::format("{}", setting_work(*s.status)) : "",
-        estimated ? fmt::format("{:.17g}", e->worst_difference[r]) : "",
-        estimated ? fmt::format("{:.17g}", e->worst_estimated[r]) : "",
-        estimated ? (e->estimate_is_bound[r] ? "1" : "0") : "",
-        estimated ? csv_field(e->worst_column[r]) : "", result.chosen == i ? "1" : "0",
-        result.rtol ? fmt::format("{:g}", *result.rtol) : "", csv_field(s.deck),
-        csv_field(state_text(s)));
+    text +=
+        fmt::format("{},{:.17g},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", i + 1, s.scale,
+                    s.outcome.state == SettingState::Completed ? "completed"
+                    : s.outcome.state == SettingState::Failed  ? "failed"
+                                                               : "not-run",
+                    ran ? fmt::format("{}", s.outcome.exit_code) : "",
+                    ran ? fmt::format("{:.6g}", s.outcome.wall_seconds) : "",
+                    s.status ? fmt::format("{}", s.status->converged_increments()) : "",
+                    s.status ? fmt::format("{}", s.status->total_iterations()) : "",
+                    s.status ? fmt::format("{}", s.status->cutbacks()) : "",
+                    s.status ? fmt::format("{}", setting_work(*s.status)) : "",
+                    estimated ? fmt::format("{:.17g}", e->worst_difference[r]) : "",
+                    estimated ? fmt::format("{:.17g}", e->worst_estimated[r]) : "",
+                    estimated ? (e->estimate_is_bound[r] ? "1" : "0") : "",
+                    estimated ? csv_field(e->worst_column[r]) : "", result.chosen == i ? "1" : "0",
+                    result.rtol ? fmt::format("{:g}", *result.rtol) : "", csv_field(s.deck),
+                    csv_field(state_text(s)));
   }
   return write_file(path, text, error);
 }

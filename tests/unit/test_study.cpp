@@ -2,14 +2,13 @@
 // text otherwise kept, included files read from where they are) and the error estimates
 // (differences from the finest run, observed order, Richardson limit) on tables whose exact
 // error is known.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
-
-#include <fmt/format.h>
 
 #include "parser/deck_reader.hpp"
 #include "src/output/status_file_reader.hpp"
