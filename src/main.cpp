@@ -136,6 +136,10 @@ int main(int argc, char** argv) {
       ->check(tolerance)
       ->capture_default_str();
   report->add_option("--study", report_options.study, "a <job>.study.csv of `clinch study`");
+  report->add_option("--connectors", report_options.max_connectors,
+                     "draw the first N connectors and nodes of the history table")
+      ->check(CLI::Range(1, 1000000))
+      ->capture_default_str();
   report->add_option("--output,-o", report_options.output,
                      "the page to write (default: RUN_DIR/<job>.report.html)");
   report->add_flag("--quiet", report_options.quiet, "print nothing but warnings and errors");

@@ -76,6 +76,7 @@ int run_report(const ReportOptions& options) {
 
   ReportInputs inputs;
   inputs.job = *job;
+  inputs.max_connectors = options.max_connectors;
   inputs.history = &*history;
   inputs.status = status ? &*status : nullptr;
   inputs.iterations = iterations ? &*iterations : nullptr;

@@ -24,6 +24,7 @@ const char* verdict_text(ColumnVerdict verdict) {
 nlohmann::json report_data(const ReportInputs& in) {
   nlohmann::json data;
   data["job"] = in.job;
+  data["max_connectors"] = in.max_connectors;
   data["history"] = table_json(*in.history);
   nlohmann::json attempts = nlohmann::json::array();
   if (in.status != nullptr) {

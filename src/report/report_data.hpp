@@ -25,6 +25,7 @@ struct ReportInputs {
   const TableComparison* comparison = nullptr;  // with golden
   CompareOptions compare_options;
   std::optional<std::string> study_csv;
+  int max_connectors = 0;  // connectors (and nodes) drawn, in history order
 };
 
 nlohmann::json report_data(const ReportInputs& inputs);

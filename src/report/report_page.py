@@ -339,16 +339,20 @@ def main():
     connectors, nodes = {}, {}
     for c in columns:
         (nodes if c.is_node else connectors).setdefault(c.where, []).append(c)
-    if connectors:
-        page.add("<h2>Connectors</h2>")
-    for where, members in connectors.items():
-        page.add(f"<h3>connector {html.escape(where)}</h3>")
-        force_motion(page, history, where, members)
-        time_histories(page, history, where, members, "connector")
-    if nodes:
-        page.add("<h2>Nodes</h2>")
-    for where, members in nodes.items():
-        time_histories(page, history, where, members, "node")
+    limit = data["max_connectors"]
+    for title, group, kind in (("Connectors", connectors, "connector"),
+                               ("Nodes", nodes, "node")):
+        if not group:
+            continue
+        page.add(f"<h2>{title}</h2>")
+        if len(group) > limit:
+            page.add(f"<p>{len(group)} {kind}s have history columns; the first {limit} are drawn "
+                     "(<code>clinch report --connectors N</code> draws more).</p>")
+        for where, members in list(group.items())[:limit]:
+            if kind == "connector":
+                page.add(f"<h3>connector {html.escape(where)}</h3>")
+                force_motion(page, history, where, members)
+            time_histories(page, history, where, members, kind)
     if data["iterations"] or data["attempts"]:
         page.add("<h2>Newton convergence</h2>")
         convergence(page, data)
