@@ -24,11 +24,14 @@ std::optional<std::vector<IterationRecord>> read_iteration_log(const std::string
                     &consumed) != 5) {
       continue;
     }
-    // The correction and the constraint violation follow the residual's "(largest ...)" part,
-    // whose location text may hold any characters.
-    const std::size_t correction = line.find("), correction ", consumed);
-    const std::size_t violation = line.find("), constraint violation ", consumed);
-    if (correction == std::string::npos || violation == std::string::npos) continue;
+    // The correction and the constraint violation follow the residual's "(largest ... at
+    // LOCATION)" part; they are found from the end of the line, which clinch writes, so that a
+    // location with parentheses (an instance-qualified label) cannot be mistaken for them.
+    const std::size_t violation = line.rfind("), constraint violation ");
+    if (violation == std::string::npos || violation < static_cast<std::size_t>(consumed)) continue;
+    const std::size_t correction = line.rfind("), correction ", violation);
+    if (correction == std::string::npos || correction < static_cast<std::size_t>(consumed))
+      continue;
     std::sscanf(line.c_str() + correction + 14, "%lg", &r.correction_norm);
     std::sscanf(line.c_str() + violation + 24, "%lg", &r.constraint_violation);
     records.push_back(r);
