@@ -213,11 +213,13 @@ def convergence(page, data):
             ax.axvline(first - 0.5, color="0.85", linewidth=0.6)
     if any(v == v for v in residual + correction):  # some norm is not NaN
         ax.set_yscale("log")
+        ax.set_ylabel("norm (log scale)")
     else:
         ax.text(0.5, 0.5, "every norm is zero (all motions prescribed): nothing to draw on a "
                 "log scale", transform=ax.transAxes, ha="center", fontsize=8)
+        ax.set_ylabel("norm")
+        ax.set_yticks([])
     ax.set_xlabel("Newton iteration (counted over the run; grey lines: a new increment attempt)")
-    ax.set_ylabel("norm (log scale)")
     ax.set_title(f"Newton convergence: {len(spans)} increment attempts, {cutbacks} cut back",
                  fontsize=10)
     ax.grid(True, which="both", alpha=0.3)
@@ -309,11 +311,37 @@ def summary_table(rows):
     return f"<table class=\"summary\">{cells}</table>"
 
 
+def settings_table(settings):
+    """The study's settings as `clinch study` printed them."""
+    head = ("setting", "scale", "increments", "iterations", "cutbacks", "work", "wall s",
+            "vs finest", "est. error", "worst column", "status")
+    keys = ("setting", "scale", "increments", "iterations", "cutbacks", "work", "wall_seconds",
+            "difference_to_finest", "estimated_error", "worst_column", "status")
+    rows = []
+    for s in settings:
+        cells = []
+        for key in keys:
+            value = s.get(key, "")
+            if key == "scale" and value:
+                value = work_precision_plot.scale_text(float(value))
+            elif key in ("difference_to_finest", "estimated_error") and value:
+                value = (">" if key == "estimated_error" and s["estimate_is_bound"] == "1"
+                         else "") + f"{float(value):.2e}"
+            elif key == "wall_seconds" and value:
+                value = f"{float(value):.3f}"
+            cells.append(f"<td>{html.escape(value)}</td>")
+        chosen = ' class="chosen"' if s.get("chosen") == "1" else ""
+        rows.append(f"<tr{chosen}>{''.join(cells)}</tr>")
+    header = "".join(f"<th>{h}</th>" for h in head)
+    return f'<table class="study"><tr>{header}</tr>{"".join(rows)}</table>'
+
+
 STYLE = """body{font-family:sans-serif;max-width:1400px;margin:1em auto;color:#222}
 figure.plot{display:inline-block;margin:.5em;vertical-align:top;border:1px solid #ddd;
 padding:.3em;background:#fff}figure.plot svg{display:block;max-width:100%;height:auto}
 figcaption{font-size:.8em;max-width:40em;color:#444}table{border-collapse:collapse}
-td,th{border:1px solid #ccc;padding:.2em .6em;text-align:left;font-size:.9em}"""
+td,th{border:1px solid #ccc;padding:.2em .6em;text-align:left;font-size:.9em}
+tr.chosen{background:#e3f4e3}"""
 
 
 def main():
@@ -372,6 +400,7 @@ def main():
         page.figure(work_precision_plot.figure(settings), "work-precision",
                     "Estimated error of each setting of the study against its wall time",
                     settings=len(settings))
+        page.add(settings_table(settings))
     with open(sys.argv[2], "w") as f:
         f.write("<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\">"
                 f"<title>clinch report: {html.escape(data['job'])}</title>"
