@@ -119,7 +119,9 @@ int run_report(const ReportOptions& options) {
       return kExitUsage;
     }
   }
-  const bool drawn = run_plot_script("report_page.py", {data_path, page}, &error);
+  std::vector<std::string> script_args = {data_path, page};
+  if (options.quiet) script_args.push_back("--quiet");
+  const bool drawn = run_plot_script("report_page.py", script_args, &error);
   fs::remove(data_path, ec);
   if (!drawn) {
     std::cerr << "clinch: error: " << error << "\n";

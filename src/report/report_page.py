@@ -9,7 +9,7 @@ norms, log scale) with cutbacks marked; per golden column, the result over the g
 with the tolerance band of `clinch compare` and the worst deviation marked; the work-precision
 plot of a study.
 
-Usage: report_page.py DATA.json PAGE.html
+Usage: report_page.py DATA.json PAGE.html [--quiet]
 Exit 4 when matplotlib cannot be imported (clinch then tries another interpreter).
 """
 import html
@@ -80,15 +80,19 @@ class Column:
 
 
 class Page:
-    def __init__(self):
+    def __init__(self, progress):
         self.parts = []
         self.count = 0
+        self.progress = progress  # shows the plots drawn so far (on a terminal)
 
     def add(self, html_text):
         self.parts.append(html_text)
 
     def figure(self, fig, kind, caption, **data):
         self.count += 1
+        if self.progress:
+            sys.stderr.write(f"\rreport: drawing plot {self.count} ({kind})".ljust(50))
+            sys.stderr.flush()
         matplotlib.rcParams["svg.hashsalt"] = f"plot-{self.count}"
         buffer = io.StringIO()
         fig.savefig(buffer, format="svg", metadata={"Date": None})
@@ -345,15 +349,17 @@ tr.chosen{background:#e3f4e3}"""
 
 
 def main():
-    if len(sys.argv) != 3:
+    args = [a for a in sys.argv[1:] if a != "--quiet"]
+    if len(args) != 2:
         print(__doc__, file=sys.stderr)
         return 3
-    with open(sys.argv[1]) as f:
+    with open(args[0]) as f:
         data = json.load(f)
     history = data["history"]
     history["time"] = history["columns"].index("total_time")
     columns = [Column(n, i) for i, n in enumerate(history["columns"]) if n not in KEYS]
-    page = Page()
+    # Progress as `clinch run` shows it: on a terminal only, and not with --quiet.
+    page = Page(sys.stderr.isatty() and "--quiet" not in sys.argv)
     attempts = data["attempts"]
     page.add(f"<h1>clinch report: {html.escape(data['job'])}</h1>")
     page.add(summary_table([
@@ -401,7 +407,9 @@ def main():
                     "Estimated error of each setting of the study against its wall time",
                     settings=len(settings))
         page.add(settings_table(settings))
-    with open(sys.argv[2], "w") as f:
+    if page.progress:
+        sys.stderr.write("\r" + " " * 50 + "\r")
+    with open(args[1], "w") as f:
         f.write("<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\">"
                 f"<title>clinch report: {html.escape(data['job'])}</title>"
                 f"<style>{STYLE}</style></head><body>\n" + "\n".join(page.parts)
