@@ -52,6 +52,70 @@ std::string progress_text(const std::vector<SettingOutcome>& outcomes,
   return text + fmt::format("  {:.1f} s", seconds);
 }
 
+// Writes the scaled decks: the deck's own increments, then each setting `ratio` times finer.
+std::optional<std::vector<LadderSetting>> write_ladder(const ScaledDeck& scaled,
+                                                       const fs::path& work, const std::string& job,
+                                                       int levels, double ratio,
+                                                       std::string* error) {
+  std::vector<LadderSetting> ladder;
+  double scale = 1.0;
+  for (int level = 0; level < levels; ++level, scale /= ratio) {
+    const fs::path dir = work / fmt::format("setting-{}", level + 1);
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    const fs::path deck = dir / (job + ".inp");
+    std::ofstream out(deck);
+    out << scaled.text(scale);
+    out.close();
+    if (ec || !out) {
+      *error = fmt::format("cannot write the scaled deck '{}'", deck.string());
+      return std::nullopt;
+    }
+    ladder.push_back({scale, deck.string(), dir.string(), job});
+  }
+  return ladder;
+}
+
+// Each setting with how its run went and what its status file says; the history tables of the
+// completed ones go to `tables`, coarsest first. False when a completed run's table cannot be
+// read.
+bool collect_settings(const std::vector<LadderSetting>& ladder,
+                      const std::vector<SettingOutcome>& outcomes, const std::string& job,
+                      StudyResult& result, std::vector<CsvTable>& tables, std::string* error) {
+  for (std::size_t i = 0; i < ladder.size(); ++i) {
+    StudySetting s;
+    s.scale = ladder[i].scale;
+    s.deck = ladder[i].deck;
+    s.outcome = outcomes[i];
+    const fs::path base = fs::path(ladder[i].out_dir) / job;
+    s.history = base.string() + ".history.csv";
+    if (s.outcome.state == SettingState::Completed || s.outcome.state == SettingState::Failed) {
+      std::string status_error;  // a run that could not even write its .sta shows its exit code
+      s.status = read_status_file(base.string() + ".sta", &status_error);
+    }
+    if (s.outcome.state == SettingState::Completed) {
+      std::optional<CsvTable> table = read_csv_table(s.history, error);
+      if (!table) return false;
+      s.run = static_cast<int>(tables.size());
+      tables.push_back(std::move(*table));
+    }
+    result.settings.push_back(std::move(s));
+  }
+  return true;
+}
+
+// The history columns the study estimates: those `pattern` matches, or all but the status codes.
+std::vector<std::string> estimated_columns(const CsvTable& table, const re2::RE2* pattern) {
+  std::vector<std::string> names;
+  for (std::size_t c = 4; c < table.columns.size(); ++c) {
+    const std::string& name = table.columns[c];
+    if (pattern != nullptr ? re2::RE2::FullMatch(name, *pattern) : !is_status_column(name)) {
+      names.push_back(name);
+    }
+  }
+  return names;
+}
+
 }  // namespace
 
 int run_study(const StudyOptions& options) {
@@ -82,8 +146,8 @@ int run_study(const StudyOptions& options) {
     pattern = compile_column_pattern(*options.columns, &error);
     if (!pattern) {
       std::cerr << fmt::format(
-          "clinch: error: --columns '{}' is not a valid regular expression: "
-          "{}\n",
+          "clinch: error: --columns '{}' is not a valid regular "
+          "expression: {}\n",
           *options.columns, error);
       return kExitUsage;
     }
@@ -99,21 +163,11 @@ int run_study(const StudyOptions& options) {
     return kExitUsage;
   }
 
-  // The ladder: the deck's own increments, then each setting `ratio` times finer.
-  std::vector<LadderSetting> ladder;
-  double scale = 1.0;
-  for (int level = 0; level < options.levels; ++level, scale /= options.ratio) {
-    const fs::path dir = work / fmt::format("setting-{}", level + 1);
-    fs::create_directories(dir, ec);
-    const fs::path deck = dir / (job + ".inp");
-    std::ofstream out(deck);
-    out << scaled->text(scale);
-    out.close();
-    if (ec || !out) {
-      std::cerr << fmt::format("clinch: error: cannot write the scaled deck '{}'\n", deck.string());
-      return kExitUsage;
-    }
-    ladder.push_back({scale, deck.string(), dir.string(), job});
+  const std::optional<std::vector<LadderSetting>> ladder =
+      write_ladder(*scaled, work, job, options.levels, options.ratio, &error);
+  if (!ladder) {
+    std::cerr << "clinch: error: " << error << "\n";
+    return kExitUsage;
   }
 
   LadderOptions run_options;
@@ -128,59 +182,32 @@ int run_study(const StudyOptions& options) {
   if (progress.enabled()) {
     run_options.on_progress = [&](const std::vector<SettingOutcome>& outcomes) {
       progress.show(progress_text(
-          outcomes, ladder,
+          outcomes, *ladder,
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()));
     };
   }
-  const std::vector<SettingOutcome> outcomes = run_ladder(ladder, run_options);
+  const std::vector<SettingOutcome> outcomes = run_ladder(*ladder, run_options);
   progress.clear();
 
   StudyResult result;
-  result.deck = deck_name;
-  result.work_dir = work.string();
-  result.ratio = options.ratio;
   result.rtol = options.rtol;
   std::vector<CsvTable> tables;
-  tables.reserve(ladder.size());
-  std::vector<double> scales;
-  for (std::size_t i = 0; i < ladder.size(); ++i) {
-    StudySetting s;
-    s.scale = ladder[i].scale;
-    s.deck = ladder[i].deck;
-    s.outcome = outcomes[i];
-    const fs::path base = fs::path(ladder[i].out_dir) / job;
-    s.history = base.string() + ".history.csv";
-    if (s.outcome.state == SettingState::Completed || s.outcome.state == SettingState::Failed) {
-      std::string status_error;
-      s.status = read_status_file(base.string() + ".sta", &status_error);
-    }
-    if (s.outcome.state == SettingState::Completed) {
-      std::optional<CsvTable> table = read_csv_table(s.history, &error);
-      if (!table) {
-        std::cerr << fmt::format("clinch: error: {}\n", error);
-        return kExitUsage;
-      }
-      s.run = static_cast<int>(tables.size());
-      tables.push_back(std::move(*table));
-      scales.push_back(s.scale);
-    }
-    result.settings.push_back(std::move(s));
+  if (!collect_settings(*ladder, outcomes, job, result, tables, &error)) {
+    std::cerr << "clinch: error: " << error << "\n";
+    return kExitUsage;
   }
   if (!tables.empty()) {
-    std::vector<std::string> names;
-    const CsvTable& finest = tables.back();
-    for (std::size_t c = 4; c < finest.columns.size(); ++c) {
-      const std::string& name = finest.columns[c];
-      if (pattern ? re2::RE2::FullMatch(name, *pattern) : !is_status_column(name)) {
-        names.push_back(name);
-      }
-    }
+    const std::vector<std::string> names = estimated_columns(tables.back(), pattern.get());
     if (names.empty()) {
       std::cerr << fmt::format("clinch: error: --columns '{}' matches no history column\n",
                                options.columns.value_or(""));
       return kExitUsage;
     }
     std::vector<const CsvTable*> pointers;
+    std::vector<double> scales;
+    for (const StudySetting& s : result.settings) {
+      if (s.run >= 0) scales.push_back(s.scale);
+    }
     for (const CsvTable& t : tables) pointers.push_back(&t);
     result.estimate = estimate_errors(pointers, scales, options.ratio, names, &error);
     if (!result.estimate) {
@@ -194,7 +221,7 @@ int run_study(const StudyOptions& options) {
     std::cout << fmt::format(
                      "{}: {} settings, increments scaled from 1 down to {} (ratio {:g}); "
                      "runs in {}\n",
-                     deck_name, ladder.size(), scale_text(ladder.back().scale), options.ratio,
+                     deck_name, ladder->size(), scale_text(ladder->back().scale), options.ratio,
                      work.string())
               << render_study_table(result);
   }
@@ -204,22 +231,18 @@ int run_study(const StudyOptions& options) {
     std::cerr << "clinch: error: " << error << "\n";
     return kExitUsage;
   }
-  if (options.plot && tables.size() >= 2) {
-    const std::string svg = (work / (job + ".study.svg")).string();
-    if (!run_plot_script("work_precision_plot.py", {settings_csv, svg}, &error)) {
-      std::cerr << "clinch: error: " << error << " (--no-plot skips the plot)\n";
-      return kExitUsage;
-    }
+  const bool plotted = options.plot && tables.size() >= 2;
+  const std::string svg = (work / (job + ".study.svg")).string();
+  if (plotted && !run_plot_script("work_precision_plot.py", {settings_csv, svg}, &error)) {
+    std::cerr << "clinch: error: " << error << " (--no-plot skips the plot)\n";
+    return kExitUsage;
   }
   if (!options.quiet) {
-    std::cout << fmt::format("wrote {}{}\n", settings_csv,
-                             options.plot && tables.size() >= 2
-                                 ? fmt::format(", {}", (work / (job + ".study.svg")).string())
-                                 : "");
+    std::cout << fmt::format("wrote {}{}\n", settings_csv, plotted ? ", " + svg : "");
   }
   if (tables.size() < 2) {
     std::cerr << fmt::format("clinch: error: {} of {} settings completed: no error estimate\n",
-                             tables.size(), ladder.size());
+                             tables.size(), ladder->size());
     return kExitTooFewRuns;
   }
   return kExitStudied;

@@ -24,9 +24,6 @@ struct StudySetting {
 };
 
 struct StudyResult {
-  std::string deck;
-  std::string work_dir;
-  double ratio = 2.0;
   std::vector<StudySetting> settings;
   std::optional<StudyEstimate> estimate;  // when at least one setting completed
   std::optional<double> rtol;
