@@ -12,7 +12,8 @@ the case's compare.args when a verification case directory is given), then:
   per connector and per node, one convergence plot, one golden plot per golden column, one
   work-precision plot;
 - axes are labelled with the variables (CTFi@e and CUi@e on force-motion plots, rotational
-  motions in [rad]);
+  motions in [rad]), and each force-motion plot has one curve per motion the history holds
+  (CU, and the elastic and plastic parts CUE and CUP);
 - each golden plot marks the worst deviation at the time this script finds on its own
   (largest |r - g| / (atol + rtol max(|g|, largest |g|)) over the golden rows, the result
   interpolated linearly at golden times);
@@ -169,6 +170,10 @@ def main():
             assert f"CTF{k}@{w}" in labels and f"CU{k}@{w}" in labels, fig["text"]
             if k >= 4:
                 assert "[rad]" in labels, fig["text"]
+            # One curve per motion the history has: total, elastic and plastic parts.
+            for part in ("CU", "CUE", "CUP"):
+                present = f"{part}{k}@{w}" in history[0]
+                assert (f"curve-{part}" in fig["ids"]) == present, (part, k, w, fig["ids"])
         if fig["kind"] == "golden":
             assert any(fig["data"]["column"] in t for t in fig["text"]), fig["text"]
         if fig["kind"] in ("convergence", "work-precision"):
