@@ -1,5 +1,5 @@
-// The clinch command line (cli-contract.md): `run`, `check` and `compare`. Usage errors exit
-// with 3.
+// The clinch command line (cli-contract.md): `run`, `check`, `compare`, `study` and `report`.
+// Usage errors exit with 3.
 #include <iostream>
 
 #include <CLI/CLI.hpp>
@@ -7,7 +7,9 @@
 #include "src/cli/check_command.hpp"
 #include "src/cli/compare_command.hpp"
 #include "src/cli/huge_pages.hpp"
+#include "src/cli/report_command.hpp"
 #include "src/cli/run_command.hpp"
+#include "src/cli/study_command.hpp"
 
 int main(int argc, char** argv) {
   clinch::use_huge_pages(argv);
@@ -71,6 +73,77 @@ int main(int argc, char** argv) {
                       "compare only the golden columns whose whole name matches this "
                       "regular expression (RE2 syntax; default: all)");
 
+  clinch::StudyOptions study_options;
+  CLI::App* study = app.add_subcommand(
+      "study",
+      "Run a deck over a ladder of increment sizes (the deck's *STATIC settings, then each "
+      "--ratio times finer) and print per setting the wall time, increments, Newton iterations, "
+      "cutbacks and the error of the history columns against the finest setting and as "
+      "estimated by Richardson extrapolation; writes <job>.study.csv, <job>.study-columns.csv "
+      "and the work-precision plot <job>.study.svg into the work directory; exit 0 = at least "
+      "two settings compared, 1 = deck errors (nothing run), 2 = fewer than two settings "
+      "completed, 3 = usage or I/O error");
+  study->add_option("DECK", study_options.deck, "the deck (.inp), or - for standard input")
+      ->required();
+  study->add_option("--work", study_options.work_dir,
+                    "directory for the scaled decks, their runs and the study's outputs "
+                    "(default: <job>.study)");
+  study->add_option("--levels", study_options.levels, "number of settings, coarsest first")
+      ->check(CLI::Range(2, 40))
+      ->capture_default_str();
+  study->add_option("--ratio", study_options.ratio,
+                    "each setting's increments are the previous one's divided by this")
+      ->check(CLI::Range(1.01, 1000.0))
+      ->capture_default_str();
+  study->add_option("--budget", study_options.budget_seconds,
+                    "wall-time budget in seconds: a finer setting starts only when its predicted "
+                    "time fits")
+      ->check(CLI::PositiveNumber);
+  study->add_option("--rtol", study_options.rtol,
+                    "name the cheapest setting (least work: increment attempts plus Newton "
+                    "iterations) whose estimated "
+                    "relative error is below this")
+      ->check(CLI::PositiveNumber);
+  study->add_option("--jobs", study_options.jobs, "runs at once (default: one per core)")
+      ->check(CLI::Range(1, 1024));
+  study->add_option("--columns", study_options.columns,
+                    "estimate only the history columns whose whole name matches this regular "
+                    "expression (RE2 syntax; default: all but the status codes CSLST and "
+                    "CSLIPST)");
+  study->add_flag("--no-plot", [&](std::int64_t) { study_options.plot = false; },
+                  "skip the work-precision plot (it needs python3 with matplotlib)");
+  study->add_flag("--quiet", study_options.quiet, "print nothing but warnings and errors");
+
+  clinch::ReportOptions report_options;
+  CLI::App* report = app.add_subcommand(
+      "report",
+      "Write a self-contained HTML page (plots inlined, opens offline) for a run directory: "
+      "per connector force-motion curves per component, time histories, the Newton convergence "
+      "of each increment with cutbacks marked, golden overlays with the tolerance band and the "
+      "worst deviation, and a study's work-precision plot; exit 0 = written, 3 = usage or I/O "
+      "error");
+  report->add_option("RUN_DIR", report_options.run_dir, "directory a `clinch run` wrote")
+      ->required();
+  report->add_option("--job", report_options.job,
+                     "job name (default: the only <job>.history.csv in RUN_DIR)");
+  report->add_option("--golden", report_options.golden, "golden history table to overlay");
+  report->add_option("--rtol", report_options.rtol,
+                     "relative tolerance of the golden band (as `clinch compare`)")
+      ->check(tolerance)
+      ->capture_default_str();
+  report->add_option("--atol", report_options.atol,
+                     "absolute tolerance of the golden band (as `clinch compare`)")
+      ->check(tolerance)
+      ->capture_default_str();
+  report->add_option("--study", report_options.study, "a <job>.study.csv of `clinch study`");
+  report->add_option("--connectors", report_options.max_connectors,
+                     "draw the first N connectors and nodes of the history table")
+      ->check(CLI::Range(1, 1000000))
+      ->capture_default_str();
+  report->add_option("--output,-o", report_options.output,
+                     "the page to write (default: RUN_DIR/<job>.report.html)");
+  report->add_flag("--quiet", report_options.quiet, "print nothing but warnings and errors");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -95,5 +168,7 @@ int main(int argc, char** argv) {
                                                     : clinch::DiagnosticFormat::Text);
   }
   if (compare->parsed()) return clinch::run_compare(compare_arguments);
+  if (study->parsed()) return clinch::run_study(study_options);
+  if (report->parsed()) return clinch::run_report(report_options);
   return 3;
 }

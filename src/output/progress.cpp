@@ -19,6 +19,10 @@ void Progress::update(int step, int increment, double total_time) {
   draw(fmt::format("step {}  increment {}  time {:.6g}", step, increment, total_time));
 }
 
+void Progress::show(std::string_view text) {
+  if (out_ != nullptr) draw(text);
+}
+
 void Progress::clear() {
   if (out_ == nullptr || width_ == 0) return;
   *out_ << '\r' << std::string(width_, ' ') << '\r' << std::flush;

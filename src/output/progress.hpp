@@ -1,5 +1,6 @@
-// Progress display for `clinch run` (cli-contract.md): step, increment and time on one stderr line
-// rewritten with '\r', only when stderr is a terminal and the run is not quiet.
+// Progress display for `clinch run` and `clinch study` (cli-contract.md): one stderr line
+// rewritten with '\r' (a run's step, increment and time; a study's settings), only when stderr is
+// a terminal and the command is not quiet.
 #pragma once
 
 #include <cstddef>
@@ -26,6 +27,8 @@ class Progress {
   bool enabled() const { return out_ != nullptr; }
 
   void update(int step, int increment, double total_time);
+  // Shows a free-form progress line.
+  void show(std::string_view text);
   // Erases the progress line, e.g. before a message is printed on the same stream; the next
   // update() draws it again.
   void clear();

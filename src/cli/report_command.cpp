@@ -1,0 +1,134 @@
+#include "src/cli/report_command.hpp"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "src/output/csv_table.hpp"
+#include "src/output/iteration_log_reader.hpp"
+#include "src/output/status_file_reader.hpp"
+#include "src/report/plot_script.hpp"
+#include "src/report/report_data.hpp"
+
+namespace clinch {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kExitWritten = 0, kExitUsage = 3;
+constexpr std::string_view kHistorySuffix = ".history.csv";
+
+// The job whose history table RUN_DIR holds, when there is exactly one.
+std::optional<std::string> only_job(const fs::path& dir, std::string* error) {
+  std::vector<std::string> jobs;
+  std::error_code ec;
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() > kHistorySuffix.size() && name.ends_with(kHistorySuffix)) {
+      jobs.push_back(name.substr(0, name.size() - kHistorySuffix.size()));
+    }
+  }
+  if (ec) {
+    *error = fmt::format("cannot read the run directory '{}': {}", dir.string(), ec.message());
+    return std::nullopt;
+  }
+  if (jobs.size() != 1) {
+    *error = jobs.empty() ? fmt::format(
+                                "'{}' holds no <job>.history.csv: is it a `clinch run --out` "
+                                "directory?",
+                                dir.string())
+                          : fmt::format("'{}' holds {} history tables: choose one with --job",
+                                        dir.string(), jobs.size());
+    return std::nullopt;
+  }
+  return jobs.front();
+}
+
+}  // namespace
+
+int run_report(const ReportOptions& options) {
+  std::string error;
+  const fs::path dir(options.run_dir);
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) {
+    std::cerr << fmt::format("clinch: error: '{}' is not a directory\n", options.run_dir);
+    return kExitUsage;
+  }
+  std::optional<std::string> job = options.job ? options.job : only_job(dir, &error);
+  if (!job) {
+    std::cerr << "clinch: error: " << error << "\n";
+    return kExitUsage;
+  }
+  const fs::path base = dir / *job;
+  const std::optional<CsvTable> history = read_csv_table(base.string() + ".history.csv", &error);
+  if (!history) {
+    std::cerr << "clinch: error: " << error << "\n";
+    return kExitUsage;
+  }
+  // The status file and the log make the convergence plot; a page without it is still useful.
+  const std::optional<StatusRecord> status = read_status_file(base.string() + ".sta", &error);
+  if (!status) std::cerr << "clinch: warning: " << error << "; no cutbacks shown\n";
+  const std::optional<std::vector<IterationRecord>> iterations =
+      read_iteration_log(base.string() + ".log", &error);
+  if (!iterations) std::cerr << "clinch: warning: " << error << "; no convergence plot\n";
+
+  ReportInputs inputs;
+  inputs.job = *job;
+  inputs.max_connectors = options.max_connectors;
+  inputs.history = &*history;
+  inputs.status = status ? &*status : nullptr;
+  inputs.iterations = iterations ? &*iterations : nullptr;
+  inputs.compare_options.rtol = options.rtol;
+  inputs.compare_options.atol = options.atol;
+  std::optional<CsvTable> golden;
+  std::optional<TableComparison> comparison;
+  if (options.golden) {
+    golden = read_csv_table(*options.golden, &error);
+    if (golden) comparison = compare_tables(*history, *golden, inputs.compare_options, &error);
+    if (!golden || !comparison) {
+      std::cerr << "clinch: error: " << error << "\n";
+      return kExitUsage;
+    }
+    inputs.golden = &*golden;
+    inputs.comparison = &*comparison;
+  }
+  if (options.study) {
+    std::ifstream probe(*options.study);
+    std::string header;
+    if (!probe || !std::getline(probe, header)) {
+      std::cerr << fmt::format("clinch: error: cannot read the study table '{}'\n", *options.study);
+      return kExitUsage;
+    }
+    if (header.rfind("setting,scale,state,", 0) != 0) {
+      std::cerr << fmt::format("clinch: error: {}:1: not a <job>.study.csv of `clinch study`\n",
+                               *options.study);
+      return kExitUsage;
+    }
+    inputs.study_csv = fs::absolute(*options.study).string();
+  }
+  const std::string page = options.output.value_or((dir / (*job + ".report.html")).string());
+  const std::string data_path = page + ".json";
+  {
+    std::ofstream out(data_path);
+    out << report_data(inputs).dump();
+    out.close();
+    if (!out) {
+      std::cerr << fmt::format("clinch: error: cannot write '{}'\n", data_path);
+      return kExitUsage;
+    }
+  }
+  std::vector<std::string> script_args = {data_path, page};
+  if (options.quiet) script_args.push_back("--quiet");
+  const bool drawn = run_plot_script("report_page.py", script_args, &error);
+  fs::remove(data_path, ec);
+  if (!drawn) {
+    std::cerr << "clinch: error: " << error << "\n";
+    return kExitUsage;
+  }
+  if (!options.quiet) std::cout << "wrote " << page << "\n";
+  return kExitWritten;
+}
+
+}  // namespace clinch

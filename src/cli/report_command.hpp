@@ -1,0 +1,33 @@
+// `clinch report RUN_DIR [--job NAME] [--golden GOLDEN.csv [--rtol R] [--atol A]]
+// [--study STUDY.csv] [--connectors N] [-o PAGE.html] [--quiet]`: gathers what a run wrote
+// (history table, status file, the Newton iterations of its log), the comparison with a golden
+// table and a study's settings, and has report_page.py draw them into one self-contained HTML
+// page. Exit 0 = the
+// page was written, 3 = usage or I/O error (a missing or malformed input, python3 or matplotlib
+// missing).
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "src/output/table_comparison.hpp"
+
+namespace clinch {
+
+struct ReportOptions {
+  std::string run_dir;
+  std::optional<std::string> job;
+  std::optional<std::string> golden;
+  double rtol = kDefaultRtol;
+  double atol = kDefaultAtol;
+  std::optional<std::string> study;
+  // A model with thousands of connectors would make a page nobody can read, and take minutes
+  // to draw: the first ones are drawn, and the page says how many were left out.
+  int max_connectors = 20;
+  std::optional<std::string> output;  // default: RUN_DIR/<job>.report.html
+  bool quiet = false;
+};
+
+int run_report(const ReportOptions& options);
+
+}  // namespace clinch

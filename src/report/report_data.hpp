@@ -1,0 +1,33 @@
+// The data of a `clinch report` page as one JSON document for report_page.py: the history table,
+// the increment attempts of the status file, the Newton iterations of the log, and the golden
+// table with the comparison of each of its columns (tolerance and worst deviation, computed by
+// the same code as `clinch compare`).
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "src/output/csv_table.hpp"
+#include "src/output/run_log.hpp"
+#include "src/output/status_file_reader.hpp"
+#include "src/output/table_comparison.hpp"
+
+namespace clinch {
+
+struct ReportInputs {
+  std::string job;
+  const CsvTable* history = nullptr;
+  const StatusRecord* status = nullptr;                      // null when the run left no .sta
+  const std::vector<IterationRecord>* iterations = nullptr;  // null when it left no .log
+  const CsvTable* golden = nullptr;
+  const TableComparison* comparison = nullptr;  // with golden
+  CompareOptions compare_options;
+  std::optional<std::string> study_csv;
+  int max_connectors = 0;  // connectors (and nodes) drawn, in history order
+};
+
+nlohmann::json report_data(const ReportInputs& inputs);
+
+}  // namespace clinch

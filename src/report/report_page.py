@@ -1,0 +1,421 @@
+"""The page of `clinch report`: one self-contained HTML file (every plot an inline SVG drawn by
+matplotlib, no script, style or font fetched from anywhere) from the JSON document that
+`clinch report` writes (src/report/report_data.cpp).
+
+Sections: per connector, force-motion curves per component (CTF against CU, and against the
+elastic and plastic motions CUE and CUP where the run has them) and time histories; per node,
+time histories; the Newton convergence of every increment attempt (residual and correction
+norms, log scale) with cutbacks marked; per golden column, the result over the golden values
+with the tolerance band of `clinch compare` and the worst deviation marked; the work-precision
+plot of a study.
+
+Usage: report_page.py DATA.json PAGE.html [--quiet]
+Exit 4 when matplotlib cannot be imported (clinch then tries another interpreter).
+"""
+import html
+import io
+import json
+import math
+import os
+import re
+import sys
+
+try:
+    import matplotlib
+    matplotlib.use("Agg")
+    from matplotlib.figure import Figure
+except ImportError:
+    print("report_page.py: matplotlib is not installed for this python "
+          f"({sys.executable})", file=sys.stderr)
+    sys.exit(4)
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import work_precision_plot  # noqa: E402
+
+matplotlib.rcParams["svg.fonttype"] = "none"
+
+KEYS = ("step", "increment", "step_time", "total_time")
+NODE_VARIABLES = ("U", "UR", "RF", "RM")
+# output-variables.md: what each identifier is.
+MEANING = {
+    "CTF": "total force", "CEF": "elastic force", "CVF": "viscous force",
+    "CRF": "constraint force", "CSF": "friction force", "CNF": "friction contact force",
+    "CCF": "concentrated force", "CU": "relative motion", "CUE": "elastic motion",
+    "CUP": "plastic motion", "CP": "position", "CUPEQ": "equivalent plastic motion",
+    "CUPEQC": "equivalent plastic motion (component)", "CALPHAF": "back force",
+    "CSLST": "stop/lock status", "CASU": "accumulated slip", "CSLIPST": "stick/slip status",
+    "CSFC": "friction force (potential)", "CNFC": "friction contact force (potential)",
+    "CASUC": "accumulated slip (potential)", "CDERF": "derived force",
+    "CDERU": "derived motion", "CDMG": "damage", "U": "displacement", "UR": "rotation",
+    "RF": "reaction force", "RM": "reaction moment",
+}
+MOTIONS = ("CU", "CUE", "CUP", "CP", "CASU")
+COLUMN = re.compile(r"^([A-Z]+?)([1-6]?)(-[^@]*)?@(.+)$")
+
+
+class Column:
+    def __init__(self, name, index):
+        self.name, self.index = name, index
+        m = COLUMN.match(name)
+        self.variable, self.component, self.derived, self.where = (
+            (m.group(1), int(m.group(2)) if m.group(2) else 0, m.group(3) or "", m.group(4))
+            if m else (name, 0, "", ""))
+
+    @property
+    def is_node(self):
+        return self.variable in NODE_VARIABLES
+
+    def unit(self):
+        """The unit clinch fixes (rotations in radians, cli-contract/README conventions); the
+        deck itself states no units."""
+        angular = (self.variable in MOTIONS and self.component >= 4) or self.variable == "UR"
+        return " [rad]" if angular else ""
+
+    def label(self):
+        what = MEANING.get(self.variable, self.variable)
+        if self.variable in ("CTF", "CEF", "CVF", "CRF", "CSF") and self.component >= 4:
+            what = what.replace("force", "moment")
+        part = f", component {self.component}" if self.component else ""
+        return f"{self.name}: {what}{self.derived}{part}{self.unit()}"
+
+
+class Page:
+    def __init__(self, progress):
+        self.parts = []
+        self.count = 0
+        self.progress = progress  # shows the plots drawn so far (on a terminal)
+
+    def add(self, html_text):
+        self.parts.append(html_text)
+
+    def figure(self, fig, kind, caption, **data):
+        self.count += 1
+        if self.progress:
+            sys.stderr.write(f"\rreport: drawing plot {self.count} ({kind})".ljust(50))
+            sys.stderr.flush()
+        matplotlib.rcParams["svg.hashsalt"] = f"plot-{self.count}"
+        buffer = io.StringIO()
+        fig.savefig(buffer, format="svg", metadata={"Date": None})
+        svg = buffer.getvalue()
+        svg = svg[svg.index("<svg"):]  # drop the XML declaration and DOCTYPE
+        attributes = "".join(f' data-{k.replace("_", "-")}="{html.escape(str(v))}"'
+                             for k, v in data.items())
+        self.add(f'<figure class="plot" data-kind="{kind}"{attributes}>{svg}'
+                 f"<figcaption>{html.escape(caption)}</figcaption></figure>")
+
+
+def series(history, column):
+    t = [row[history["time"]] for row in history["rows"]]
+    return t, [row[column.index] for row in history["rows"]]
+
+
+def step_ends(history):
+    """Total times at which a step ends (the last row of each step but the last)."""
+    rows, ends = history["rows"], []
+    for a, b in zip(rows, rows[1:]):
+        if b[0] != a[0]:
+            ends.append(a[history["time"]])
+    return ends
+
+
+def force_motion(page, history, where, columns):
+    by_name = {(c.variable, c.component): c for c in columns}
+    for component in range(1, 7):
+        force = by_name.get(("CTF", component))
+        motion = by_name.get(("CU", component))
+        if force is None or motion is None:
+            continue
+        fig = Figure(figsize=(5.6, 3.8))
+        ax = fig.add_subplot()
+        _, f = series(history, force)
+        for variable, style, name in (("CU", "-", "total"), ("CUE", "--", "elastic part"),
+                                      ("CUP", ":", "plastic part")):
+            c = by_name.get((variable, component))
+            if c is None:
+                continue
+            _, u = series(history, c)
+            ax.plot(u, f, style, marker="." if variable == "CU" else None,
+                    label=f"{c.variable}{component} ({name})", gid=f"curve-{variable}")
+        ax.set_xlabel(motion.label())
+        ax.set_ylabel(force.label())
+        ax.set_title(f"connector {where}: force against motion, component {component}",
+                     fontsize=10)
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=8)
+        fig.tight_layout()
+        page.figure(fig, "force-motion", f"Connector {where}, component {component}: "
+                    f"{force.name} against {motion.name} (one point per history row)",
+                    connector=where, component=component)
+
+
+def time_histories(page, history, where, columns, kind):
+    families = []
+    for c in columns:
+        key = c.variable + c.derived
+        if key not in [f[0] for f in families]:
+            families.append((key, []))
+        next(f for f in families if f[0] == key)[1].append(c)
+    fig = Figure(figsize=(6.4, 1.0 + 1.9 * len(families)))
+    axes = fig.subplots(len(families), 1, sharex=True, squeeze=False)[:, 0]
+    ends = step_ends(history)
+    for ax, (key, members) in zip(axes, families):
+        for c in members:
+            t, v = series(history, c)
+            ax.plot(t, v, label=c.name, gid=f"history-{c.name}")
+        for t_end in ends:
+            ax.axvline(t_end, color="0.7", linewidth=0.8)
+        variable = members[0].variable
+        ax.set_ylabel(f"{key}{members[0].unit()}", fontsize=9)
+        ax.set_title(MEANING.get(variable, variable), fontsize=9)
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=7, loc="best")
+    axes[-1].set_xlabel("total time")
+    what = "connector" if kind == "connector" else "node"
+    axes[0].set_title(f"{what} {where}: {axes[0].get_title()}", fontsize=9)
+    fig.tight_layout()
+    page.figure(fig, f"history-{kind}", f"{what.capitalize()} {where}: "
+                + ", ".join(c.name for c in columns) + " against total time (grey lines: step "
+                "ends)", where=where, panels=len(families))
+
+
+def convergence(page, data):
+    iterations, attempts = data["iterations"], data["attempts"]
+    if not iterations and not attempts:
+        return
+    # The attempts in order (from the .sta, else as the log shows them), each with its
+    # iterations from the log; an attempt that failed before its first iteration still gets a
+    # slot, so that every cutback is marked.
+    by_attempt = {}
+    for r in iterations:
+        by_attempt.setdefault((r["step"], r["increment"], r["attempt"]), []).append(r)
+    keys = [(a["step"], a["increment"], a["attempt"]) for a in attempts] or list(by_attempt)
+    cut = {(a["step"], a["increment"], a["attempt"]) for a in attempts if a["cut_back"]}
+    fig = Figure(figsize=(7.2, 3.8))
+    ax = fig.add_subplot()
+    x, residual, correction, spans, slot = [], [], [], [], 0
+    for key in keys:
+        records = by_attempt.get(key, [])
+        first = slot + 1
+        for r in records or [None]:
+            x.append(slot := slot + 1)
+            residual.append(r["residual"] if r and r["residual"] > 0.0 else math.nan)
+            correction.append(r["correction"] if r and r["correction"] > 0.0 else math.nan)
+        spans.append((key, first, slot))
+        # A gap between attempts: each attempt's iterations make their own line.
+        x.append(slot + 0.5)
+        residual.append(math.nan)
+        correction.append(math.nan)
+    ax.plot(x, residual, "o-", markersize=3, label="residual norm", gid="norm-residual")
+    ax.plot(x, correction, "s--", markersize=3, label="correction norm", gid="norm-correction")
+    cutbacks = 0
+    for key, first, last in spans:
+        if key in cut:
+            cutbacks += 1
+            ax.axvspan(first - 0.5, last + 0.5, color="C3", alpha=0.25,
+                       label="cut back" if cutbacks == 1 else None, gid=f"cutback-{cutbacks}")
+        elif len(spans) <= 400:
+            ax.axvline(first - 0.5, color="0.85", linewidth=0.6)
+    if any(v == v for v in residual + correction):  # some norm is not NaN
+        ax.set_yscale("log")
+        ax.set_ylabel("norm (log scale)")
+    else:
+        ax.text(0.5, 0.5, "every norm is zero (all motions prescribed): nothing to draw on a "
+                "log scale", transform=ax.transAxes, ha="center", fontsize=8)
+        ax.set_ylabel("norm")
+        ax.set_yticks([])
+    ax.set_xlabel("Newton iteration (counted over the run; grey lines: a new increment attempt)")
+    ax.set_title(f"Newton convergence: {len(spans)} increment attempts, {cutbacks} cut back",
+                 fontsize=10)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    page.figure(fig, "convergence", "Residual and correction norms of every Newton iteration "
+                "(from the .log); zero norms are not drawn; red bands: attempts that were cut "
+                "back (from the .sta)", attempts=len(spans), cutbacks=cutbacks)
+
+
+def interpolate(ts, vs, t):
+    """Linear interpolation at t (rows matched by total_time, as `clinch compare`)."""
+    if t <= ts[0]:
+        return vs[0]
+    for i in range(1, len(ts)):
+        if ts[i] >= t:
+            if ts[i] == t:
+                return vs[i]
+            w = (t - ts[i - 1]) / (ts[i] - ts[i - 1])
+            return vs[i - 1] + w * (vs[i] - vs[i - 1])
+    return vs[-1]
+
+
+def golden_overlays(page, history, golden, columns_by_name):
+    g_time = golden["columns"].index("total_time")
+    rtol, atol = golden["rtol"], golden["atol"]
+    for comparison in golden["comparison"]:
+        name = comparison["name"]
+        column = columns_by_name.get(name)
+        gi = golden["columns"].index(name)
+        gt = [row[g_time] for row in golden["rows"]]
+        gv = [row[gi] for row in golden["rows"]]
+        fig = Figure(figsize=(6.4, 4.6))
+        top, bottom = fig.subplots(2, 1, sharex=True, gridspec_kw={"height_ratios": [3, 2]})
+        label = column.label() if column else name
+        if column is None:
+            top.text(0.5, 0.5, f"{name}: no such column in the run", transform=top.transAxes,
+                     ha="center")
+        else:
+            t, v = series(history, column)
+            top.plot(t, v, "-", color="C0", label="run", gid="result")
+        top.plot(gt, gv, "o", color="k", fillstyle="none", label="golden", gid="golden")
+        # cli-contract.md `clinch compare`: |r - g| <= atol + rtol max(|g|, largest |g|).
+        scale = max((abs(x) for x in gv), default=0.0)
+        allowed = [atol + rtol * max(abs(x), scale) for x in gv]
+        top.fill_between(gt, [x - a for x, a in zip(gv, allowed)],
+                         [x + a for x, a in zip(gv, allowed)], color="C2", alpha=0.3,
+                         label="tolerance band", gid="band")
+        bottom.fill_between(gt, [-a for a in allowed], allowed, color="C2", alpha=0.3,
+                            gid="band-deviation")
+        worst = comparison.get("worst")
+        if column is not None:
+            t, v = series(history, column)
+            inside = [x for x in gt if t[0] <= x <= t[-1]]
+            deviation = [interpolate(t, v, x) - gv[gt.index(x)] for x in inside]
+            bottom.plot(inside, deviation, "o-", color="C0", markersize=3, gid="deviation")
+        if worst is not None:
+            signed = worst["result"] - worst["golden"]
+            text = (f"worst |r - g| = {worst['difference']:.3g} at t = {worst['total_time']:g} "
+                    f"(allowed {worst['allowed']:.3g})")
+            top.plot([worst["total_time"]], [worst["result"]], "x", color="C3", markersize=12,
+                     markeredgewidth=2, label="worst deviation", gid="worst-deviation")
+            bottom.plot([worst["total_time"]], [signed], "x", color="C3", markersize=12,
+                        markeredgewidth=2, gid="worst-deviation-point")
+            bottom.text(0.01, 0.97, text, transform=bottom.transAxes, va="top", fontsize=8,
+                        color="C3", gid="worst-deviation-text",
+                        bbox={"facecolor": "white", "alpha": 0.8, "edgecolor": "none"})
+        top.set_ylabel(name, fontsize=9)
+        top.set_title(f"{label}: {comparison['verdict'].upper()} "
+                      f"(rtol {rtol:g}, atol {atol:g})", fontsize=9)
+        top.grid(True, alpha=0.3)
+        top.legend(fontsize=7)
+        bottom.set_ylabel(f"run - golden", fontsize=9)
+        bottom.set_xlabel("total time")
+        bottom.grid(True, alpha=0.3)
+        fig.tight_layout()
+        caption = f"{name} against the golden table: {comparison['verdict']}"
+        if worst is not None:
+            caption += (f"; worst deviation {worst['difference']:.3g} at total time "
+                        f"{worst['total_time']:g}, allowed {worst['allowed']:.3g}")
+        page.figure(fig, "golden", caption, column=name, verdict=comparison["verdict"],
+                    worst_time=worst["total_time"] if worst else "",
+                    worst_difference=worst["difference"] if worst else "")
+
+
+def summary_table(rows):
+    cells = "".join(f"<tr><th>{html.escape(k)}</th><td>{html.escape(str(v))}</td></tr>"
+                    for k, v in rows)
+    return f"<table class=\"summary\">{cells}</table>"
+
+
+def settings_table(settings):
+    """The study's settings as `clinch study` printed them."""
+    head = ("setting", "scale", "increments", "iterations", "cutbacks", "work", "wall s",
+            "vs finest", "est. error", "worst column", "status")
+    keys = ("setting", "scale", "increments", "iterations", "cutbacks", "work", "wall_seconds",
+            "difference_to_finest", "estimated_error", "worst_column", "status")
+    rows = []
+    for s in settings:
+        cells = []
+        for key in keys:
+            value = s.get(key, "")
+            if key == "scale" and value:
+                value = work_precision_plot.scale_text(float(value))
+            elif key in ("difference_to_finest", "estimated_error") and value:
+                value = (">" if key == "estimated_error" and s["estimate_is_bound"] == "1"
+                         else "") + f"{float(value):.2e}"
+            elif key == "wall_seconds" and value:
+                value = f"{float(value):.3f}"
+            cells.append(f"<td>{html.escape(value)}</td>")
+        chosen = ' class="chosen"' if s.get("chosen") == "1" else ""
+        rows.append(f"<tr{chosen}>{''.join(cells)}</tr>")
+    header = "".join(f"<th>{h}</th>" for h in head)
+    return f'<table class="study"><tr>{header}</tr>{"".join(rows)}</table>'
+
+
+STYLE = """body{font-family:sans-serif;max-width:1400px;margin:1em auto;color:#222}
+figure.plot{display:inline-block;margin:.5em;vertical-align:top;border:1px solid #ddd;
+padding:.3em;background:#fff}figure.plot svg{display:block;max-width:100%;height:auto}
+figcaption{font-size:.8em;max-width:40em;color:#444}table{border-collapse:collapse}
+td,th{border:1px solid #ccc;padding:.2em .6em;text-align:left;font-size:.9em}
+tr.chosen{background:#e3f4e3}"""
+
+
+def main():
+    args = [a for a in sys.argv[1:] if a != "--quiet"]
+    if len(args) != 2:
+        print(__doc__, file=sys.stderr)
+        return 3
+    with open(args[0]) as f:
+        data = json.load(f)
+    history = data["history"]
+    history["time"] = history["columns"].index("total_time")
+    columns = [Column(n, i) for i, n in enumerate(history["columns"]) if n not in KEYS]
+    # Progress as `clinch run` shows it: on a terminal only, and not with --quiet.
+    page = Page(sys.stderr.isatty() and "--quiet" not in sys.argv)
+    attempts = data["attempts"]
+    page.add(f"<h1>clinch report: {html.escape(data['job'])}</h1>")
+    page.add(summary_table([
+        ("history table", history["path"]),
+        ("how the run ended", data.get("ending", "(no status file)")),
+        ("increments", sum(1 for a in attempts if not a["cut_back"])),
+        ("Newton iterations", sum(a["iterations"] for a in attempts)),
+        ("cutbacks", sum(1 for a in attempts if a["cut_back"])),
+        ("history columns", len(columns)),
+    ]))
+    connectors, nodes = {}, {}
+    for c in columns:
+        (nodes if c.is_node else connectors).setdefault(c.where, []).append(c)
+    limit = data["max_connectors"]
+    for title, group, kind in (("Connectors", connectors, "connector"),
+                               ("Nodes", nodes, "node")):
+        if not group:
+            continue
+        page.add(f"<h2>{title}</h2>")
+        if len(group) > limit:
+            page.add(f"<p>{len(group)} {kind}s have history columns; the first {limit} are drawn "
+                     "(<code>clinch report --connectors N</code> draws more).</p>")
+        for where, members in list(group.items())[:limit]:
+            if kind == "connector":
+                page.add(f"<h3>connector {html.escape(where)}</h3>")
+                force_motion(page, history, where, members)
+            time_histories(page, history, where, members, kind)
+    if data["iterations"] or data["attempts"]:
+        page.add("<h2>Newton convergence</h2>")
+        convergence(page, data)
+    if "golden" in data:
+        golden = data["golden"]
+        failed = [c["name"] for c in golden["comparison"] if c["verdict"] != "pass"]
+        page.add(f"<h2>Golden comparison: {html.escape(golden['path'])}</h2>")
+        page.add(f"<p>{len(golden['comparison'])} columns, {len(failed)} failing"
+                 + (f" ({html.escape(', '.join(failed))})" if failed else "")
+                 + f"; rtol {golden['rtol']:g}, atol {golden['atol']:g}; the band is "
+                 "atol + rtol&middot;max(|g|, largest |g| of the column), as "
+                 "<code>clinch compare</code>.</p>")
+        golden_overlays(page, history, golden, {c.name: c for c in columns})
+    if "study_csv" in data:
+        settings = work_precision_plot.read_settings(data["study_csv"])
+        page.add(f"<h2>Work precision: {html.escape(data['study_csv'])}</h2>")
+        page.figure(work_precision_plot.figure(settings), "work-precision",
+                    "Estimated error of each setting of the study against its wall time",
+                    settings=len(settings))
+        page.add(settings_table(settings))
+    if page.progress:
+        sys.stderr.write("\r" + " " * 50 + "\r")
+    with open(args[1], "w") as f:
+        f.write("<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\">"
+                f"<title>clinch report: {html.escape(data['job'])}</title>"
+                f"<style>{STYLE}</style></head><body>\n" + "\n".join(page.parts)
+                + "\n</body></html>\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

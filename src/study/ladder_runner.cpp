@@ -1,0 +1,148 @@
+#include "src/study/ladder_runner.hpp"
+
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <thread>
+
+extern char** environ;
+
+namespace clinch {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Running {
+  std::size_t index;
+  pid_t pid;
+  Clock::time_point start;
+};
+
+// Starts `clinch run --quiet` on one setting with stdout and stderr in <out_dir>/run.out.
+std::optional<pid_t> spawn_run(const std::string& clinch, const LadderSetting& s,
+                               std::string* error) {
+  std::error_code ec;
+  std::filesystem::create_directories(s.out_dir, ec);
+  if (ec) {
+    *error = fmt::format("cannot create '{}': {}", s.out_dir, ec.message());
+    return std::nullopt;
+  }
+  const std::string out = (std::filesystem::path(s.out_dir) / "run.out").string();
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, out.c_str(),
+                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  std::vector<std::string> args = {clinch,    "run",   "--quiet", "--out",
+                                   s.out_dir, "--job", s.job,     s.deck};
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  const int rc = posix_spawn(&pid, clinch.c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (rc != 0) {
+    *error = fmt::format("cannot start '{}': {}", clinch, std::strerror(rc));
+    return std::nullopt;
+  }
+  return pid;
+}
+
+}  // namespace
+
+std::string current_executable() {
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  return ec ? std::string("clinch") : self.string();
+}
+
+std::vector<SettingOutcome> run_ladder(const std::vector<LadderSetting>& settings,
+                                       const LadderOptions& options) {
+  std::vector<SettingOutcome> outcomes(settings.size());
+  std::vector<Running> running;
+  const Clock::time_point study_start = Clock::now();
+  std::size_t next = 0;
+  bool budget_spent = false;
+  auto last_progress = Clock::now() - std::chrono::seconds(1);
+
+  // Whether setting `k` may start now: always without a budget; with one, only once some earlier
+  // setting has finished and its cost, grown by cost_ratio per level, fits in what is left.
+  const auto may_start = [&](std::size_t k) -> std::optional<bool> {
+    if (!options.budget_seconds || k == 0) return true;
+    for (std::size_t j = k; j-- > 0;) {
+      const SettingOutcome& o = outcomes[j];
+      if (o.state == SettingState::Completed || o.state == SettingState::Failed) {
+        const double predicted =
+            o.wall_seconds * std::pow(options.cost_ratio, static_cast<double>(k - j));
+        const double elapsed = std::chrono::duration<double>(Clock::now() - study_start).count();
+        return elapsed + predicted <= *options.budget_seconds;
+      }
+    }
+    return std::nullopt;  // nothing measured yet: wait
+  };
+
+  while (next < settings.size() || !running.empty()) {
+    while (!budget_spent && next < settings.size() &&
+           static_cast<int>(running.size()) < std::max(1, options.jobs)) {
+      const std::optional<bool> start = may_start(next);
+      if (!start) break;
+      if (!*start) {
+        budget_spent = true;
+        break;
+      }
+      std::string error;
+      const std::optional<pid_t> pid = spawn_run(options.clinch, settings[next], &error);
+      if (!pid) {
+        outcomes[next].state = SettingState::Failed;
+        outcomes[next].note = error;
+      } else {
+        outcomes[next].state = SettingState::Running;
+        running.push_back({next, *pid, Clock::now()});
+      }
+      ++next;
+    }
+    if (budget_spent) {
+      for (std::size_t k = next; k < settings.size(); ++k) {
+        outcomes[k].note = fmt::format("not run: the time budget of {} s would be exceeded",
+                                       *options.budget_seconds);
+      }
+      next = settings.size();
+    }
+    bool changed = false;
+    for (auto it = running.begin(); it != running.end();) {
+      int status = 0;
+      const pid_t done = waitpid(it->pid, &status, WNOHANG);
+      if (done != it->pid) {
+        ++it;
+        continue;
+      }
+      SettingOutcome& o = outcomes[it->index];
+      o.wall_seconds = std::chrono::duration<double>(Clock::now() - it->start).count();
+      if (WIFEXITED(status)) {
+        o.exit_code = WEXITSTATUS(status);
+        o.state = o.exit_code == 0 ? SettingState::Completed : SettingState::Failed;
+      } else {
+        o.state = SettingState::Failed;
+        o.note = fmt::format("killed by signal {}", WTERMSIG(status));
+      }
+      it = running.erase(it);
+      changed = true;
+    }
+    if (options.on_progress &&
+        (changed || Clock::now() - last_progress > std::chrono::milliseconds(200))) {
+      options.on_progress(outcomes);
+      last_progress = Clock::now();
+    }
+    if (!changed && !running.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  return outcomes;
+}
+
+}  // namespace clinch
