@@ -61,8 +61,10 @@ TEST(ExternalDecks, UnsupportedElementTypesAreNamedAtTheirLine) {
 
   auto dashpot = check("ccx-dashpot1.inp");
   EXPECT_TRUE(has(*dashpot, DiagCode::unsupported_option, 22, "'C3D8' is not supported"));
-  EXPECT_TRUE(has(*dashpot, DiagCode::unsupported_option, 24, "'DASHPOTA' is not supported"))
+  // DASHPOTA runs (docs/decisions.md, "Dashpots"); the deck is still refused, first at C3D8.
+  EXPECT_FALSE(has(*dashpot, DiagCode::unsupported_option, 24, "'DASHPOTA' is not supported"))
       << listing(*dashpot);
+  EXPECT_TRUE(has(*dashpot, DiagCode::unsupported_keyword, 41, "'*MATERIAL'"));
 
   auto spring3 = check("ccx-spring3.inp");
   EXPECT_TRUE(has(*spring3, DiagCode::unsupported_option, 23, "'C3D8' is not supported"));
