@@ -60,7 +60,7 @@ class ConnectorDofs {
   std::vector<std::array<DofMask, 2>> by_section_;
 };
 
-// keywords.md §7: SPRING1/SPRING2 use the DOFs of their *SPRING DOF line (1–6 while the spring
+// keywords.md §7: SPRING1/SPRING2 (and DASHPOT1/DASHPOT2) use the DOFs of their DOF line (1–6 while the spring
 // data are unknown or invalid).
 DofMask spring_dofs(const Model& model, std::int32_t element, int slot, bool two_d) {
   const auto& sections = model.sections;

@@ -1,6 +1,7 @@
-// The force law F(Δ) of a *SPRING (keywords.md §7): linear F = kΔ with k of any sign, or a
-// piecewise-linear table held constant, with zero tangent, outside its range. The spring
-// elements' kinematics (SPRINGA, SPRING1, SPRING2) turn Δ into nodal forces and stiffness.
+// The force law of a *SPRING, F(Δ), or of a *DASHPOT, F(v) (keywords.md §7, behaviors.md §8):
+// linear F = kΔ (c v) with k of any sign, or a piecewise-linear table held constant, with zero
+// tangent, outside its range. The element kinematics (spring_element) turn Δ, or its rate, into
+// nodal forces and stiffness.
 #pragma once
 
 #include <optional>
