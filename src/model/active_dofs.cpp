@@ -60,8 +60,8 @@ class ConnectorDofs {
   std::vector<std::array<DofMask, 2>> by_section_;
 };
 
-// keywords.md §7: SPRING1/SPRING2 (and DASHPOT1/DASHPOT2) use the DOFs of their DOF line (1–6 while the spring
-// data are unknown or invalid).
+// keywords.md §7: SPRING1/SPRING2 (and DASHPOT1/DASHPOT2) use the DOFs of their DOF line (1–6
+// while the data are unknown or invalid).
 DofMask spring_dofs(const Model& model, std::int32_t element, int slot, bool two_d) {
   const auto& sections = model.sections;
   const DofMask fallback = two_d ? kAll2D : kAll3D;
