@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <optional>
 
 #include "src/model/output_variables.hpp"
 #include "src/model/potential_queries.hpp"
@@ -17,7 +18,7 @@ std::string set_label(const TargetRef& set, bool element) {
 
 // Connector quantities of output-variables.md §2 that clinch run produces; every other connector
 // identifier (velocities) is 0 for the behaviours a run accepts.
-double connector_value(const ConnectorOutput& out, const std::string& variable, int component) {
+double connector_value(const ConnectorOutput& out, std::string_view variable, int component) {
   if (variable == "CUPEQ" && component == 0) return out.scalar_equivalent_plastic();
   // friction.md §6: the scalar outputs of a coupled friction definition. Damage (behaviors.md
   // §7): CDMG and the criteria, as scalars (component 0), per component and coupled.
@@ -53,14 +54,18 @@ HistoryColumns::HistoryColumns(const Model& model, const AnalysisPlan& plan)
   expand_steps();
 }
 
-std::size_t HistoryColumns::column(const std::string& name, Column c) {
+std::size_t HistoryColumns::column(const std::string& name, Column c,
+                                   std::span<const Term> terms) {
   if (index_names_) {
     if (const auto it = column_of_name_.find(std::string_view(name)); it != column_of_name_.end()) {
       return *it;
     }
   }
   names_.push_back(name);
-  columns_.push_back(std::move(c));
+  c.first_term = static_cast<std::uint32_t>(terms_.size());
+  c.term_count = static_cast<std::uint32_t>(terms.size());
+  terms_.insert(terms_.end(), terms.begin(), terms.end());
+  columns_.push_back(c);
   if (index_names_) column_of_name_.insert(names_.size() - 1);
   return names_.size() - 1;
 }
@@ -136,21 +141,29 @@ std::vector<HistoryColumns::Request> HistoryColumns::expand_step(
     // Reserved once rather than regrown (and rehashed) step by step over 10⁶ connectors.
     names_.reserve(least);
     columns_.reserve(least);
+    terms_.reserve(terms_.size() + least - names_.size());
     if (index_names_) column_of_name_.reserve(least);
     std::sort(connectors.begin(), connectors.end(), [&](std::int32_t a, std::int32_t b) {
       const Element& ea = model_.elements[static_cast<std::size_t>(a)];
       const Element& eb = model_.elements[static_cast<std::size_t>(b)];
       return std::tie(ea.instance, ea.label) < std::tie(eb.instance, eb.label);
     });
+    // Per behaviour, once: its features (connectors share a few behaviours).
+    std::vector<std::optional<BehaviorFeatures>> features_of(model_.behaviors.behaviors.size());
+    std::vector<const char*> variables;
+    OutputIdentifier id;
     for (std::int32_t e : connectors) {
       const ConnectorRecord& r = plan_.connectors[static_cast<std::size_t>(
           plan_.connector_of_element[static_cast<std::size_t>(e)])];
       const std::int32_t b = model_.sections.connector_sections[static_cast<std::size_t>(r.section)]
                                  .behavior_index;
+      if (b >= 0 && !features_of[static_cast<std::size_t>(b)]) {
+        features_of[static_cast<std::size_t>(b)] =
+            behavior_features(model_.behaviors.behaviors[static_cast<std::size_t>(b)]);
+      }
       const BehaviorFeatures features =
-          b >= 0 ? behavior_features(model_.behaviors.behaviors[static_cast<std::size_t>(b)])
-                 : BehaviorFeatures{};
-      std::vector<std::string> variables = {"CTF", "CU"};
+          b >= 0 ? *features_of[static_cast<std::size_t>(b)] : BehaviorFeatures{};
+      variables.assign({"CTF", "CU"});
       if (features.plasticity) variables.insert(variables.end(), {"CUP", "CUPEQ"});
       // Damage: CDMG and the criteria in use, as scalars (§4).
       if (features.damage) variables.push_back("CDMG");
@@ -162,12 +175,13 @@ std::vector<HistoryColumns::Request> HistoryColumns::expand_step(
       if (stops) variables.insert(variables.end(), {"CRF", "CSLST"});
       if (features.friction) variables.insert(variables.end(), {"CSF", "CNF", "CASU"});
       if (features.kinematic_hardening) variables.push_back("CALPHAF");
-      for (const std::string& v : variables) {
-        OutputIdentifier id;
+      for (const char* v : variables) {
         id.variable = v;
-        const bool scalar = v == "CUPEQ" || v == "CDMG" || v == "CDIF" || v == "CDIM" || v == "CDIP";
+        const std::string_view name = v;
+        const bool scalar =
+            name == "CUPEQ" || name == "CDMG" || name == "CDIF" || name == "CDIM" || name == "CDIP";
         id.components = scalar ? 0 : 0b111111;  // the scalars of §1.2
-        element_columns(id, {e}, request, false, false, "");
+        element_columns(id, std::span(&e, 1), request, false, false, "");
       }
     }
   };
@@ -213,19 +227,19 @@ std::vector<HistoryColumns::Request> HistoryColumns::expand_step(
 }
 
 // TOTALS=YES/ONLY (keywords.md §18): one column per component, `<VAR>@<set>`, summing the terms.
-void HistoryColumns::total_columns(const OutputIdentifier& id, std::array<Column, 7>& sums,
-                                   Request& request, const std::string& set) {
+void HistoryColumns::total_columns(std::string_view variable,
+                                   const std::array<std::vector<Term>, 7>& sums, Request& request,
+                                   const std::string& set) {
   for (int k = 1; k <= 6; ++k) {
-    Column& sum = sums[static_cast<std::size_t>(k)];
-    if (sum.terms.empty()) continue;
-    sum.variable = id.variable;
-    sum.component = k;
-    request.columns.push_back(column(output_column_label(id.variable, k) + "@" + set, sum));
+    const std::vector<Term>& terms = sums[static_cast<std::size_t>(k)];
+    if (terms.empty()) continue;
+    request.columns.push_back(column(output_column_label(variable, k) + "@" + set,
+                                     {variable, k}, terms));
   }
 }
 
 void HistoryColumns::element_columns(const OutputIdentifier& id,
-                                     const std::vector<std::int32_t>& elements, Request& request,
+                                     std::span<const std::int32_t> elements, Request& request,
                                      bool totals, bool totals_only, const std::string& set) {
   const OutputVariableInfo* info = output_variable_info(id.variable);
   if (!info) return;
@@ -234,17 +248,18 @@ void HistoryColumns::element_columns(const OutputIdentifier& id,
     return;
   }
   const bool spring_variable = info->kind == OutputKind::Spring;
-  std::array<Column, 7> sums;
+  const std::string_view variable = info->name;
+  std::array<std::vector<Term>, 7> sums;
   for (std::int32_t e : elements) {
     const Element& element = model_.elements[static_cast<std::size_t>(e)];
     if (is_spring_or_dashpot(element.type) != spring_variable) continue;
     const std::string where = qualified_label(model_, element.instance, element.label);
     if (spring_variable) {
       const Term term{Source::Spring, plan_.spring_of_element[static_cast<std::size_t>(e)]};
-      sums[1].terms.push_back(term);
+      if (totals) sums[1].push_back(term);
       if (!totals_only) {
         request.columns.push_back(
-            column(output_column_label(id.variable, 1) + "@" + where, {id.variable, 1, {term}}));
+            column(output_column_label(id.variable, 1) + "@" + where, {variable, 1}, {&term, 1}));
       }
       continue;
     }
@@ -254,28 +269,27 @@ void HistoryColumns::element_columns(const OutputIdentifier& id,
     const Term term{Source::Connector, c};
     if (id.components == 0) {
       if (!totals_only) {
-        request.columns.push_back(column(id.variable + "@" + where, {id.variable, 0, {term}}));
+        request.columns.push_back(column(id.variable + "@" + where, {variable, 0}, {&term, 1}));
       }
       continue;
     }
     const ComponentMask defined = r.available | r.constrained;
     for (int k = 1; k <= 6; ++k) {
       if (!(id.components & defined & (1u << (k - 1)))) continue;
-      sums[static_cast<std::size_t>(k)].terms.push_back(term);
+      if (totals) sums[static_cast<std::size_t>(k)].push_back(term);
       if (!totals_only) {
         request.columns.push_back(
-            column(output_column_label(id.variable, k) + "@" + where, {id.variable, k, {term}}));
+            column(output_column_label(id.variable, k) + "@" + where, {variable, k}, {&term, 1}));
       }
     }
   }
-  if (totals) total_columns(id, sums, request, set);
+  if (totals) total_columns(variable, sums, request, set);
 }
 
 // CDERF-<name> / CDERU-<name> (derived-components-and-potentials.md §4): one column per element
 // and derived component; a bare request lists every derived component with a context of its kind.
 void HistoryColumns::derived_columns(const OutputIdentifier& id,
-                                     const std::vector<std::int32_t>& elements,
-                                     Request& request) {
+                                     std::span<const std::int32_t> elements, Request& request) {
   const bool force = id.variable == "CDERF";
   for (std::int32_t e : elements) {
     const std::int32_t c = plan_.connector_of_element[static_cast<std::size_t>(e)];
@@ -296,7 +310,8 @@ void HistoryColumns::derived_columns(const OutputIdentifier& id,
     const std::string where = qualified_label(model_, element.instance, element.label);
     for (std::int32_t t : terms) {
       const Name& name = behavior.derived_terms[static_cast<std::size_t>(t)].name;
-      Column column_data{id.variable, 0, {{Source::Connector, c}}};
+      Column column_data{output_variable_info(id.variable)->name, 0};
+      const Term term{Source::Connector, c};
       column_data.derived = derived_component(b, behavior, name.key);
       if (const auto use = first_derived_context(behavior, name.key, true); force && use) {
         // A friction potential acts on the friction force, a CONTACT FORCE on the connector
@@ -308,7 +323,8 @@ void HistoryColumns::derived_columns(const OutputIdentifier& id,
         }
       }
       request.columns.push_back(
-          column(output_column_label(id.variable, 0, name.display) + "@" + where, column_data));
+          column(output_column_label(id.variable, 0, name.display) + "@" + where, column_data,
+                 {&term, 1}));
     }
   }
 }
@@ -329,7 +345,9 @@ std::int32_t HistoryColumns::derived_component(std::int32_t behavior_index,
 void HistoryColumns::node_columns(const OutputIdentifier& id, const std::vector<std::int32_t>& nodes,
                                   Request& request, bool totals, bool totals_only,
                                   const std::string& set) {
-  std::array<Column, 7> sums;
+  const OutputVariableInfo* info = output_variable_info(id.variable);
+  if (!info) return;
+  std::array<std::vector<Term>, 7> sums;
   for (std::int32_t n : nodes) {
     // A DOF that is not active at the node has no column (output-variables.md §3).
     const auto components = static_cast<std::uint8_t>(id.components & active_[static_cast<std::size_t>(n)]);
@@ -338,14 +356,14 @@ void HistoryColumns::node_columns(const OutputIdentifier& id, const std::vector<
     const Term term{Source::Node, n};
     for (int k = 1; k <= 6; ++k) {
       if (!(components & (1u << (k - 1)))) continue;
-      sums[static_cast<std::size_t>(k)].terms.push_back(term);
+      if (totals) sums[static_cast<std::size_t>(k)].push_back(term);
       if (!totals_only) {
         request.columns.push_back(
-            column(output_column_label(id.variable, k) + "@" + where, {id.variable, k, {term}}));
+            column(output_column_label(id.variable, k) + "@" + where, {info->name, k}, {&term, 1}));
       }
     }
   }
-  if (totals) total_columns(id, sums, request, set);
+  if (totals) total_columns(info->name, sums, request, set);
 }
 
 void HistoryColumns::begin_step(std::size_t step) { step_ = step; }
@@ -360,7 +378,7 @@ bool HistoryColumns::due(int increment, bool last) const {
 
 double HistoryColumns::value(const Column& c, ConnectorSystem& system) {
   double sum = 0;
-  for (const Term& t : c.terms) {
+  for (const Term& t : std::span(terms_).subspan(c.first_term, c.term_count)) {
     switch (t.source) {
       case Source::Connector: {
         // The connector's results once per run of its columns: an element has many.

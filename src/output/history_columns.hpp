@@ -7,6 +7,7 @@
 
 #include <array>
 #include <map>
+#include <span>
 #include <string>
 #include <string_view>
 #include <unordered_set>
@@ -42,9 +43,11 @@ class HistoryColumns {
     std::int32_t index = 0;  // connector record, spring record, or global node
   };
   struct Column {
-    std::string variable;  // canonical identifier
-    int component = 0;     // 1…6, 0 for scalars
-    std::vector<Term> terms;
+    std::string_view variable;  // canonical identifier (OutputVariableInfo::name)
+    int component = 0;          // 1…6, 0 for scalars
+    // Its terms, terms_[first_term, first_term + term_count): one array for every column keeps
+    // the setup of 10⁶ columns to two flat arrays (docs/performance.md).
+    std::uint32_t first_term = 0, term_count = 0;
     std::int32_t derived = -1;  // CDERF/CDERU: index into derived_
     // CDERF: the force of its first context (derived-components-and-potentials.md §4).
     enum class DerivedForce : std::uint8_t { Elastic, Friction, Connector };
@@ -74,22 +77,23 @@ class HistoryColumns {
       return name(a) == name(b);
     }
   };
-  // The index of the column called `name`, added with `column` when there is none yet.
-  std::size_t column(const std::string& name, Column column);
+  // The index of the column called `name`, added with `column` and `terms` when there is none
+  // yet.
+  std::size_t column(const std::string& name, Column column, std::span<const Term> terms);
   void expand_steps();
   std::vector<Request> expand_step(const std::vector<const OutputRequest*>& outputs,
                                    const std::vector<const PrintRequest*>& prints,
                                    bool default_request);
-  void element_columns(const OutputIdentifier& id, const std::vector<std::int32_t>& elements,
+  void element_columns(const OutputIdentifier& id, std::span<const std::int32_t> elements,
                        Request& request, bool totals, bool totals_only, const std::string& set);
-  void derived_columns(const OutputIdentifier& id, const std::vector<std::int32_t>& elements,
+  void derived_columns(const OutputIdentifier& id, std::span<const std::int32_t> elements,
                        Request& request);
   std::int32_t derived_component(std::int32_t behavior_index, const ConnectorBehavior& behavior,
                                  const std::string& key);
   void node_columns(const OutputIdentifier& id, const std::vector<std::int32_t>& nodes,
                     Request& request, bool totals, bool totals_only, const std::string& set);
-  void total_columns(const OutputIdentifier& id, std::array<Column, 7>& sums, Request& request,
-                     const std::string& set);
+  void total_columns(std::string_view variable, const std::array<std::vector<Term>, 7>& sums,
+                     Request& request, const std::string& set);
   double value(const Column& column, ConnectorSystem& system);
 
   const Model& model_;
@@ -100,6 +104,7 @@ class HistoryColumns {
                                                                        NameEqual{&names_}};
   bool index_names_ = true;  // false while the default output is built (its names are unique)
   std::vector<Column> columns_;
+  std::vector<Term> terms_;
   std::vector<std::vector<Request>> step_requests_;
   std::size_t step_ = 0;
   std::vector<DerivedComponent> derived_;  // compiled once per (behaviour, name)
