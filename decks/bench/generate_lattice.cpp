@@ -4,9 +4,13 @@
 // x = L, with rollers on the four side faces. Under these conditions the homogeneous stretch
 // u = (εx, 0, 0) is the exact solution (decks/bench/README.md), so the reaction on x = L has a
 // closed form, which --reference writes as JSON.
+// The irregular lattice (--jitter, --patch) moves every node by a seeded random fraction of the
+// spacing in each direction and pulls only a centred square patch of the face x = L (set PULL):
+// no closed form, and Newton must iterate; its JSON has "reaction": null.
 // Usage: generate_lattice --n N --element springa|axial --law linear|nonlinear --out FILE.inp
-//                         [--reference FILE.json]
+//                         [--reference FILE.json] [--jitter F] [--patch P] [--seed S]
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -32,6 +36,27 @@ struct Options {
   bool nonlinear = false;
   std::string out;
   std::string reference;
+  double jitter = 0.0;  // largest node move per direction, as a fraction of the spacing
+  double patch = 1.0;   // side of the pulled square of x = L, as a fraction of the face's side
+  std::uint64_t seed = 1;
+
+  bool irregular() const { return jitter > 0.0 || patch < 1.0; }
+};
+
+// splitmix64: the same jitter from the same seed on every platform.
+class Random {
+ public:
+  explicit Random(std::uint64_t seed) : state_(seed) {}
+  double symmetric() {  // uniform in [−1, 1)
+    std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    z ^= z >> 31;
+    return static_cast<double>(z >> 11) * 0x1.0p-52 - 1.0;
+  }
+
+ private:
+  std::uint64_t state_;
 };
 
 struct Offset {
@@ -104,11 +129,19 @@ bool parse(int argc, char** argv, Options& options) {
       options.out = value;
     } else if (key == "--reference") {
       options.reference = value;
+    } else if (key == "--jitter") {
+      options.jitter = std::atof(value.c_str());
+    } else if (key == "--patch") {
+      options.patch = std::atof(value.c_str());
+    } else if (key == "--seed") {
+      options.seed = std::strtoull(value.c_str(), nullptr, 10);
     } else {
       return false;
     }
   }
-  return argc % 2 == 1 && options.n >= 2 && !options.out.empty();
+  // A jitter of half the spacing or more could make two nodes meet.
+  return argc % 2 == 1 && options.n >= 2 && !options.out.empty() && options.jitter >= 0.0 &&
+         options.jitter < 0.5 && options.patch > 0.0 && options.patch <= 1.0;
 }
 
 class DeckWriter {
@@ -119,15 +152,30 @@ class DeckWriter {
   void write(const Table& table) const {
     const double length = kSpacing * static_cast<double>(n_ - 1);
     const double strain = options_.nonlinear ? kNonlinearStrain : kLinearStrain;
-    std::fprintf(file_, "*HEADING\n%ldx%ldx%ld %s lattice, %s law, stretch %g (clinch benchmark)\n",
-                 n_, n_, n_, options_.axial ? "AXIAL connector" : "SPRINGA",
+    std::fprintf(file_, "*HEADING\n%ldx%ldx%ld %s%s lattice, %s law, stretch %g",
+                 n_, n_, n_, options_.irregular() ? "irregular " : "",
+                 options_.axial ? "AXIAL connector" : "SPRINGA",
                  options_.nonlinear ? "nonlinear" : "linear", strain);
-    std::fprintf(file_, "*NODE, NSET=NALL\n");
+    if (options_.irregular()) {
+      std::fprintf(file_, " (jitter %g, patch %g, seed %llu)", options_.jitter, options_.patch,
+                   static_cast<unsigned long long>(options_.seed));
+    }
+    std::fprintf(file_, " (clinch benchmark)\n*NODE, NSET=NALL\n");
+    Random random(options_.seed);
+    const double jitter = options_.jitter * kSpacing;
     for (long i = 0; i < n_; ++i) {
       for (long j = 0; j < n_; ++j) {
         for (long k = 0; k < n_; ++k) {
-          std::fprintf(file_, "%ld, %.1f, %.1f, %.1f\n", label(i, j, k), kSpacing * i, kSpacing * j,
-                       kSpacing * k);
+          if (!options_.irregular()) {
+            std::fprintf(file_, "%ld, %.1f, %.1f, %.1f\n", label(i, j, k), kSpacing * i,
+                         kSpacing * j, kSpacing * k);
+            continue;
+          }
+          const double x = kSpacing * i + jitter * random.symmetric();
+          const double y = kSpacing * j + jitter * random.symmetric();
+          const double z = kSpacing * k + jitter * random.symmetric();
+          std::fprintf(file_, "%ld, %s, %s, %s\n", label(i, j, k), real_text(x).c_str(),
+                       real_text(y).c_str(), real_text(z).c_str());
         }
       }
     }
@@ -138,6 +186,16 @@ class DeckWriter {
     write_face("YMAX", [this](long, long j, long) { return j == n_ - 1; });
     write_face("ZMIN", [](long, long, long k) { return k == 0; });
     write_face("ZMAX", [this](long, long, long k) { return k == n_ - 1; });
+    // The centred square of x = L whose side is `patch` times the face's (at least one node).
+    const double half = 0.5 * options_.patch * static_cast<double>(n_ - 1) + 1e-9;
+    const double centre = 0.5 * static_cast<double>(n_ - 1);
+    const char* pulled = options_.irregular() ? "PULL" : "XMAX";
+    if (options_.irregular()) {
+      write_face(pulled, [this, half, centre](long i, long j, long k) {
+        return i == n_ - 1 && std::abs(static_cast<double>(j) - centre) <= half &&
+               std::abs(static_cast<double>(k) - centre) <= half;
+      });
+    }
     write_behavior(table);
     std::fprintf(file_, "*BOUNDARY\nXMIN, 1, 1\nYMIN, 2, 2\nYMAX, 2, 2\nZMIN, 3, 3\nZMAX, 3, 3\n");
     // Both laws under NLGEOM: CalculiX solves a SPRINGA step without it neither as small-strain
@@ -145,8 +203,8 @@ class DeckWriter {
     // increments from 0.1, with the minimum increment written out so both codes use the same.
     std::fprintf(file_, options_.nonlinear ? "*STEP, NLGEOM\n*STATIC\n0.1, 1.0, 1.e-5, 1.0\n"
                                            : "*STEP, NLGEOM\n*STATIC\n");
-    std::fprintf(file_, "*BOUNDARY\nXMAX, 1, 1, %s\n", real_text(strain * length).c_str());
-    std::fprintf(file_, "*NODE PRINT, NSET=XMAX, TOTALS=ONLY\nRF\n*END STEP\n");
+    std::fprintf(file_, "*BOUNDARY\n%s, 1, 1, %s\n", pulled, real_text(strain * length).c_str());
+    std::fprintf(file_, "*NODE PRINT, NSET=%s, TOTALS=ONLY\nRF\n*END STEP\n", pulled);
   }
 
  private:
@@ -243,21 +301,29 @@ void write_reference(const Options& options, const Table& table, long elements, 
   const double strain = options.nonlinear ? kNonlinearStrain : kLinearStrain;
   const long n = options.n;
   const char* formula =
-      options.nonlinear
+      options.irregular()
+          ? "none: irregular lattice (jittered nodes, patch pulled)"
+      : options.nonlinear
           ? "R = sum_{b,c in -1..1} (N-|b|)(N-|c|) F(l-l0) (1+e)h/l, l0 = h sqrt(1+b^2+c^2), "
             "l = h sqrt((1+e)^2+b^2+c^2), F the piecewise linear table of the deck"
           : "R = sum_{b,c in -1..1} (N-|b|)(N-|c|) k (l-l0) (1+e)h/l, l0 = h sqrt(1+b^2+c^2), "
             "l = h sqrt((1+e)^2+b^2+c^2)";
+  char reaction[32] = "null";
+  if (!options.irregular()) {
+    std::snprintf(reaction, sizeof reaction, "%.17g", closed_form_reaction(options, table));
+  }
   std::fprintf(file,
                "{\n  \"n\": %ld,\n  \"element\": \"%s\",\n  \"law\": \"%s\",\n  \"nlgeom\": %s,\n"
                "  \"spacing\": %.17g,\n  \"length\": %.17g,\n  \"strain\": %.17g,\n"
                "  \"displacement\": %.17g,\n  \"stiffness\": %.17g,\n  \"nodes\": %ld,\n"
                "  \"elements\": %ld,\n  \"dofs\": %ld,\n  \"free_dofs\": %ld,\n"
-               "  \"reaction_set\": \"XMAX\",\n  \"reaction\": %.17g,\n  \"formula\": \"%s\"\n}\n",
+               "  \"jitter\": %.17g,\n  \"patch\": %.17g,\n  \"seed\": %llu,\n"
+               "  \"reaction_set\": \"%s\",\n  \"reaction\": %s,\n  \"formula\": \"%s\"\n}\n",
                n, options.axial ? "axial" : "springa", options.nonlinear ? "nonlinear" : "linear",
                "true", kSpacing, kSpacing * (n - 1), strain, strain * kSpacing * (n - 1),
                kStiffness, n * n * n, elements, 3 * n * n * n, 3 * n * n * n - 6 * n * n,
-               closed_form_reaction(options, table), formula);
+               options.jitter, options.patch, static_cast<unsigned long long>(options.seed),
+               options.irregular() ? "PULL" : "XMAX", reaction, formula);
 }
 
 long element_count(long n) {
@@ -274,7 +340,8 @@ int main(int argc, char** argv) {
   if (!parse(argc, argv, options)) {
     std::fprintf(stderr,
                  "usage: %s --n N --element springa|axial --law linear|nonlinear --out FILE.inp "
-                 "[--reference FILE.json]\n",
+                 "[--reference FILE.json] [--jitter F (0 <= F < 0.5)] [--patch P (0 < P <= 1)] "
+                 "[--seed S]\n",
                  argv[0]);
     return 3;
   }
