@@ -30,6 +30,13 @@ constexpr double kAbsoluteTolerance = 1e-50;
 // Rebuilding costs about as much as a few tens of iterations, so a hierarchy that has lost
 // half its effectiveness is no longer worth keeping.
 constexpr int kIterationSlack = 5;
+// Not a KSPConvergedReason: CG reported convergence but the true residual is above the tolerance.
+constexpr int kTrueResidualTooLarge = -1000;
+
+std::string reason_name(int reason) {
+  if (reason == kTrueResidualTooLarge) return "a true residual above the tolerance";
+  return KSPConvergedReasons[reason];
+}
 
 LinearStatus petsc_failure(PetscErrorCode code, const char* stage, std::string* message) {
   const char* text = nullptr;
@@ -53,6 +60,7 @@ void PetscSolver::release() {
   if (matrix_ != nullptr) MatDestroy(&matrix_);
   if (rhs_ != nullptr) VecDestroy(&rhs_);
   if (solution_ != nullptr) VecDestroy(&solution_);
+  if (work_ != nullptr) VecDestroy(&work_);
   factorized_ = false;
 }
 
@@ -140,6 +148,7 @@ PetscErrorCode PetscSolver::create_objects() {
   // The vectors wrap the caller's arrays at each solve.
   PetscCall(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, n, nullptr, &rhs_));
   PetscCall(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, n, nullptr, &solution_));
+  PetscCall(MatCreateVecs(matrix_, nullptr, &work_));
   return direct_ ? use_direct() : configure_iterative();
 }
 
@@ -237,7 +246,7 @@ LinearStatus PetscSolver::set_up_iterative(std::string* message) {
   // old hierarchy until the iterations show it has gone stale (kIterationSlack).
   const bool rebuild = rebuild_preconditioner_;
   PetscErrorCode code = KSPSetReusePreconditioner(ksp_, rebuild ? PETSC_FALSE : PETSC_TRUE);
-  if (code == 0) code = KSPSetUp(ksp_);
+  if (code == 0) code = set_up_preconditioner();
   if (code != 0) {
     rebuild_preconditioner_ = true;
     return petsc_failure(code, "BoomerAMG setup", message);
@@ -255,7 +264,7 @@ LinearStatus PetscSolver::set_up_iterative(std::string* message) {
 LinearStatus PetscSolver::factor_directly(std::string* message) {
   PC pc = nullptr;
   Mat factor = nullptr;
-  PetscErrorCode code = KSPSetUp(ksp_);
+  PetscErrorCode code = set_up_preconditioner();
   if (code == 0) code = KSPGetPC(ksp_, &pc);
   if (code == 0) code = PCFactorGetMatrix(pc, &factor);
   MatFactorError error = MAT_FACTOR_NOERROR;
@@ -278,6 +287,16 @@ LinearStatus PetscSolver::factor_directly(std::string* message) {
   return LinearStatus::Ok;
 }
 
+PetscErrorCode PetscSolver::set_up_preconditioner() {
+  // Once a KSP is set up, KSPSetUp leaves the preconditioner to the next KSPSolve; PCSetUp
+  // refactors (or rebuilds the hierarchy) now, so that its outcome can be read here.
+  PC pc = nullptr;
+  PetscCall(KSPSetUp(ksp_));
+  PetscCall(KSPGetPC(ksp_, &pc));
+  PetscCall(PCSetUp(pc));
+  return 0;
+}
+
 PetscErrorCode PetscSolver::run_solve() {
   PetscInt iterations = 0;
   PetscCall(KSPSolve(ksp_, rhs_, solution_));
@@ -286,6 +305,17 @@ PetscErrorCode PetscSolver::run_solve() {
   reason_ = reason;
   PetscCall(KSPGetIterationNumber(ksp_, &iterations));
   iterations_ = static_cast<int>(iterations);
+  if (direct_ || reason_ < 0) return 0;
+  // CG measures its residual by a recurrence, which can run away from b − Ax: on a singular
+  // system whose right-hand side is not in the range, AMG's near-singular coarse solve lets the
+  // recurrence report convergence while x grows along the null vector. One product checks the
+  // promise ‖b − Ax‖ ≤ rtol ‖b‖ that callers rely on.
+  PetscReal b_norm = 0.0, r_norm = 0.0;
+  PetscCall(MatMult(matrix_, solution_, work_));
+  PetscCall(VecAYPX(work_, -1.0, rhs_));
+  PetscCall(VecNorm(work_, NORM_2, &r_norm));
+  PetscCall(VecNorm(rhs_, NORM_2, &b_norm));
+  if (r_norm > rtol_ * b_norm && r_norm > kAbsoluteTolerance) reason_ = kTrueResidualTooLarge;
   return 0;
 }
 
@@ -309,6 +339,7 @@ LinearStatus PetscSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x,
   if (code == 0 && reason_ < 0 && !direct_ && !preconditioner_is_fresh_) {
     // A stale hierarchy is never a reason to fail: rebuild it for the current values and retry.
     code = KSPSetReusePreconditioner(ksp_, PETSC_FALSE);
+    if (code == 0) code = set_up_preconditioner();
     if (code == 0) code = run_solve();
     ++preconditioner_setups_;
     baseline_iterations_ = -1;
@@ -318,7 +349,7 @@ LinearStatus PetscSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x,
     // CG failed with a fresh hierarchy: the matrix is indefinite or singular after all. MUMPS
     // either solves it or reports it singular.
     iterative_failure = fmt::format("CG + BoomerAMG stopped on {} after {} iterations",
-                                    KSPConvergedReasons[reason_], iterations_);
+                                    reason_name(reason_), iterations_);
     code = use_direct();
     if (code == 0) {
       const LinearStatus factored = factor_directly(message);
@@ -337,7 +368,7 @@ LinearStatus PetscSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x,
     KSPGetResidualNorm(ksp_, &residual);
     set_message(message, fmt::format("PETSc {} did not converge: {} after {} iterations (residual "
                                      "norm {:.3g}, |b| = {:.3g}){}",
-                                     method(), KSPConvergedReasons[reason_], iterations_,
+                                     method(), reason_name(reason_), iterations_,
                                      static_cast<double>(residual), b.norm(),
                                      iterative_failure.empty() ? "" : "; " + iterative_failure));
     return LinearStatus::Failure;

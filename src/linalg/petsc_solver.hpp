@@ -57,12 +57,13 @@ class PetscSolver final : public LinearSolver {
   // One KSPSolve on the vectors placed over b and x; the KSPConvergedReason is kept in
   // `reason_`. These helpers return PETSc error codes (PetscErrorCode).
   int run_solve();
+  int set_up_preconditioner();
 
   bool direct_;
   std::string init_error_;
   Mat matrix_ = nullptr;
   KSP ksp_ = nullptr;
-  Vec rhs_ = nullptr, solution_ = nullptr;
+  Vec rhs_ = nullptr, solution_ = nullptr, work_ = nullptr;
   int n_ = -1;
   int input_nonzeros_ = 0;
   // The full pattern in compressed rows (PETSc's AIJ layout); `source_[q]` is the index in the
