@@ -65,6 +65,9 @@ void PetscSolver::release() {
 }
 
 void PetscSolver::set_relative_tolerance(double rtol) {
+  if (!(rtol > 0.0 && rtol < 1.0)) {
+    throw std::invalid_argument(fmt::format("relative tolerance {} outside (0, 1)", rtol));
+  }
   rtol_ = rtol;
   if (ksp_ != nullptr && !direct_) {
     KSPSetTolerances(ksp_, rtol_, kAbsoluteTolerance, PETSC_DEFAULT, kMaxIterations);
@@ -180,10 +183,11 @@ PetscErrorCode PetscSolver::use_direct() {
   PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
   PetscCall(PCFactorSetUpMatSolverType(pc));
   PetscCall(PCFactorGetMatrix(pc, &factor));
-  // Null-pivot detection (ICNTL(24)): a pivot below CNTL(3) times the norm of the scaled matrix
-  // is counted (INFOG(28)) instead of being divided by, with the tolerance every backend uses
-  // (pivot_checks.hpp), so that an exactly singular system is reported whatever rounding left in
-  // its last pivot.
+  // Null-pivot detection (ICNTL(24)): a pivot whose remaining row or column is below CNTL(3)
+  // times the norm of the scaled matrix is counted (INFOG(28)) instead of being divided by, so
+  // that an exactly singular system is reported whatever rounding left in its last pivot. The
+  // tolerance is the one every backend uses (pivot_checks.hpp), relative here to the whole
+  // scaled matrix rather than to the pivot's column.
   PetscCall(MatMumpsSetIcntl(factor, 24, 1));
   PetscCall(MatMumpsSetCntl(factor, 3, kSingularPivotTolerance));
   return 0;

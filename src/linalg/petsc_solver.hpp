@@ -34,6 +34,7 @@ class PetscSolver final : public LinearSolver {
   LinearStatus factorize(const SparseMatrix& k, std::string* message) override;
   LinearStatus solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, std::string* message) override;
   int failed_pivot() const override { return failed_pivot_; }
+  // Throws std::invalid_argument outside 0 < rtol < 1.
   void set_relative_tolerance(double rtol) override;
 
   // "cg+boomeramg" or "mumps": the method the next solve uses.
