@@ -37,8 +37,8 @@ int main(int argc, char** argv) {
                 "first iteration of each increment and log the worst entries (small decks)");
   run->add_option("--solver", solver,
                   "linear solver: auto (CHOLMOD for SPD systems, UMFPACK otherwise), cholmod, "
-                  "umfpack or dense")
-      ->check(CLI::IsMember({"auto", "cholmod", "umfpack", "dense"}))
+                  "umfpack, dense or petsc (CG with BoomerAMG for SPD systems, MUMPS otherwise)")
+      ->check(CLI::IsMember({"auto", "cholmod", "umfpack", "dense", "petsc"}))
       ->capture_default_str();
 
   std::string deck;
@@ -160,6 +160,7 @@ int main(int argc, char** argv) {
     run_options.solver = solver == "cholmod"   ? clinch::SolverChoice::Cholmod
                          : solver == "umfpack" ? clinch::SolverChoice::Umfpack
                          : solver == "dense"   ? clinch::SolverChoice::Dense
+                         : solver == "petsc"   ? clinch::SolverChoice::Petsc
                                                : clinch::SolverChoice::Automatic;
     return clinch::run_deck(run_options);
   }

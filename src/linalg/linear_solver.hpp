@@ -19,7 +19,7 @@ const char* to_string(LinearStatus status);
 class LinearSolver {
  public:
   virtual ~LinearSolver() = default;
-  // "cholmod", "umfpack" or "dense".
+  // "cholmod", "umfpack", "dense" or "petsc".
   virtual const char* name() const = 0;
   // Symbolic analysis (ordering, elimination tree) of the pattern; values are not read. Once
   // per pattern. A malformed pattern throws std::invalid_argument (a bug of its builder).
@@ -33,15 +33,20 @@ class LinearSolver {
   // Row/column of the zero or negative pivot reported by the last failed factorize, −1 if
   // unknown or if the last factorize succeeded.
   virtual int failed_pivot() const = 0;
+  // Relative residual ‖b − Ax‖ ≤ rtol ‖b‖ that later solves need reach, for an inexact Newton
+  // method that solves loosely far from the solution. Iterative backends stop there (PETSc CG:
+  // 1e-10 until set); direct backends solve to round-off whatever is asked and ignore it.
+  virtual void set_relative_tolerance(double /*rtol*/) {}
 };
 
-enum class SolverChoice { Automatic, Cholmod, Umfpack, Dense };
+enum class SolverChoice { Automatic, Cholmod, Umfpack, Dense, Petsc };
 
 // Automatic: CHOLMOD for symmetric positive definite systems (switching to UMFPACK if a
 // factorization finds the matrix indefinite, fallback_solver.hpp), UMFPACK otherwise (symmetric
 // indefinite KKT systems with Lagrange multipliers, connection-types.md §3.8; softening and
 // unsymmetric tangents, behaviors.md §7.4). Dense: Cholesky when symmetric and positive definite,
-// LU otherwise. Asking for CHOLMOD on an unsymmetric system throws std::invalid_argument.
+// LU otherwise. Petsc: CG with BoomerAMG when symmetric and positive definite, MUMPS LU
+// otherwise (petsc_solver.hpp). Asking for CHOLMOD on an unsymmetric system throws std::invalid_argument.
 std::unique_ptr<LinearSolver> make_linear_solver(SolverChoice choice, bool symmetric,
                                                  bool positive_definite);
 

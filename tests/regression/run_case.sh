@@ -3,6 +3,8 @@
 #   run_case.sh CLINCH CASE_DIR          `clinch run` on the case's deck, then `clinch compare` of
 #                                        the history against golden.csv with the tolerances in
 #                                        compare.args.
+#   run_case.sh --solver NAME CLINCH CASE_DIR
+#                                        as the first form, with `clinch run --solver NAME`.
 #   run_case.sh --unsymm CLINCH CASE_DIR the deck as written (each step stores the upper triangle
 #                                        of its symmetric tangent: CHOLMOD, or UMFPACK with
 #                                        multipliers) against the deck with every *STEP given
@@ -15,12 +17,16 @@
 set -u
 
 unsymm=0
+solver=auto
 if [ "${1:-}" = "--unsymm" ]; then
   unsymm=1
   shift
+elif [ "${1:-}" = "--solver" ] && [ "$#" -ge 2 ]; then
+  solver=$2
+  shift 2
 fi
 if [ "$#" -ne 2 ]; then
-  echo "usage: $0 [--unsymm] CLINCH CASE_DIR" >&2
+  echo "usage: $0 [--unsymm | --solver NAME] CLINCH CASE_DIR" >&2
   exit 3
 fi
 clinch=$1
@@ -42,7 +48,7 @@ trap 'rm -rf "$out"' EXIT
 # Runs `clinch run` on deck $1 into directory $2 with job name `job`.
 run_deck() {
   mkdir -p "$2"
-  "$clinch" run "$1" --out "$2" --job job --quiet
+  "$clinch" run "$1" --out "$2" --job job --quiet --solver "$solver"
   status=$?
   if [ "$status" -ne 0 ]; then
     echo "verify $case_name: 'clinch run' of $1 exited with status $status (expected 0)" >&2

@@ -1,7 +1,9 @@
-// Backend parity of the linear solvers (ARCHITECTURE.md, testing habit 7): CHOLMOD, UMFPACK and
-// the dense reference run on the same systems, stored as upper triangles and as full matrices:
-// SPD, 3-D lattice, symmetric indefinite KKT (connection-types.md §3.8), unsymmetric, singular
-// (connection-types.md §1.1: the failed pivot is named), and refactorization on one pattern.
+// Backend parity of the linear solvers (ARCHITECTURE.md, testing habit 7): CHOLMOD, UMFPACK,
+// the dense reference and PETSc run on the same systems, stored as upper triangles and as full
+// matrices: SPD, 3-D lattice, symmetric indefinite KKT (connection-types.md §3.8), unsymmetric,
+// singular (connection-types.md §1.1: the failed pivot is named), and refactorization on one
+// pattern. PETSc solves SPD systems with CG + AMG, to its KSP tolerance rather than to round-off,
+// and the others with MUMPS.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -17,6 +19,7 @@
 
 #include "src/linalg/cholmod_solver.hpp"
 #include "src/linalg/linear_solver.hpp"
+#include "src/linalg/petsc_solver.hpp"
 #include "src/linalg/pivot_checks.hpp"
 #include "tests/support/model_problems.hpp"
 
@@ -29,6 +32,9 @@ namespace {
 enum class Storage { Upper, Full };
 
 using EigenSparse = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+// The relative tolerance of PETSc's CG when none is set (petsc_solver.hpp).
+constexpr double kKspRtol = 1e-10;
 
 // The matrix a SparseMatrix stands for, mirrored when stored as an upper triangle: residuals are
 // computed with Eigen, independently of the backends.
@@ -101,6 +107,7 @@ struct Case {
 std::string case_name(const Case& c) {
   const char* backend = c.choice == SolverChoice::Cholmod   ? "Cholmod"
                         : c.choice == SolverChoice::Umfpack ? "Umfpack"
+                        : c.choice == SolverChoice::Petsc   ? "Petsc"
                                                             : "Dense";
   return std::string(backend) + (c.storage == Storage::Upper ? "Upper" : "Full");
 }
@@ -112,6 +119,12 @@ class LinearSolverParity : public ::testing::TestWithParam<Case> {
   SolverChoice choice() const { return GetParam().choice; }
   Storage storage() const { return GetParam().storage; }
   bool is(SolverChoice c) const { return choice() == c; }
+  // Whether a system announced SPD is solved iteratively (PETSc: CG + BoomerAMG).
+  bool iterative() const { return is(SolverChoice::Petsc); }
+  // Relative residual an SPD solve is held to: a backward-stable factorization leaves a few
+  // machine epsilons (1e-12 keeps a margin of ~1e3); CG stops at ‖b − Ax‖ ≤ rtol ‖b‖ measured on
+  // its recursively updated residual, which drifts from the true one by round-off: 10 % margin.
+  double spd_residual_tolerance() const { return iterative() ? 1.1 * kKspRtol : 1e-12; }
 
   // Analyze and factorize `m` with a backend built for (symmetric, positive definite).
   LinearStatus factor(const SparseMatrix& m, bool symmetric, bool positive_definite) {
@@ -124,6 +137,19 @@ class LinearSolverParity : public ::testing::TestWithParam<Case> {
     Eigen::VectorXd x;
     EXPECT_EQ(solver_->solve(b, x, &message_), LinearStatus::Ok) << message_;
     return x;
+  }
+
+  // CG factors nothing, so a singular SPD matrix whose lines are not zero passes factorize. The
+  // right-hand side of ones has a component along the null vector of both singular systems
+  // below (the floating pair, the rigid translation), which CG cannot reduce: CG fails, MUMPS
+  // takes over and reports the system singular, without naming the equation.
+  void expect_singular_at_solve(const SparseMatrix& m) {
+    ASSERT_EQ(factor(m, true, true), LinearStatus::Ok) << message_;
+    Eigen::VectorXd x;
+    EXPECT_EQ(solver_->solve(Eigen::VectorXd::Ones(m.n), x, &message_), LinearStatus::Singular)
+        << message_;
+    EXPECT_NE(message_.find("singular system"), std::string::npos) << message_;
+    EXPECT_EQ(solver_->failed_pivot(), -1);
   }
 
   std::unique_ptr<LinearSolver> solver_;
@@ -145,8 +171,9 @@ TEST_P(LinearSolverParity, SmallSpdSystemHasItsKnownSolution) {
   const Eigen::VectorXd x = solve(b);
   // A backward-stable factorization leaves a residual of a few machine epsilons; the condition
   // number is below 10, so the error of x is of the same order. 1e-12 leaves a margin of ~1e3.
-  EXPECT_LT(relative_residual(m, x, b), 1e-12);
-  EXPECT_LT((x - expected).lpNorm<Eigen::Infinity>(), 1e-12);
+  // For CG the relative error is at most cond · 1.1e-10 ≈ 1.1e-9 of ‖x‖₂ ≈ 7.4: below 1e-8.
+  EXPECT_LT(relative_residual(m, x, b), spd_residual_tolerance());
+  EXPECT_LT((x - expected).lpNorm<Eigen::Infinity>(), iterative() ? 1e-8 : 1e-12);
   EXPECT_EQ(solver_->failed_pivot(), -1);
 }
 
@@ -159,9 +186,9 @@ TEST_P(LinearSolverParity, LaplacianOfA3dLatticeIsSolved) {
   ASSERT_EQ(factor(m, true, true), LinearStatus::Ok) << message_;
   const Eigen::VectorXd x = solve(b);
   // Residual as above; the condition number of the lattice Laplacian is ≈ 4 (N + 1)² / π² ≈ 80,
-  // so the relative error is ~1e-14, far below 1e-11.
-  EXPECT_LT(relative_residual(m, x, b), 1e-12);
-  EXPECT_LT((x - expected).norm() / expected.norm(), 1e-11);
+  // so the relative error is ~1e-14, far below 1e-11; for CG at most 80 · 1.1e-10 < 1e-8.
+  EXPECT_LT(relative_residual(m, x, b), spd_residual_tolerance());
+  EXPECT_LT((x - expected).norm() / expected.norm(), iterative() ? 1e-8 : 1e-11);
 }
 
 // [K Cᵀ; C 0] with the grounded chain and two constraints, u0 − u2 = g1 and u3 = g2: symmetric,
@@ -241,6 +268,10 @@ TEST_P(LinearSolverParity, FloatingSpringIsSingularNotIndefinite) {
   a.topLeftCorner(4, 4) = grounded_chain();
   a.bottomRightCorner(2, 2) << 3.0, -3.0, -3.0, 3.0;
   const SparseMatrix m = from_dense(a, storage());
+  if (iterative()) {
+    expect_singular_at_solve(m);
+    return;
+  }
   EXPECT_EQ(factor(m, true, true), LinearStatus::Singular) << message_;
   EXPECT_TRUE(solver_->failed_pivot() == 4 || solver_->failed_pivot() == 5)
       << solver_->failed_pivot();
@@ -267,6 +298,10 @@ TEST_P(LinearSolverParity, RigidBodyModeIsSingular) {
   EigenSparse a(lattice.n, lattice.n);
   a.setFromTriplets(entries.begin(), entries.end());
   const SparseMatrix m = from_eigen(a, storage());
+  if (iterative()) {
+    expect_singular_at_solve(m);
+    return;
+  }
   EXPECT_EQ(factor(m, true, true), LinearStatus::Singular) << message_;
   if (!is(SolverChoice::Umfpack)) {
     EXPECT_GE(solver_->failed_pivot(), 0);
@@ -288,7 +323,8 @@ TEST_P(LinearSolverParity, NegativePivotIsNotPositiveDefiniteForCholesky) {
   const Eigen::VectorXd b = a * expected;
   const SparseMatrix m = from_dense(a, storage());
   const LinearStatus status = factor(m, true, true);
-  if (is(SolverChoice::Umfpack)) {
+  // PETSc: the negative diagonal proves the matrix indefinite, and MUMPS LU takes over from CG.
+  if (is(SolverChoice::Umfpack) || is(SolverChoice::Petsc)) {
     ASSERT_EQ(status, LinearStatus::Ok) << message_;
     EXPECT_LT((solve(b) - expected).lpNorm<Eigen::Infinity>(),
               1e-12);  // the chain block: cond ≈ 39
@@ -308,7 +344,7 @@ TEST_P(LinearSolverParity, RefactorizationReusesTheAnalysis) {
     const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(k.n, -1.0, 2.0);
     Eigen::VectorXd x;
     ASSERT_EQ(solver_->solve(b, x, &message_), LinearStatus::Ok) << message_;
-    EXPECT_LT(relative_residual(k, x, b), 1e-12);  // cond ≈ 20: residual of a few epsilons
+    EXPECT_LT(relative_residual(k, x, b), spd_residual_tolerance());  // cond ≈ 20
   };
   check_solve(m);
   // New values on the same pattern, still diagonally dominant: 8 + 0.3 (j mod 5) against at
@@ -352,7 +388,9 @@ INSTANTIATE_TEST_SUITE_P(Backends, LinearSolverParity,
                                            Case{SolverChoice::Umfpack, Storage::Upper},
                                            Case{SolverChoice::Umfpack, Storage::Full},
                                            Case{SolverChoice::Dense, Storage::Upper},
-                                           Case{SolverChoice::Dense, Storage::Full}),
+                                           Case{SolverChoice::Dense, Storage::Full},
+                                           Case{SolverChoice::Petsc, Storage::Upper},
+                                           Case{SolverChoice::Petsc, Storage::Full}),
                          [](const ::testing::TestParamInfo<Case>& info) {
                            return case_name(info.param);
                          });
@@ -383,6 +421,7 @@ TEST(LinearSolverChoice, AutomaticTakesCholeskyOnlyForSpdSystems) {
   EXPECT_STREQ(make_linear_solver(SolverChoice::Automatic, true, false)->name(), "umfpack");
   EXPECT_STREQ(make_linear_solver(SolverChoice::Automatic, false, false)->name(), "umfpack");
   EXPECT_STREQ(make_linear_solver(SolverChoice::Dense, false, false)->name(), "dense");
+  EXPECT_STREQ(make_linear_solver(SolverChoice::Petsc, true, true)->name(), "petsc");
   EXPECT_THROW(make_linear_solver(SolverChoice::Cholmod, false, false), std::invalid_argument);
 }
 
@@ -391,7 +430,8 @@ TEST(LinearSolverChoice, MalformedPatternIsABug) {
   lower_entry.symmetric_upper = true;  // rows below the diagonal in upper storage
   SparseMatrix unsorted = from_dense(grounded_chain(), Storage::Full);
   std::swap(unsorted.row_idx[0], unsorted.row_idx[1]);
-  for (SolverChoice choice : {SolverChoice::Cholmod, SolverChoice::Umfpack, SolverChoice::Dense}) {
+  for (SolverChoice choice : {SolverChoice::Cholmod, SolverChoice::Umfpack, SolverChoice::Dense,
+                              SolverChoice::Petsc}) {
     const auto solver = make_linear_solver(choice, true, true);
     EXPECT_THROW(solver->analyze(lower_entry, nullptr), std::invalid_argument);
     EXPECT_THROW(solver->analyze(unsorted, nullptr), std::invalid_argument);
@@ -415,6 +455,97 @@ TEST(CholmodOrdering, KeepsTheBetterOfAmdAndMetisOnA3dLattice) {
     RecordProperty(std::string("nnz_L_") + trial.ordering, std::to_string(trial.factor_nonzeros));
   }
   RecordProperty("kept", solver.ordering());
+}
+
+// Factorizes and solves K x = b with an analysed PETSc backend; the relative residual, computed
+// independently of PETSc.
+double petsc_lattice_residual(PetscSolver& solver, const SparseMatrix& k, const Eigen::VectorXd& b) {
+  std::string message;
+  EXPECT_EQ(solver.factorize(k, &message), LinearStatus::Ok) << message;
+  Eigen::VectorXd x;
+  EXPECT_EQ(solver.solve(b, x, &message), LinearStatus::Ok) << message;
+  return relative_residual(k, x, b);
+}
+
+TEST(PetscSolver, RelativeToleranceIsTheKspTolerance) {
+  const SparseMatrix k = laplacian_3d(16);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(k.n, -1.0, 2.0);
+  PetscSolver solver(true, true);
+  std::string message;
+  ASSERT_EQ(solver.analyze(k, &message), LinearStatus::Ok) << message;
+  solver.set_relative_tolerance(1e-3);
+  const double loose = petsc_lattice_residual(solver, k, b);
+  const int loose_iterations = solver.iterations();
+  solver.set_relative_tolerance(1e-10);
+  const double tight = petsc_lattice_residual(solver, k, b);
+  // CG stops at the first iterate within the tolerance (10 % margin as in the parity suite); one
+  // AMG-CG iteration reduces the residual by about ten, so the loose solve stops far above the
+  // tight one's residual and in fewer iterations.
+  EXPECT_LE(loose, 1.1e-3);
+  EXPECT_LE(tight, 1.1e-10);
+  EXPECT_GT(loose, 1e3 * tight);
+  EXPECT_LT(loose_iterations, solver.iterations());
+  RecordProperty("iterations_rtol_1e-3", loose_iterations);
+  RecordProperty("iterations_rtol_1e-10", solver.iterations());
+}
+
+TEST(PetscSolver, LargeLatticeTakesFewAmgCgIterations) {
+  const SparseMatrix k = laplacian_3d(30);  // 27000 unknowns
+  Eigen::VectorXd expected(k.n);
+  for (int i = 0; i < k.n; ++i) expected(i) = std::sin(0.37 * i) + 0.1 * (i % 7);
+  const Eigen::VectorXd b = to_eigen(k) * expected;
+  PetscSolver solver(true, true);
+  std::string message;
+  ASSERT_EQ(solver.analyze(k, &message), LinearStatus::Ok) << message;
+  EXPECT_LE(petsc_lattice_residual(solver, k, b), 1.1e-10);
+  EXPECT_STREQ(solver.method(), "cg+boomeramg");
+  // Multigrid makes the iteration count independent of the lattice size; BoomerAMG reaches 1e-10
+  // on the 7-point Laplacian in about ten iterations. 25 would be a badly configured AMG.
+  EXPECT_LE(solver.iterations(), 25);
+  RecordProperty("iterations", solver.iterations());
+}
+
+TEST(PetscSolver, AmgHierarchyIsReusedAcrossCloseTangents) {
+  const SparseMatrix k = laplacian_3d(12);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(k.n, -1.0, 2.0);
+  PetscSolver solver(true, true);
+  std::string message;
+  ASSERT_EQ(solver.analyze(k, &message), LinearStatus::Ok) << message;
+  EXPECT_LE(petsc_lattice_residual(solver, k, b), 1.1e-10);
+  const int first = solver.iterations();
+  // A tangent 2 % stiffer on the diagonal, as from one Newton iteration to the next: the old
+  // hierarchy still preconditions it well, so it is kept.
+  SparseMatrix stiffer = k;
+  for (int j = 0; j < k.n; ++j) {
+    for (int p = k.col_ptr[j]; p < k.col_ptr[j + 1]; ++p) {
+      if (k.row_idx[p] == j) stiffer.values[p] *= 1.02;
+    }
+  }
+  EXPECT_LE(petsc_lattice_residual(solver, stiffer, b), 1.1e-10);
+  EXPECT_EQ(solver.preconditioner_setups(), 1);
+  EXPECT_LE(solver.iterations(), 2 * first + 5);
+}
+
+TEST(PetscSolver, MumpsReportsASingularSystemAndRecovers) {
+  // An unsymmetric system (MUMPS) with a floating pair of dofs, then the same pattern with the
+  // pair grounded: a failed factorization does not poison the next one.
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(6, 6);
+  a.topLeftCorner(4, 4) = grounded_chain();
+  a(1, 3) += 0.8;
+  a.bottomRightCorner(2, 2) << 3.0, -3.0, -3.0, 3.0;
+  const SparseMatrix singular = from_dense(a, Storage::Full);
+  PetscSolver solver(false, false);
+  std::string message;
+  ASSERT_EQ(solver.analyze(singular, &message), LinearStatus::Ok) << message;
+  EXPECT_EQ(solver.factorize(singular, &message), LinearStatus::Singular) << message;
+  EXPECT_NE(message.find("singular system"), std::string::npos) << message;
+  SparseMatrix grounded = singular;
+  grounded.values[grounded.col_ptr[5] - 2] += 1.0;  // entry (4, 4): dof 4 on a support
+  ASSERT_EQ(solver.factorize(grounded, &message), LinearStatus::Ok) << message;
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(6, 1.0, 2.0);
+  Eigen::VectorXd x;
+  ASSERT_EQ(solver.solve(b, x, &message), LinearStatus::Ok) << message;
+  EXPECT_LT(relative_residual(grounded, x, b), 1e-12);  // LU: round-off, cond ≈ 1e2
 }
 
 TEST(PivotChecks, ClassifiesFailedCholeskyPivots) {

@@ -1,0 +1,89 @@
+// PETSc backend, the one that scales past a direct factorization (ARCHITECTURE.md "Beyond one
+// machine"): conjugate gradients preconditioned by hypre BoomerAMG for symmetric positive definite
+// tangents, MUMPS LU through PETSc for unsymmetric and indefinite ones (KKT systems with
+// multipliers, connection-types.md §3.8; softening, behaviors.md §7.4). Sequential for now: one
+// AIJ matrix on one process.
+#pragma once
+
+#include <vector>
+
+#include "src/linalg/linear_solver.hpp"
+
+// PETSc's handle types, declared as petscsys.h, petscmat.h, petscvec.h and petscksp.h do, so that
+// this header does not pull PETSc and MPI into everything that builds a solver.
+typedef struct _p_Mat* Mat;
+typedef struct _p_Vec* Vec;
+typedef struct _p_KSP* KSP;
+
+namespace clinch {
+
+class PetscSolver final : public LinearSolver {
+ public:
+  // `symmetric` and `positive_definite` as for make_linear_solver: both true selects CG + AMG,
+  // anything else MUMPS.
+  PetscSolver(bool symmetric, bool positive_definite);
+  ~PetscSolver() override;
+  PetscSolver(const PetscSolver&) = delete;
+  PetscSolver& operator=(const PetscSolver&) = delete;
+
+  const char* name() const override { return "petsc"; }
+  LinearStatus analyze(const SparseMatrix& pattern, std::string* message) override;
+  // CG + AMG factors nothing, so beyond the checks every backend makes (non-finite entries, a
+  // row and column of zeros) it cannot tell a singular matrix here; a singular system shows at
+  // solve, where CG fails and MUMPS then reports it.
+  LinearStatus factorize(const SparseMatrix& k, std::string* message) override;
+  LinearStatus solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, std::string* message) override;
+  int failed_pivot() const override { return failed_pivot_; }
+  // Throws std::invalid_argument outside 0 < rtol < 1.
+  void set_relative_tolerance(double rtol) override;
+
+  // "cg+boomeramg" or "mumps": the method the next solve uses.
+  const char* method() const { return direct_ ? "mumps" : "cg+boomeramg"; }
+  // Krylov iterations of the last solve (1 for MUMPS), and how many AMG setups have been made;
+  // for reports, tests and benchmarks.
+  int iterations() const { return iterations_; }
+  int preconditioner_setups() const { return preconditioner_setups_; }
+
+ private:
+  void release();
+  // The AIJ matrix with its exact pattern, the vectors and the KSP of the current method.
+  int create_objects();
+  // Makes the KSP a MUMPS LU for good (the matrix proved indefinite or CG failed on it).
+  int use_direct();
+  int configure_iterative();
+  // Numeric LU of the current values; Singular when MUMPS meets a null pivot.
+  LinearStatus factor_directly(std::string* message);
+  // Builds the AMG hierarchy of the current values, or keeps the last one (see the .cpp).
+  LinearStatus set_up_iterative(std::string* message);
+  // One KSPSolve on the vectors placed over b and x; the KSPConvergedReason is kept in
+  // `reason_`. These helpers return PETSc error codes (PetscErrorCode).
+  int run_solve();
+  int set_up_preconditioner();
+
+  bool direct_;
+  std::string init_error_;
+  Mat matrix_ = nullptr;
+  KSP ksp_ = nullptr;
+  Vec rhs_ = nullptr, solution_ = nullptr, work_ = nullptr;
+  int n_ = -1;
+  int input_nonzeros_ = 0;
+  // The full pattern in compressed rows (PETSc's AIJ layout); `source_[q]` is the index in the
+  // caller's values of AIJ entry q, so that factorize only gathers values.
+  std::vector<int> row_ptr_, col_idx_;
+  std::vector<int> source_;
+  std::vector<int> diagonal_;
+  std::vector<char> line_is_nonzero_;
+  double rtol_ = 1e-10;
+  bool factorized_ = false;
+  int failed_pivot_ = -1;
+  int reason_ = 0;
+  int iterations_ = 0;
+  // AMG reuse: the iterations of the first solve after the last setup, whether the current
+  // hierarchy was built for the current values, and whether the next factorize must rebuild.
+  int baseline_iterations_ = -1;
+  bool preconditioner_is_fresh_ = false;
+  bool rebuild_preconditioner_ = true;
+  int preconditioner_setups_ = 0;
+};
+
+}  // namespace clinch
