@@ -57,7 +57,9 @@ ConnectorSystem::ConnectorSystem(const Model& model, const AnalysisPlan& plan)
       multiplier_active_(static_cast<std::size_t>(plan.dofs.equations()), 0),
       internal_(Eigen::VectorXd::Zero(plan.dofs.equations())),
       predictor_(internal_),
-      deleted_(plan.connectors.size(), 0) {
+      deleted_(plan.connectors.size(), 0),
+      owned_connectors_{0, plan.connectors.size()},
+      owned_springs_{0, plan.springs.size()} {
   use_storage(true);
 }
 
@@ -152,15 +154,21 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
   element_forces_ = {};
   if (predicting_) predictor_.setZero();
   if (tangent) std::fill(tangent->values.begin(), tangent->values.end(), 0.0);
+  // Each rank sets the flags of its own connectors' multipliers (exchange() merges them).
+  if (communicator_) std::fill(multiplier_active_.begin(), multiplier_active_.end(), 0);
   state_.request = {};
   const bool want_tangent = tangent != nullptr;
   LocalSystem& local = *local_;
-  for (std::size_t c = 0; c < plan_.connectors.size(); ++c) {
-    const EvalStatus status = elements_.evaluate(c, context_, state_, want_tangent, local);
-    if (!status.ok) return status;
+  // The first failure ends this process's share of the elements; a distributed run still
+  // exchanges it, so that every rank fails the evaluation with it.
+  EvalStatus failed;
+  for (std::size_t c = owned_connectors_.begin; failed.ok && c < owned_connectors_.end; ++c) {
+    failed = elements_.evaluate(c, context_, state_, want_tangent, local);
+    if (!failed.ok) break;
     if (!connector_finite(c, local)) {
-      return {false, fmt::format("connector element {}: a force or output is not finite",
-                                 elements_.label(c))};
+      failed = {false, fmt::format("connector element {}: a force or output is not finite",
+                                   elements_.label(c))};
+      break;
     }
     const ConnectorRecord& r = plan_.connectors[c];
     for (int j = 0; j < r.multiplier_count; ++j) {
@@ -172,19 +180,22 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
     add_force_entries(r.local, r.column_count, local);
     add_component_forces(state_.results[c]);
   }
-  for (std::size_t s = 0; s < plan_.springs.size(); ++s) {
+  for (std::size_t s = owned_springs_.begin; failed.ok && s < owned_springs_.end; ++s) {
     const SpringRecord& spring = plan_.springs[s];
     evaluate_spring(plan_, spring, {state_.x, state_.x_n, context_.dt, context_.nlgeom},
                     want_tangent, local, springs_[s]);
     if (zero_unless_non_finite(local.r.head(spring.local.count)) +
             springs_[s].force * 0.0 + springs_[s].delta * 0.0 != 0.0) {
       const Element& e = model_.elements[static_cast<std::size_t>(spring.element)];
-      return {false, fmt::format("spring element {}: a force or output is not finite",
-                                 qualified_label(model_, e.instance, e.label))};
+      failed = {false, fmt::format("spring element {}: a force or output is not finite",
+                                   qualified_label(model_, e.instance, e.label))};
+      break;
     }
     scatter(spring.local, pattern_->spring_offset[s], local, false, tangent);
     add_force_entries(spring.local, spring.local.count, local);
   }
+  if (communicator_) exchange(tangent, failed);
+  if (!failed.ok) return failed;
   residual = internal_ - conditions_.external();
   if (predicting_ && tangent) residual += predictor_;
   for (int eq : conditions_.prescribed()) {

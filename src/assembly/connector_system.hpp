@@ -14,6 +14,7 @@
 #include "src/assembly/connector_element.hpp"
 #include "src/assembly/increment_conditions.hpp"
 #include "src/assembly/spring_element.hpp"
+#include "src/parallel/communicator.hpp"
 #include "src/solver/nonlinear_problem.hpp"
 
 namespace clinch {
@@ -75,6 +76,12 @@ class ConnectorSystem final : public NonlinearProblem {
   std::vector<std::string> release_failed_components() override;
   StepRequest step_request() const override { return state_.request; }
 
+  // ---- distributed runs (docs/parallel.md) ----
+  // From the next evaluation on, evaluates only this rank's share of the connectors and springs
+  // and exchanges the results after each evaluation (connector_system_exchange.cpp), so that
+  // every rank holds what a serial evaluation gives. Without it every element is evaluated here.
+  void distribute(Communicator& communicator);
+
   // ---- results of the last evaluation ----
   double value(int equation) const { return state_.x[equation]; }
   double converged_value(int equation) const { return state_.x_n[equation]; }
@@ -101,6 +108,10 @@ class ConnectorSystem final : public NonlinearProblem {
   void snap_prescribed_rotations();
   void apply_prescribed_rotations();
   void finish_prescribed_correction(const Eigen::VectorXd& dx);
+  // After a distributed evaluation: the first failure of any rank on every rank, else the sums,
+  // results and requests of all ranks.
+  void exchange(SparseMatrix* tangent, EvalStatus& status);
+  void exchange_step_requests();
 
   const Model& model_;
   const AnalysisPlan& plan_;
@@ -120,6 +131,9 @@ class ConnectorSystem final : public NonlinearProblem {
   Eigen::VectorXd predictor_;
   bool predicting_ = false;
   std::vector<std::uint8_t> deleted_;  // per connector: deleted by damage (§7.4)
+  Communicator* communicator_ = nullptr;  // null: a serial run
+  ItemRange owned_connectors_, owned_springs_;  // the elements this process evaluates
+  std::vector<std::size_t> history_bytes_;      // per rank: the bytes of its connectors' history
   std::vector<std::string> events_;
 };
 

@@ -14,6 +14,7 @@
 #include "src/cli/blas_threads.hpp"
 #include "src/cli/stop_signals.hpp"
 #include "src/output/history_columns.hpp"
+#include "src/parallel/communicator.hpp"
 #include "src/solver/step_driver.hpp"
 
 namespace clinch {
@@ -40,6 +41,20 @@ std::string check_job_name(const std::string& job) {
   return {};
 }
 
+// A distributed run's ranks (docs/parallel.md), for the stop test below; null in a serial run.
+Communicator* world = nullptr;
+
+// The stop test of a distributed run: a signal that reached any rank stops every rank at the same
+// point, since each rank asks at the same points of the same analysis.
+const char* stop_signal_of_any_rank() {
+  const char* mine = stop_signal_name();
+  const int first = world->first(mine != nullptr);
+  if (first == world->size()) return nullptr;
+  static std::string name;
+  name = world->broadcast(mine ? mine : "", first);
+  return name.c_str();
+}
+
 }  // namespace
 
 int run_deck(const RunCommandOptions& options) {
@@ -52,6 +67,25 @@ int run_deck(const RunCommandOptions& options) {
       return kExitUsage;
     }
   }
+  // Under `mpirun -n P`, P > 1: every rank runs the analysis on its share of the elements, and
+  // rank 0 alone writes the outputs and prints (docs/parallel.md).
+  std::unique_ptr<Communicator> communicator;
+  if (launched_on_several_ranks()) {
+    std::string error;
+    communicator = make_world_communicator(&error);
+    if (!communicator) {
+      std::cerr << "clinch: error: " << error << "\n";
+      return kExitUsage;
+    }
+    world = communicator.get();
+    if (options.check_tangent) {
+      if (world->rank() == 0) {
+        std::cerr << "clinch: error: --check-tangent runs on one process, not under mpirun\n";
+      }
+      return kExitUsage;
+    }
+  }
+  const bool writer = !communicator || communicator->rank() == 0;
   const auto start = std::chrono::steady_clock::now();
   SourceManager sources;
   DiagnosticSink sink;
@@ -75,9 +109,13 @@ int run_deck(const RunCommandOptions& options) {
     return kExitUsage;
   }
   const fs::path base = fs::path(options.out_dir) / job;
-  RunLog log(options.quiet ? nullptr : &std::cout, &std::cerr);
+  // The other ranks of a distributed run write nowhere.
+  const auto output_path = [&](const char* extension) {
+    return writer ? base.string() + extension : std::string("/dev/null");
+  };
+  RunLog log(options.quiet || !writer ? nullptr : &std::cout, writer ? &std::cerr : nullptr);
   std::string error;
-  if (!log.open(base.string() + ".log", &error)) {
+  if (!log.open(output_path(".log"), &error)) {
     std::cerr << "clinch: error: " << error << "\n";
     return kExitUsage;
   }
@@ -109,13 +147,21 @@ int run_deck(const RunCommandOptions& options) {
                        model.nodes.empty() ? 0.0 : double(node_equations) / model.nodes.size(),
                        plan->dofs.equations() - node_equations));
   ConnectorSystem system(model, *plan);
+  if (communicator) {
+    system.distribute(*communicator);
+    log.info(fmt::format("distributed over {} processes: each evaluates about {} connectors and "
+                         "{} springs",
+                         communicator->size(),
+                         (plan->connectors.size() + communicator->size() - 1) / communicator->size(),
+                         (plan->springs.size() + communicator->size() - 1) / communicator->size()));
+  }
   const double plan_seconds = seconds_since(plan_start);
   const auto columns_start = std::chrono::steady_clock::now();
   HistoryColumns columns(model, *plan);
   HistoryTable table;
   StatusFile status;
-  if (!table.open(base.string() + ".history.csv", columns.names(), &error) ||
-      !status.open(base.string() + ".sta", &error)) {
+  if (!table.open(output_path(".history.csv"), columns.names(), &error) ||
+      !status.open(output_path(".sta"), &error)) {
     log.error(error);
     return kExitUsage;
   }
@@ -126,12 +172,14 @@ int run_deck(const RunCommandOptions& options) {
     if (!symmetric && options.solver == SolverChoice::Cholmod) return nullptr;
     return make_linear_solver(options.solver, symmetric, definite);
   };
-  Progress progress = Progress::for_stderr(options.quiet);
+  Progress progress = Progress::for_stderr(options.quiet || !writer);
   RunOutputs outputs{table, columns, status, log, progress};
   // From here a signal stops the run cleanly; before, nothing had been run, so it may just kill.
   catch_stop_signals();
   const RunResult result = run_analysis(model, system, solvers, outputs,
-                                        RunOptions{options.check_tangent, stop_signal_name});
+                                        RunOptions{options.check_tangent,
+                                                   world ? stop_signal_of_any_rank
+                                                         : stop_signal_name});
   progress.finish();
   const double seconds = seconds_since(start);
   const std::string summary = fmt::format("{}, {}, {} in {:.3f} s",

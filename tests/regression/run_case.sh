@@ -5,6 +5,12 @@
 #                                        compare.args.
 #   run_case.sh --solver NAME CLINCH CASE_DIR
 #                                        as the first form, with `clinch run --solver NAME`.
+#   run_case.sh --mpi RANKS [--solver NAME] CLINCH CASE_DIR
+#                                        `mpirun -n RANKS clinch run` against the serial run of
+#                                        the same deck and solver, compared to 1e-8 of each
+#                                        column's scale (docs/parallel.md): the ranks sum their
+#                                        shares of the residual and tangent in another order than
+#                                        one process, and an iterative solver stops at 1e-10.
 #   run_case.sh --unsymm CLINCH CASE_DIR the deck as written (each step stores the upper triangle
 #                                        of its symmetric tangent: CHOLMOD, or UMFPACK with
 #                                        multipliers) against the deck with every *STEP given
@@ -18,6 +24,11 @@ set -u
 
 unsymm=0
 solver=auto
+ranks=0
+if [ "${1:-}" = "--mpi" ] && [ "$#" -ge 2 ]; then
+  ranks=$2
+  shift 2
+fi
 if [ "${1:-}" = "--unsymm" ]; then
   unsymm=1
   shift
@@ -26,7 +37,7 @@ elif [ "${1:-}" = "--solver" ] && [ "$#" -ge 2 ]; then
   shift 2
 fi
 if [ "$#" -ne 2 ]; then
-  echo "usage: $0 [--unsymm | --solver NAME] CLINCH CASE_DIR" >&2
+  echo "usage: $0 [--unsymm | [--mpi RANKS] [--solver NAME]] CLINCH CASE_DIR" >&2
   exit 3
 fi
 clinch=$1
@@ -45,10 +56,11 @@ done
 out=$(mktemp -d "${TMPDIR:-/tmp}/clinch-verify-$case_name.XXXXXX") || exit 3
 trap 'rm -rf "$out"' EXIT
 
-# Runs `clinch run` on deck $1 into directory $2 with job name `job`.
+# Runs `clinch run` on deck $1 into directory $2 with job name `job` (under mpirun with
+# $launch set).
 run_deck() {
   mkdir -p "$2"
-  "$clinch" run "$1" --out "$2" --job job --quiet --solver "$solver"
+  $launch "$clinch" run "$1" --out "$2" --job job --quiet --solver "$solver"
   status=$?
   if [ "$status" -ne 0 ]; then
     echo "verify $case_name: 'clinch run' of $1 exited with status $status (expected 0)" >&2
@@ -57,8 +69,22 @@ run_deck() {
   fi
 }
 
+launch=
 run_deck "$deck" "$out/as-written"
-if [ "$unsymm" -eq 1 ]; then
+if [ "$ranks" -gt 0 ]; then
+  # Open MPI refuses root without these; --oversubscribe lets a 2-core machine run 2 ranks
+  # beside other tests.
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+  launch="mpirun --oversubscribe -n $ranks"
+  run_deck "$deck" "$out/distributed"
+  if ! grep -q "distributed over $ranks processes" "$out/distributed/job.log"; then
+    echo "verify $case_name: the mpirun -n $ranks run did not distribute its elements" >&2
+    exit 1
+  fi
+  result="$out/distributed/job.history.csv"
+  reference="$out/as-written/job.history.csv"
+  compare_args="--rtol 1e-8 --atol 1e-12"
+elif [ "$unsymm" -eq 1 ]; then
   # *STEP lines (any case, with or without parameters) gain ", UNSYMM=YES".
   sed -E 's/^(\*[Ss][Tt][Ee][Pp])([ ,].*)?$/\1\2, UNSYMM=YES/' "$deck" > "$out/$case_name.inp"
   run_deck "$out/$case_name.inp" "$out/full"

@@ -1,0 +1,116 @@
+// The exchange after a distributed evaluation (docs/parallel.md): each rank evaluated its share
+// of the elements into zeroed arrays, so sums give the whole residual and tangent; each rank's
+// share of the results and of the laws' trial history is sent to the others. Every rank then
+// holds the state a serial evaluation gives, up to the order of the sums' additions.
+#include <fmt/format.h>
+
+#include <cstring>
+#include <type_traits>
+
+#include "src/assembly/connector_system.hpp"
+
+namespace clinch {
+namespace {
+
+static_assert(std::is_trivially_copyable_v<SpringResult>);
+
+// One rank's StepRequest as text: ratio, flag, message, then the warnings.
+std::string encode(const StepRequest& request) {
+  std::string text = fmt::format("{:a}\n{}\n{}\n{}", request.dt_ratio, request.unreliable ? 1 : 0,
+                                 request.message.size(), request.message);
+  for (const StepRequest::Warning& w : request.warnings) {
+    text += fmt::format("{}\n{}\n{}", w.element, w.message.size(), w.message);
+  }
+  return text;
+}
+
+void merge_encoded(const std::string& text, StepRequest& into) {
+  std::size_t at = 0;
+  const auto line = [&] {
+    const std::size_t end = text.find('\n', at);
+    std::string value = text.substr(at, end - at);
+    at = end + 1;
+    return value;
+  };
+  const auto sized = [&] {
+    const std::size_t length = std::stoull(line());
+    std::string value = text.substr(at, length);
+    at += length;
+    return value;
+  };
+  const double ratio = std::strtod(line().c_str(), nullptr);
+  const bool unreliable = line() == "1";
+  const std::string message = sized();
+  if (ratio < into.dt_ratio) {
+    into.dt_ratio = ratio;
+    into.message = message;
+  }
+  into.unreliable = into.unreliable || unreliable;
+  while (at < text.size()) {
+    StepRequest::Warning w;
+    w.element = std::stoull(line());
+    w.message = sized();
+    into.warnings.push_back(std::move(w));
+  }
+}
+
+}  // namespace
+
+void ConnectorSystem::distribute(Communicator& communicator) {
+  communicator_ = &communicator;
+  const int size = communicator.size();
+  owned_connectors_ = share_of(plan_.connectors.size(), communicator.rank(), size);
+  owned_springs_ = share_of(plan_.springs.size(), communicator.rank(), size);
+  // The laws' history is laid out connector by connector (AnalysisPlan::add_law): a rank's share
+  // of it runs from its first connector's first slot to the next rank's.
+  const auto history_start = [&](std::size_t c) {
+    for (; c < plan_.connectors.size(); ++c) {
+      if (!plan_.connectors[c].laws.empty()) return plan_.connectors[c].laws.slots[0].history;
+    }
+    return plan_.history_size;
+  };
+  history_bytes_.assign(static_cast<std::size_t>(size), 0);
+  for (int r = 0; r < size; ++r) {
+    const ItemRange range = share_of(plan_.connectors.size(), r, size);
+    history_bytes_[static_cast<std::size_t>(r)] =
+        (history_start(range.end) - history_start(range.begin)) * sizeof(double);
+  }
+}
+
+void ConnectorSystem::exchange(SparseMatrix* tangent, EvalStatus& status) {
+  Communicator& comm = *communicator_;
+  if (const int failing = comm.first(!status.ok); failing < comm.size()) {
+    status = {false, comm.broadcast(status.message, failing)};
+    return;
+  }
+  comm.sum({internal_.data(), static_cast<std::size_t>(internal_.size())});
+  if (predicting_) comm.sum({predictor_.data(), static_cast<std::size_t>(predictor_.size())});
+  if (tangent) comm.sum(tangent->values);
+  double entries[4] = {element_forces_.sum[0], element_forces_.sum[1],
+                       static_cast<double>(element_forces_.count[0]),
+                       static_cast<double>(element_forces_.count[1])};
+  comm.sum(entries);
+  element_forces_.sum[0] = entries[0];
+  element_forces_.sum[1] = entries[1];
+  element_forces_.count[0] = static_cast<int>(entries[2]);
+  element_forces_.count[1] = static_cast<int>(entries[3]);
+  // Only the owner of a multiplier's connector sets its flag; the others hold 0 there.
+  comm.max(multiplier_active_);
+  comm.share(reinterpret_cast<std::byte*>(state_.results.data()), state_.results.size(),
+             sizeof(ConnectorResult));
+  comm.share_bytes(reinterpret_cast<std::byte*>(state_.history.data()), history_bytes_);
+  comm.share(reinterpret_cast<std::byte*>(springs_.data()), springs_.size(), sizeof(SpringResult));
+  exchange_step_requests();
+}
+
+// The laws' requests (behaviors.md §7.4: a smaller increment) and warnings of every rank, merged
+// in rank order, which is element order.
+void ConnectorSystem::exchange_step_requests() {
+  Communicator& comm = *communicator_;
+  const std::string mine = encode(state_.request);
+  StepRequest merged;
+  for (int r = 0; r < comm.size(); ++r) merge_encoded(comm.broadcast(mine, r), merged);
+  state_.request = std::move(merged);
+}
+
+}  // namespace clinch

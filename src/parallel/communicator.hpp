@@ -1,0 +1,55 @@
+// The ranks of a run (docs/parallel.md). Under `mpirun -n P` every rank reads the deck and holds
+// the whole model and state; each evaluates its own share of the elements, and after every
+// evaluation the ranks exchange what they computed, so that each holds the state a serial run
+// would and takes the same decisions (convergence, cutbacks, active sets) without further
+// messages. A one-rank run uses the serial communicator, whose operations do nothing.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+
+namespace clinch {
+
+// The half-open range [begin, end) of `count` items that rank `rank` of `size` owns: contiguous
+// shares whose sizes differ by at most one.
+struct ItemRange {
+  std::size_t begin = 0, end = 0;
+  bool contains(std::size_t i) const { return i >= begin && i < end; }
+};
+ItemRange share_of(std::size_t count, int rank, int size);
+
+class Communicator {
+ public:
+  virtual ~Communicator() = default;
+  virtual int rank() const = 0;
+  virtual int size() const = 0;
+  // Element-wise over the ranks, in place: every rank ends with the result.
+  virtual void sum(std::span<double> values) = 0;
+  virtual void max(std::span<std::uint8_t> values) = 0;
+  // `all` holds an array of `count` items of `item_bytes` each, rank r's share (share_of) filled
+  // on rank r; afterwards every rank holds every share.
+  virtual void share(std::byte* all, std::size_t count, std::size_t item_bytes) = 0;
+  // The same for an array whose shares have the byte sizes `bytes[r]` (r = 0…size−1), in rank
+  // order.
+  virtual void share_bytes(std::byte* all, std::span<const std::size_t> bytes) = 0;
+  // The lowest rank for which `mine` is true, size() when none is.
+  virtual int first(bool mine) = 0;
+  // Rank `root`'s text, on every rank.
+  virtual std::string broadcast(const std::string& text, int root) = 0;
+};
+
+// One rank: every operation leaves its arguments as they are.
+std::unique_ptr<Communicator> make_serial_communicator();
+
+// The world of `mpirun` (MPI started through PETSc); a one-rank world when clinch runs without it.
+// Null, with `error`, when MPI could not start.
+std::unique_ptr<Communicator> make_world_communicator(std::string* error);
+
+// True when the process was started by mpirun with more than one rank (read from the
+// environment, before MPI starts).
+bool launched_on_several_ranks();
+
+}  // namespace clinch
