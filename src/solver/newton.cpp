@@ -6,6 +6,8 @@
 #include <chrono>
 #include <cmath>
 
+#include "src/solver/forcing_term.hpp"
+
 namespace clinch {
 namespace {
 
@@ -43,6 +45,7 @@ NewtonReport solve_increment(NonlinearProblem& problem, LinearSolver& solver,
   Eigen::VectorXd residual(problem.size()), correction(problem.size());
   SparseMatrix tangent = problem.pattern();
   const Eigen::VectorXd* last_correction = nullptr;
+  ForcingTerm forcing;  // how accurately an iterative solver solves each correction
   for (int iteration = 0;; ++iteration) {
     const EvalStatus status = problem.evaluate(residual, &tangent);
     if (!status.ok) {
@@ -77,6 +80,7 @@ NewtonReport solve_increment(NonlinearProblem& problem, LinearSolver& solver,
     }
     std::string message;
     const auto start = std::chrono::steady_clock::now();
+    solver.set_relative_tolerance(forcing.next(iteration, norms.residual_norm));
     LinearStatus linear = solver.factorize(tangent, &message);
     if (linear == LinearStatus::Ok) linear = solver.solve(-residual, correction, &message);
     report.linear_seconds +=
