@@ -62,8 +62,9 @@ PetscErrorCode set_boomeramg_defaults() {
 LinearStatus petsc_failure(PetscErrorCode code, const char* stage, std::string* message) {
   const char* text = nullptr;
   PetscErrorMessage(code, &text, nullptr);
-  set_message(message, fmt::format("PETSc {} failed: {} (error {})", stage,
-                                   text != nullptr ? text : "unknown error", static_cast<int>(code)));
+  set_message(message,
+              fmt::format("PETSc {} failed: {} (error {})", stage,
+                          text != nullptr ? text : "unknown error", static_cast<int>(code)));
   return LinearStatus::Failure;
 }
 

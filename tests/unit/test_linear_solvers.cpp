@@ -430,8 +430,8 @@ TEST(LinearSolverChoice, MalformedPatternIsABug) {
   lower_entry.symmetric_upper = true;  // rows below the diagonal in upper storage
   SparseMatrix unsorted = from_dense(grounded_chain(), Storage::Full);
   std::swap(unsorted.row_idx[0], unsorted.row_idx[1]);
-  for (SolverChoice choice : {SolverChoice::Cholmod, SolverChoice::Umfpack, SolverChoice::Dense,
-                              SolverChoice::Petsc}) {
+  for (SolverChoice choice :
+       {SolverChoice::Cholmod, SolverChoice::Umfpack, SolverChoice::Dense, SolverChoice::Petsc}) {
     const auto solver = make_linear_solver(choice, true, true);
     EXPECT_THROW(solver->analyze(lower_entry, nullptr), std::invalid_argument);
     EXPECT_THROW(solver->analyze(unsorted, nullptr), std::invalid_argument);
@@ -459,7 +459,8 @@ TEST(CholmodOrdering, KeepsTheBetterOfAmdAndMetisOnA3dLattice) {
 
 // Factorizes and solves K x = b with an analysed PETSc backend; the relative residual, computed
 // independently of PETSc.
-double petsc_lattice_residual(PetscSolver& solver, const SparseMatrix& k, const Eigen::VectorXd& b) {
+double petsc_lattice_residual(PetscSolver& solver, const SparseMatrix& k,
+                              const Eigen::VectorXd& b) {
   std::string message;
   EXPECT_EQ(solver.factorize(k, &message), LinearStatus::Ok) << message;
   Eigen::VectorXd x;
