@@ -72,7 +72,10 @@ LinearStatus petsc_failure(PetscErrorCode code, const char* stage, std::string* 
 
 PetscSolver::PetscSolver(bool symmetric, bool positive_definite)
     : direct_(!(symmetric && positive_definite)) {
-  ensure_petsc_initialized(&init_error_);
+  if (!ensure_petsc_initialized(&init_error_)) return;
+  int ranks = 1;
+  MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
+  distributed_ = ranks > 1;
 }
 
 PetscSolver::~PetscSolver() { release(); }
@@ -83,6 +86,8 @@ void PetscSolver::release() {
   if (rhs_ != nullptr) VecDestroy(&rhs_);
   if (solution_ != nullptr) VecDestroy(&solution_);
   if (work_ != nullptr) VecDestroy(&work_);
+  if (gather_ != nullptr) VecScatterDestroy(&gather_);
+  if (whole_solution_ != nullptr) VecDestroy(&whole_solution_);
   factorized_ = false;
 }
 
@@ -140,7 +145,8 @@ LinearStatus PetscSolver::analyze(const SparseMatrix& pattern, std::string* mess
     n_ = 0;
     return LinearStatus::Ok;
   }
-  if (const PetscErrorCode code = create_objects(); code != 0) {
+  if (const PetscErrorCode code = distributed_ ? create_distributed_objects() : create_objects();
+      code != 0) {
     release();
     return petsc_failure(code, "matrix and solver setup", message);
   }
@@ -177,9 +183,33 @@ PetscErrorCode PetscSolver::create_objects() {
   return direct_ ? use_direct() : configure_iterative();
 }
 
+// Under mpirun: rank r owns the rows share_of(n, r, ranks) gives it (the same contiguous shares as
+// the elements, src/parallel/communicator.hpp), with global column indices.
+PetscErrorCode PetscSolver::create_distributed_objects() {
+  const PetscInt n = static_cast<PetscInt>(row_ptr_.size()) - 1;
+  int rank = 0, ranks = 1;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
+  const PetscInt base = n / ranks, extra = n % ranks;
+  first_row_ = rank * base + std::min<PetscInt>(rank, extra);
+  local_rows_ = base + (rank < extra ? 1 : 0);
+  const int offset = row_ptr_[first_row_];
+  std::vector<PetscInt> local_row_ptr(local_rows_ + 1);
+  for (int r = 0; r <= local_rows_; ++r) local_row_ptr[r] = row_ptr_[first_row_ + r] - offset;
+  local_values_.assign(local_row_ptr[local_rows_], 0.0);
+  PetscCall(MatCreateMPIAIJWithArrays(PETSC_COMM_WORLD, local_rows_, local_rows_, n, n,
+                                      local_row_ptr.data(), col_idx_.data() + offset,
+                                      local_values_.data(), &matrix_));
+  PetscCall(MatSetOption(matrix_, MAT_NEW_NONZERO_LOCATION_ERR, PETSC_TRUE));
+  PetscCall(VecCreateMPIWithArray(PETSC_COMM_WORLD, 1, local_rows_, n, nullptr, &rhs_));
+  PetscCall(MatCreateVecs(matrix_, &solution_, &work_));
+  PetscCall(VecScatterCreateToAll(solution_, &gather_, &whole_solution_));
+  return direct_ ? use_direct() : configure_iterative();
+}
+
 PetscErrorCode PetscSolver::configure_iterative() {
   PC pc = nullptr;
-  PetscCall(KSPCreate(PETSC_COMM_SELF, &ksp_));
+  PetscCall(KSPCreate(distributed_ ? PETSC_COMM_WORLD : PETSC_COMM_SELF, &ksp_));
   PetscCall(KSPSetOperators(ksp_, matrix_, matrix_));
   PetscCall(KSPSetType(ksp_, KSPCG));
   // The true residual ‖b − Ax‖ ≤ rtol ‖b‖ is what the tolerance promises, not a preconditioned
@@ -201,7 +231,7 @@ PetscErrorCode PetscSolver::use_direct() {
   Mat factor = nullptr;
   if (ksp_ != nullptr) PetscCall(KSPDestroy(&ksp_));
   direct_ = true;
-  PetscCall(KSPCreate(PETSC_COMM_SELF, &ksp_));
+  PetscCall(KSPCreate(distributed_ ? PETSC_COMM_WORLD : PETSC_COMM_SELF, &ksp_));
   PetscCall(KSPSetOperators(ksp_, matrix_, matrix_));
   PetscCall(KSPSetType(ksp_, KSPPREONLY));
   PetscCall(KSPGetPC(ksp_, &pc));
@@ -247,13 +277,7 @@ LinearStatus PetscSolver::factorize(const SparseMatrix& k, std::string* message)
     set_message(message, pivot_message(LinearStatus::Singular, failed_pivot_, name()));
     return LinearStatus::Singular;
   }
-  PetscScalar* values = nullptr;
-  if (const PetscErrorCode code = MatSeqAIJGetArray(matrix_, &values); code != 0) {
-    return petsc_failure(code, "matrix access", message);
-  }
-  for (std::size_t q = 0; q < source_.size(); ++q) values[q] = k.values[source_[q]];
-  // Restoring the array marks the matrix as changed, so that PETSc refactors or rebuilds.
-  if (const PetscErrorCode code = MatSeqAIJRestoreArray(matrix_, &values); code != 0) {
+  if (const PetscErrorCode code = copy_values(k); code != 0) {
     return petsc_failure(code, "matrix access", message);
   }
   if (!direct_) {
@@ -317,6 +341,23 @@ LinearStatus PetscSolver::factor_directly(std::string* message) {
   return LinearStatus::Ok;
 }
 
+PetscErrorCode PetscSolver::copy_values(const SparseMatrix& k) {
+  if (distributed_) {
+    const int offset = row_ptr_[first_row_];
+    for (std::size_t q = 0; q < local_values_.size(); ++q) {
+      local_values_[q] = k.values[source_[offset + q]];
+    }
+    PetscCall(MatUpdateMPIAIJWithArray(matrix_, local_values_.data()));
+    return 0;
+  }
+  PetscScalar* values = nullptr;
+  PetscCall(MatSeqAIJGetArray(matrix_, &values));
+  for (std::size_t q = 0; q < source_.size(); ++q) values[q] = k.values[source_[q]];
+  // Restoring the array marks the matrix as changed, so that PETSc refactors or rebuilds.
+  PetscCall(MatSeqAIJRestoreArray(matrix_, &values));
+  return 0;
+}
+
 PetscErrorCode PetscSolver::set_up_preconditioner() {
   // Once a KSP is set up, KSPSetUp leaves the preconditioner to the next KSPSolve; PCSetUp
   // refactors (or rebuilds the hierarchy) now, so that its outcome can be read here.
@@ -356,13 +397,14 @@ LinearStatus PetscSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x,
   }
   x.resize(n_);
   if (n_ == 0) return LinearStatus::Ok;
-  // KSPSolve reads b only; PETSc's vector interface has no const array.
-  PetscErrorCode code = VecPlaceArray(rhs_, const_cast<double*>(b.data()));
-  if (code == 0) code = VecPlaceArray(solution_, x.data());
+  // KSPSolve reads b only; PETSc's vector interface has no const array. Distributed: this rank's
+  // share of b, and a solution of its own gathered into x at the end.
+  PetscErrorCode code = VecPlaceArray(rhs_, const_cast<double*>(b.data()) + first_row_);
+  if (code == 0) code = VecPlaceArray(distributed_ ? whole_solution_ : solution_, x.data());
   if (code != 0) return petsc_failure(code, "vector setup", message);
   const auto reset = [&] {
     VecResetArray(rhs_);
-    VecResetArray(solution_);
+    VecResetArray(distributed_ ? whole_solution_ : solution_);
   };
   code = run_solve();
   std::string iterative_failure;
@@ -389,6 +431,12 @@ LinearStatus PetscSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x,
         return factored;
       }
       code = run_solve();
+    }
+  }
+  if (code == 0 && distributed_ && reason_ >= 0) {
+    code = VecScatterBegin(gather_, solution_, whole_solution_, INSERT_VALUES, SCATTER_FORWARD);
+    if (code == 0) {
+      code = VecScatterEnd(gather_, solution_, whole_solution_, INSERT_VALUES, SCATTER_FORWARD);
     }
   }
   reset();

@@ -1,8 +1,9 @@
 // PETSc backend, the one that scales past a direct factorization (ARCHITECTURE.md "Beyond one
 // machine"): conjugate gradients preconditioned by hypre BoomerAMG for symmetric positive definite
 // tangents, MUMPS LU through PETSc for unsymmetric and indefinite ones (KKT systems with
-// multipliers, connection-types.md §3.8; softening, behaviors.md §7.4). Sequential for now: one
-// AIJ matrix on one process.
+// multipliers, connection-types.md §3.8; softening, behaviors.md §7.4). On one process the matrix
+// is a sequential AIJ; under mpirun each rank holds its share of the rows, and every rank passes
+// the same whole matrix and right-hand side and receives the whole solution (docs/parallel.md).
 #pragma once
 
 #include <vector>
@@ -14,6 +15,7 @@
 typedef struct _p_Mat* Mat;
 typedef struct _p_Vec* Vec;
 typedef struct _p_KSP* KSP;
+typedef struct _p_PetscSF* PetscSF;  // VecScatter is PetscSF
 
 namespace clinch {
 
@@ -48,6 +50,9 @@ class PetscSolver final : public LinearSolver {
   void release();
   // The AIJ matrix with its exact pattern, the vectors and the KSP of the current method.
   int create_objects();
+  int create_distributed_objects();
+  // Writes the values of `k` into the matrix (this rank's rows when distributed).
+  int copy_values(const SparseMatrix& k);
   // Makes the KSP a MUMPS LU for good (the matrix proved indefinite or CG failed on it).
   int use_direct();
   int configure_iterative();
@@ -62,6 +67,14 @@ class PetscSolver final : public LinearSolver {
 
   bool direct_;
   std::string init_error_;
+  // Several ranks: this rank's rows [first_row_, first_row_ + local_rows_) of the distributed
+  // matrix, its values in the order of that share of col_idx_, and the scatter that gives every
+  // rank the whole solution.
+  bool distributed_ = false;
+  int first_row_ = 0, local_rows_ = 0;
+  std::vector<double> local_values_;
+  PetscSF gather_ = nullptr;
+  Vec whole_solution_ = nullptr;
   Mat matrix_ = nullptr;
   KSP ksp_ = nullptr;
   Vec rhs_ = nullptr, solution_ = nullptr, work_ = nullptr;
