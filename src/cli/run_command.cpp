@@ -92,7 +92,7 @@ int run_deck(const RunCommandOptions& options) {
   Model model;
   std::string io_error;
   if (read_deck_file(options.deck, sources, model, sink, &io_error) == ReadStatus::IoError) {
-    std::cerr << "clinch: error: " << io_error << "\n";
+    if (writer) std::cerr << "clinch: error: " << io_error << "\n";
     return kExitUsage;
   }
   report_run_refusals(model, sink);
@@ -104,7 +104,7 @@ int run_deck(const RunCommandOptions& options) {
   std::error_code ec;
   fs::create_directories(options.out_dir, ec);
   if (ec) {
-    std::cerr << fmt::format("clinch: error: cannot create output directory '{}': {}\n",
+    if (writer) std::cerr << fmt::format("clinch: error: cannot create output directory '{}': {}\n",
                              options.out_dir, ec.message());
     return kExitUsage;
   }
@@ -115,8 +115,11 @@ int run_deck(const RunCommandOptions& options) {
   };
   RunLog log(options.quiet || !writer ? nullptr : &std::cout, writer ? &std::cerr : nullptr);
   std::string error;
-  if (!log.open(output_path(".log"), &error)) {
-    std::cerr << "clinch: error: " << error << "\n";
+  // In a distributed run only rank 0 opens real files: the others follow its outcome rather than
+  // wait for it in the analysis.
+  const auto every_rank_ok = [&](bool ok) { return world ? world->first(!ok) == world->size() : ok; };
+  if (!every_rank_ok(log.open(output_path(".log"), &error))) {
+    if (writer) std::cerr << "clinch: error: " << error << "\n";
     return kExitUsage;
   }
   sink.sort_by_location();
@@ -160,8 +163,8 @@ int run_deck(const RunCommandOptions& options) {
   HistoryColumns columns(model, *plan);
   HistoryTable table;
   StatusFile status;
-  if (!table.open(output_path(".history.csv"), columns.names(), &error) ||
-      !status.open(output_path(".sta"), &error)) {
+  if (!every_rank_ok(table.open(output_path(".history.csv"), columns.names(), &error) &&
+                     status.open(output_path(".sta"), &error))) {
     log.error(error);
     return kExitUsage;
   }
@@ -203,6 +206,9 @@ int run_deck(const RunCommandOptions& options) {
   }
   if (!result.completed) {
     log.error(fmt::format("{}: FAILED after {}", job, summary));
+    // The other ranks wait for rank 0 in their next exchange: an output it could not write ends
+    // them too.
+    if (result.io_error && world) world->abort(kExitUsage);
     // An output that could not be written is an I/O error (cli-contract.md), not a stop of the
     // analysis.
     return result.io_error ? kExitUsage : kExitStopped;

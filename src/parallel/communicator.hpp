@@ -39,6 +39,9 @@ class Communicator {
   virtual int first(bool mine) = 0;
   // Rank `root`'s text, on every rank.
   virtual std::string broadcast(const std::string& text, int root) = 0;
+  // Ends every rank's process with exit status `code`: for a failure one rank meets alone (an
+  // output rank 0 cannot write) while the others wait for it.
+  [[noreturn]] virtual void abort(int code) = 0;
 };
 
 // One rank: every operation leaves its arguments as they are.

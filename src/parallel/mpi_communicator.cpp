@@ -2,6 +2,7 @@
 // (petsc_runtime.hpp), so that the linear solver and the exchanges here share one world.
 #include <mpi.h>
 
+#include <cstdlib>
 #include <limits>
 #include <vector>
 
@@ -71,6 +72,10 @@ class MpiCommunicator final : public Communicator {
       MPI_Bcast(result.data(), static_cast<int>(length), MPI_CHAR, root, MPI_COMM_WORLD);
     }
     return result;
+  }
+  [[noreturn]] void abort(int code) override {
+    MPI_Abort(MPI_COMM_WORLD, code);
+    std::exit(code);  // MPI_Abort does not return; this keeps the promise if it did
   }
 
  private:
