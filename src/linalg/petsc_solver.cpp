@@ -39,12 +39,16 @@ std::string reason_name(int reason) {
   return KSPConvergedReasons[reason];
 }
 
-// BoomerAMG settings for 3-D problems (hypre's recommendations; PETSc's defaults suit 2-D): a
-// strength threshold of 0.5, HMIS coarsening with extended+i interpolation and at most 4 entries
-// per row of the interpolation keep the hierarchy sparse. On the 20³ axial lattice (24 000 dofs)
-// they cut CG + AMG from 10.9 s to 0.8 s per two solves. An option given in PETSC_OPTIONS wins.
+// BoomerAMG settings for 3-D problems (PETSc's defaults suit 2-D): HMIS coarsening with
+// extended+i interpolation and at most 4 entries per row of the interpolation keep the hierarchy
+// sparse (on the 20³ axial lattice, 24 000 dofs, CG + AMG went from 10.9 s to 0.8 s per two
+// solves); one level of aggressive coarsening and a strength threshold of 0.7 thin the first
+// levels further, where the smoother's sweeps cost most: the linear SPRINGA lattice with N = 40
+// (192 000 dofs) went from 58 s to 15 s, and with N = 25 its four Newton iterations took 30 CG
+// iterations instead of 57 (docs/parallel.md). An option given in PETSC_OPTIONS wins.
 constexpr std::pair<const char*, const char*> kBoomerAmgDefaults[] = {
-    {"-pc_hypre_boomeramg_strong_threshold", "0.5"},
+    {"-pc_hypre_boomeramg_strong_threshold", "0.7"},
+    {"-pc_hypre_boomeramg_agg_nl", "1"},
     {"-pc_hypre_boomeramg_coarsen_type", "HMIS"},
     {"-pc_hypre_boomeramg_interp_type", "ext+i"},
     {"-pc_hypre_boomeramg_P_max", "4"},
