@@ -32,8 +32,8 @@ __attribute__((visibility("default"))) clinch::LinearSolver* clinch_plugin_make_
   }
 }
 
-__attribute__((visibility("default"))) clinch::Communicator*
-clinch_plugin_make_world_communicator(std::string* error) {
+__attribute__((visibility("default"))) clinch::Communicator* clinch_plugin_make_world_communicator(
+    std::string* error) {
   try {
     return clinch::make_mpi_world_communicator(error).release();
   } catch (const std::exception& e) {
@@ -45,9 +45,9 @@ clinch_plugin_make_world_communicator(std::string* error) {
 }  // extern "C"
 
 // The signatures above are those the loader expects.
-static_assert(std::is_same_v<decltype(clinch_plugin_interface_version),
-                             clinch::PetscPluginInterfaceVersion>);
-static_assert(std::is_same_v<decltype(clinch_plugin_make_petsc_solver),
-                             clinch::PetscPluginMakeSolver>);
+static_assert(
+    std::is_same_v<decltype(clinch_plugin_interface_version), clinch::PetscPluginInterfaceVersion>);
+static_assert(
+    std::is_same_v<decltype(clinch_plugin_make_petsc_solver), clinch::PetscPluginMakeSolver>);
 static_assert(std::is_same_v<decltype(clinch_plugin_make_world_communicator),
                              clinch::PetscPluginMakeWorldCommunicator>);

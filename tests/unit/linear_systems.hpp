@@ -60,7 +60,7 @@ inline SparseMatrix from_dense(const Eigen::MatrixXd& a, Storage storage) {
 }
 
 inline double relative_residual(const SparseMatrix& m, const Eigen::VectorXd& x,
-                         const Eigen::VectorXd& b) {
+                                const Eigen::VectorXd& b) {
   return (to_eigen(m) * x - b).norm() / b.norm();
 }
 
