@@ -5,7 +5,7 @@
 #include "src/linalg/cholmod_solver.hpp"
 #include "src/linalg/dense_solver.hpp"
 #include "src/linalg/fallback_solver.hpp"
-#include "src/linalg/petsc_solver.hpp"
+#include "src/linalg/petsc_plugin_loader.hpp"
 #include "src/linalg/umfpack_solver.hpp"
 
 namespace clinch {
@@ -40,7 +40,7 @@ std::unique_ptr<LinearSolver> make_linear_solver(SolverChoice choice, bool symme
       return std::make_unique<DenseSolver>(spd ? DenseSolver::Method::Cholesky
                                                : DenseSolver::Method::Lu);
     case SolverChoice::Petsc:
-      return std::make_unique<PetscSolver>(symmetric, positive_definite);
+      return make_petsc_solver(symmetric, positive_definite);
   }
   throw std::invalid_argument("unknown linear solver choice");
 }

@@ -46,8 +46,9 @@ enum class SolverChoice { Automatic, Cholmod, Umfpack, Dense, Petsc };
 // indefinite KKT systems with Lagrange multipliers, connection-types.md §3.8; softening and
 // unsymmetric tangents, behaviors.md §7.4). Dense: Cholesky when symmetric and positive definite,
 // LU otherwise. Petsc: CG with BoomerAMG when symmetric and positive definite, MUMPS LU
-// otherwise (petsc_solver.hpp). Asking for CHOLMOD on an unsymmetric system throws
-// std::invalid_argument.
+// otherwise (petsc_solver.hpp), from the plugin libclinch_petsc.so (petsc_plugin_loader.hpp);
+// when the plugin cannot be loaded, a solver whose every operation fails with the reason. Asking
+// for CHOLMOD on an unsymmetric system throws std::invalid_argument.
 std::unique_ptr<LinearSolver> make_linear_solver(SolverChoice choice, bool symmetric,
                                                  bool positive_definite);
 

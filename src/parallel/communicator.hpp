@@ -47,8 +47,9 @@ class Communicator {
 // One rank: every operation leaves its arguments as they are.
 std::unique_ptr<Communicator> make_serial_communicator();
 
-// The world of `mpirun` (MPI started through PETSc); a one-rank world when clinch runs without it.
-// Null, with `error`, when MPI could not start.
+// The world of `mpirun` (MPI started through PETSc), from the plugin libclinch_petsc.so
+// (petsc_plugin_loader.hpp); a one-rank world when clinch runs without mpirun. Null, with `error`,
+// when the plugin could not be loaded or MPI could not start.
 std::unique_ptr<Communicator> make_world_communicator(std::string* error);
 
 // True when the process was started by mpirun with more than one rank (read from the

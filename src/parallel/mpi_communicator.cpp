@@ -84,7 +84,7 @@ class MpiCommunicator final : public Communicator {
 
 }  // namespace
 
-std::unique_ptr<Communicator> make_world_communicator(std::string* error) {
+std::unique_ptr<Communicator> make_mpi_world_communicator(std::string* error) {
   if (!ensure_petsc_initialized(error)) return nullptr;
   return std::make_unique<MpiCommunicator>();
 }

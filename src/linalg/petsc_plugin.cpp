@@ -1,0 +1,53 @@
+// The entry points of libclinch_petsc.so, the plugin that holds the PETSc backend and the MPI
+// world (petsc_plugin_loader.hpp loads it). Nothing thrown crosses them: a failure is a null
+// result with its reason.
+#include <exception>
+#include <memory>
+#include <string>
+#include <type_traits>
+
+#include "src/linalg/petsc_plugin_loader.hpp"
+#include "src/linalg/petsc_solver.hpp"
+#include "src/parallel/communicator.hpp"
+
+namespace clinch {
+// The MPI world (src/parallel/mpi_communicator.cpp); make_world_communicator in clinch reaches it
+// through the plugin.
+std::unique_ptr<Communicator> make_mpi_world_communicator(std::string* error);
+}  // namespace clinch
+
+extern "C" {
+
+__attribute__((visibility("default"))) int clinch_plugin_interface_version() {
+  return clinch::kPetscPluginInterface;
+}
+
+__attribute__((visibility("default"))) clinch::LinearSolver* clinch_plugin_make_petsc_solver(
+    bool symmetric, bool positive_definite, std::string* error) {
+  try {
+    return new clinch::PetscSolver(symmetric, positive_definite);
+  } catch (const std::exception& e) {
+    if (error != nullptr) *error = std::string("PETSc solver: ") + e.what();
+    return nullptr;
+  }
+}
+
+__attribute__((visibility("default"))) clinch::Communicator* clinch_plugin_make_world_communicator(
+    std::string* error) {
+  try {
+    return clinch::make_mpi_world_communicator(error).release();
+  } catch (const std::exception& e) {
+    if (error != nullptr) *error = std::string("MPI world: ") + e.what();
+    return nullptr;
+  }
+}
+
+}  // extern "C"
+
+// The signatures above are those the loader expects.
+static_assert(
+    std::is_same_v<decltype(clinch_plugin_interface_version), clinch::PetscPluginInterfaceVersion>);
+static_assert(
+    std::is_same_v<decltype(clinch_plugin_make_petsc_solver), clinch::PetscPluginMakeSolver>);
+static_assert(std::is_same_v<decltype(clinch_plugin_make_world_communicator),
+                             clinch::PetscPluginMakeWorldCommunicator>);
