@@ -118,33 +118,11 @@ LinearStatus PetscSolver::analyze(const SparseMatrix& pattern, std::string* mess
   input_nonzeros_ = pattern.nonzeros();
   diagonal_ = diagonal_positions(pattern);
   line_is_nonzero_.assign(n, 0);
-  // Full pattern in compressed rows and its gather map. Row r of the full matrix is the mirror
-  // of the stored column r above the diagonal (columns < r, met while reading column r) followed
-  // by the stored entries (r, j), j >= r, of the later columns: reading the columns in order
-  // appends every row's entries with increasing column indices, the sorted layout AIJ keeps.
-  row_ptr_.assign(n + 1, 0);
-  for (int j = 0; j < n; ++j) {
-    for (int p = pattern.col_ptr[j]; p < pattern.col_ptr[j + 1]; ++p) {
-      const int i = pattern.row_idx[p];
-      ++row_ptr_[i + 1];
-      if (pattern.symmetric_upper && i != j) ++row_ptr_[j + 1];
-    }
-  }
-  for (int r = 0; r < n; ++r) row_ptr_[r + 1] += row_ptr_[r];
-  col_idx_.resize(row_ptr_[n]);
-  source_.resize(row_ptr_[n]);
-  std::vector<int> next(row_ptr_.begin(), row_ptr_.end() - 1);
-  for (int j = 0; j < n; ++j) {
-    for (int p = pattern.col_ptr[j]; p < pattern.col_ptr[j + 1]; ++p) {
-      const int i = pattern.row_idx[p];
-      if (pattern.symmetric_upper && i != j) {
-        col_idx_[next[j]] = i;
-        source_[next[j]++] = p;
-      }
-      col_idx_[next[i]] = j;
-      source_[next[i]++] = p;
-    }
-  }
+  // Full pattern in compressed rows (AIJ's layout) and its gather map.
+  FullPattern full = full_pattern(pattern, true);
+  row_ptr_ = std::move(full.ptr);
+  col_idx_ = std::move(full.idx);
+  source_ = std::move(full.source);
   if (n == 0) {
     n_ = 0;
     return LinearStatus::Ok;

@@ -44,6 +44,36 @@ double entry(const SparseMatrix& m, int row, int column) {
   return found != last && *found == row ? m.values[found - m.row_idx.begin()] : 0.0;
 }
 
+FullPattern full_pattern(const SparseMatrix& m, bool by_rows) {
+  // One pass over the stored columns in order places every entry (and, in upper storage, its
+  // mirror) at the end of its line, and each line receives its entries in increasing order:
+  // by columns, column c gets its stored rows (<= c) while column c is read and its mirrored
+  // rows (> c) from the later columns; by rows, row r gets the mirrors (columns < r) and the
+  // diagonal while column r is read and its stored entries (r, j > r) from the later columns.
+  FullPattern full;
+  const auto for_each_entry = [&](auto&& place) {
+    for (int j = 0; j < m.n; ++j) {
+      for (int p = m.col_ptr[j]; p < m.col_ptr[j + 1]; ++p) {
+        const int i = m.row_idx[p];
+        by_rows ? place(i, j, p) : place(j, i, p);
+        if (m.symmetric_upper && i != j) by_rows ? place(j, i, p) : place(i, j, p);
+      }
+    }
+  };
+  full.ptr.assign(static_cast<std::size_t>(m.n) + 1, 0);
+  for_each_entry([&](int line, int, int) { ++full.ptr[static_cast<std::size_t>(line) + 1]; });
+  for (int r = 0; r < m.n; ++r) full.ptr[r + 1] += full.ptr[r];
+  full.idx.resize(static_cast<std::size_t>(full.ptr[m.n]));
+  full.source.resize(full.idx.size());
+  std::vector<int> next(full.ptr.begin(), full.ptr.end() - 1);
+  for_each_entry([&](int line, int index, int p) {
+    const int at = next[static_cast<std::size_t>(line)]++;
+    full.idx[static_cast<std::size_t>(at)] = index;
+    full.source[static_cast<std::size_t>(at)] = p;
+  });
+  return full;
+}
+
 std::vector<int> diagonal_positions(const SparseMatrix& m) {
   std::vector<int> positions(m.n, -1);
   for (int j = 0; j < m.n; ++j) {

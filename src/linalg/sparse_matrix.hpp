@@ -28,6 +28,14 @@ void validate_pattern(const SparseMatrix& m);
 // full pattern, from its mirror (column, row) in the lower triangle of symmetric-upper storage.
 double entry(const SparseMatrix& m, int row, int column);
 
+// The matrix `m` stands for in full storage, compressed by columns (`by_rows` false) or by rows,
+// indices sorted within each line, and for each entry its index into m.values: a solver that
+// needs full storage builds this once per pattern and gathers the values through `source`.
+struct FullPattern {
+  std::vector<int> ptr, idx, source;
+};
+FullPattern full_pattern(const SparseMatrix& m, bool by_rows);
+
 // Index into `values` of each diagonal entry, −1 where the pattern has none.
 std::vector<int> diagonal_positions(const SparseMatrix& m);
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "src/linalg/pivot_checks.hpp"
 
@@ -43,36 +44,11 @@ LinearStatus UmfpackSolver::analyze(const SparseMatrix& pattern, std::string* me
   failed_pivot_ = -1;
   n_ = pattern.n;
   input_nonzeros_ = pattern.nonzeros();
-  // Full pattern and gather map. Column c of the expanded matrix is the stored column c (rows
-  // <= c) followed by the mirrored entries (c, j) of the later columns j, already in row order.
-  col_ptr_.assign(n_ + 1, 0);
-  for (int j = 0; j < n_; ++j) {
-    for (int p = pattern.col_ptr[j]; p < pattern.col_ptr[j + 1]; ++p) {
-      const int i = pattern.row_idx[p];
-      ++col_ptr_[j + 1];
-      if (pattern.symmetric_upper && i != j) ++col_ptr_[i + 1];
-    }
-  }
-  for (int j = 0; j < n_; ++j) col_ptr_[j + 1] += col_ptr_[j];
-  row_idx_.resize(col_ptr_[n_]);
-  source_.resize(col_ptr_[n_]);
-  std::vector<int> next(col_ptr_.begin(), col_ptr_.end() - 1);
-  for (int j = 0; j < n_; ++j) {
-    for (int p = pattern.col_ptr[j]; p < pattern.col_ptr[j + 1]; ++p) {
-      row_idx_[next[j]] = pattern.row_idx[p];
-      source_[next[j]++] = p;
-    }
-  }
-  if (pattern.symmetric_upper) {
-    for (int j = 0; j < n_; ++j) {
-      for (int p = pattern.col_ptr[j]; p < pattern.col_ptr[j + 1]; ++p) {
-        const int i = pattern.row_idx[p];
-        if (i == j) continue;
-        row_idx_[next[i]] = j;
-        source_[next[i]++] = p;
-      }
-    }
-  }
+  // Full pattern, compressed by columns, and its gather map.
+  FullPattern full = full_pattern(pattern, false);
+  col_ptr_ = std::move(full.ptr);
+  row_idx_ = std::move(full.idx);
+  source_ = std::move(full.source);
   values_.assign(row_idx_.size(), 0.0);
   col_perm_.resize(n_);
   u_diagonal_.resize(n_);
