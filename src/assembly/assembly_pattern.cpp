@@ -27,6 +27,7 @@ AssemblyPattern build_assembly_pattern(const AnalysisPlan& plan, bool symmetric)
   for (const ConnectorRecord& r : plan.connectors) couple(r.local);
   for (const SpringRecord& r : plan.springs) couple(r.local);
   p.matrix = builder.build();
+  p.matrix.node_block = plan.dofs.uniform_node_block();
   p.positions.reserve(local_entries);
   auto place = [&](const LocalEquations& l) {
     const std::size_t offset = p.positions.size();

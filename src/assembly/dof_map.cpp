@@ -22,6 +22,17 @@ int DofMap::add_multiplier(bool rotational) {
   return static_cast<int>(field_.size()) - 1;
 }
 
+int DofMap::uniform_node_block() const {
+  if (equations() != node_equations_ || node_equations_ == 0) return 1;
+  DofMask common = 0;
+  for (const DofMask mask : active_) {
+    if (mask == 0) continue;
+    if (common != 0 && mask != common) return 1;
+    common = mask;
+  }
+  return std::popcount(static_cast<unsigned>(common));
+}
+
 int DofMap::dof_of(int equation) const {
   const std::int32_t node = node_of(equation);
   if (node < 0) return 0;

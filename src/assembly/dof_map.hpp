@@ -38,6 +38,9 @@ class DofMap {
   std::int32_t node_of(int equation) const { return node_of_[static_cast<std::size_t>(equation)]; }
   int dof_of(int equation) const;
   std::size_t nodes() const { return active_.size(); }
+  // The number of equations of each node when every node that has equations has the same DOFs
+  // and there are no multipliers, else 1 (SparseMatrix::node_block).
+  int uniform_node_block() const;
 
  private:
   std::vector<DofMask> active_;

@@ -45,6 +45,9 @@ class PetscSolver final : public LinearSolver {
   // for reports, tests and benchmarks.
   int iterations() const { return iterations_; }
   int preconditioner_setups() const { return preconditioner_setups_; }
+  // PETSc's own description of the method after the last factorize (KSPView): what BoomerAMG
+  // or MUMPS was actually told, for tests and diagnostics.
+  std::string view() const;
 
  private:
   void release();
@@ -80,6 +83,7 @@ class PetscSolver final : public LinearSolver {
   Vec rhs_ = nullptr, solution_ = nullptr, work_ = nullptr;
   int n_ = -1;
   int input_nonzeros_ = 0;
+  int node_block_ = 1;  // SparseMatrix::node_block of the analysed pattern
   // The full pattern in compressed rows (PETSc's AIJ layout); `source_[q]` is the index in the
   // caller's values of AIJ entry q, so that factorize only gathers values.
   std::vector<int> row_ptr_, col_idx_;

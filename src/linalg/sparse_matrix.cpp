@@ -20,6 +20,10 @@ void validate_pattern(const SparseMatrix& m) {
         fmt::format("sparse matrix with {} entries: {} row indices, {} values", nnz,
                     m.row_idx.size(), m.values.size()));
   }
+  if (m.node_block < 1 || m.n % m.node_block != 0) {
+    throw std::invalid_argument(
+        fmt::format("sparse matrix of order {}: node block {}", m.n, m.node_block));
+  }
   const int last_row = m.n - 1;
   for (int j = 0; j < m.n; ++j) {
     if (m.col_ptr[j + 1] < m.col_ptr[j]) {

@@ -15,6 +15,10 @@ struct SparseMatrix {
   std::vector<int> col_ptr, row_idx;
   std::vector<double> values;
   bool symmetric_upper = false;
+  // When > 1: the equations come node by node in groups of this many, every node with the same
+  // DOFs (a translational lattice: 3). Solvers of nodal systems use it (BoomerAMG coarsens nodes
+  // instead of single equations); the others ignore it.
+  int node_block = 1;
 
   int nonzeros() const { return col_ptr.empty() ? 0 : col_ptr.back(); }
 };

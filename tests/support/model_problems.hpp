@@ -12,4 +12,11 @@ namespace clinch {
 // Unknown (x, y, z) is x + N (y + N z).
 SparseMatrix laplacian_3d(int points_per_side);
 
+// Stiffness of an N³ lattice of unit spacing with axial springs along the edges and the face
+// diagonals (stiffness 1/length, matrix (1/L) d dᵀ for the unit direction d), three translations
+// per node numbered node by node (node_block 3), and the nodes of the face x = 0 held by a unit
+// spring to ground in each direction: an elasticity-like, symmetric positive definite system in
+// upper storage. Node (x, y, z) is x + N (y + N z).
+SparseMatrix truss_lattice_3d(int points_per_side);
+
 }  // namespace clinch

@@ -86,6 +86,28 @@ TEST(PetscSolver, AmgHierarchyIsReusedAcrossCloseTangents) {
   EXPECT_LE(solver.iterations(), 2 * first + 5);
 }
 
+TEST(PetscSolver, NodeBlocksReachBoomerAmgAsNodalCoarsening) {
+  // 12³ nodes, 5 184 equations, three per node. With node_block 3 PETSc must hand BoomerAMG the
+  // block size and nodal coarsening (as its own KSPView reports them); as a scalar system
+  // neither. Both must solve to the tolerance: nodal AMG is an SPD preconditioner for CG.
+  SparseMatrix k = truss_lattice_3d(12);
+  Eigen::VectorXd b(k.n);
+  for (int i = 0; i < k.n; ++i) b(i) = std::cos(0.11 * i);
+  for (const int block : {3, 1}) {
+    k.node_block = block;
+    PetscSolver solver(true, true);
+    std::string message;
+    ASSERT_EQ(solver.analyze(k, &message), LinearStatus::Ok) << message;
+    EXPECT_LE(petsc_lattice_residual(solver, k, b), 1.1e-10) << "node block " << block;
+    const std::string view = solver.view();
+    const bool nodal = view.find("nodal coarsening") != std::string::npos;
+    const bool blocks = view.find("bs=3") != std::string::npos;
+    EXPECT_EQ(nodal, block == 3) << view;
+    EXPECT_EQ(blocks, block == 3) << view;
+    RecordProperty(block == 3 ? "nodal_iterations" : "scalar_iterations", solver.iterations());
+  }
+}
+
 TEST(PetscSolver, MumpsReportsASingularSystemAndRecovers) {
   // An unsymmetric system (MUMPS) with a floating pair of dofs, then the same pattern with the
   // pair grounded: a failed factorization does not poison the next one.
