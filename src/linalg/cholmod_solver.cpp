@@ -213,6 +213,8 @@ std::vector<CholmodSolver::OrderingTrial> CholmodSolver::ordering_trials() const
   return trials;
 }
 
+double CholmodSolver::predicted_flops() const { return common_.fl; }
+
 const char* CholmodSolver::ordering() const {
   return factor_ == nullptr ? "none" : ordering_name(factor_->ordering);
 }

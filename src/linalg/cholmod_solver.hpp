@@ -34,6 +34,8 @@ class CholmodSolver final : public LinearSolver {
   };
   std::vector<OrderingTrial> ordering_trials() const;
   const char* ordering() const;
+  // Flops of one numeric factorization with the ordering the last analyze kept.
+  double predicted_flops() const;
 
  private:
   void release_factor();

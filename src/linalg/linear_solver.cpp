@@ -2,11 +2,12 @@
 
 #include <stdexcept>
 
+#include "src/linalg/automatic_spd_solver.hpp"
 #include "src/linalg/cholmod_solver.hpp"
 #include "src/linalg/dense_solver.hpp"
-#include "src/linalg/fallback_solver.hpp"
 #include "src/linalg/petsc_plugin_loader.hpp"
 #include "src/linalg/umfpack_solver.hpp"
+#include "src/parallel/communicator.hpp"
 
 namespace clinch {
 
@@ -29,7 +30,10 @@ std::unique_ptr<LinearSolver> make_linear_solver(SolverChoice choice, bool symme
   const bool spd = symmetric && positive_definite;
   switch (choice) {
     case SolverChoice::Automatic:
-      if (spd) return std::make_unique<FallbackSolver>();
+      // Under mpirun the solve is shared only by the PETSc backend; the world communicator
+      // comes from the same plugin, so it has loaded.
+      if (launched_on_several_ranks()) return make_petsc_solver(symmetric, positive_definite);
+      if (spd) return std::make_unique<AutomaticSpdSolver>();
       return std::make_unique<UmfpackSolver>();
     case SolverChoice::Cholmod:
       if (!symmetric) throw std::invalid_argument("CHOLMOD needs a symmetric matrix");

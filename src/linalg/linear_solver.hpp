@@ -41,8 +41,10 @@ class LinearSolver {
 
 enum class SolverChoice { Automatic, Cholmod, Umfpack, Dense, Petsc };
 
-// Automatic: CHOLMOD for symmetric positive definite systems (switching to UMFPACK if a
-// factorization finds the matrix indefinite, fallback_solver.hpp), UMFPACK otherwise (symmetric
+// Automatic: the PETSc backend under mpirun with several ranks; else for symmetric positive
+// definite systems CHOLMOD, handing over to the PETSc backend when the factorization would cost
+// too much and to UMFPACK when the matrix is found indefinite (automatic_spd_solver.hpp), and
+// UMFPACK otherwise (symmetric
 // indefinite KKT systems with Lagrange multipliers, connection-types.md §3.8; softening and
 // unsymmetric tangents, behaviors.md §7.4). Dense: Cholesky when symmetric and positive definite,
 // LU otherwise. Petsc: CG with BoomerAMG when symmetric and positive definite, MUMPS LU

@@ -305,7 +305,7 @@ LinearStatus PetscSolver::factorize(const SparseMatrix& k, std::string* message)
   if (!direct_) {
     // A diagonal entry a_jj <= 0 proves the matrix is not positive definite (e_jᵀ K e_j = a_jj)
     // and CG is not meant for it: LU takes over for good, as CHOLMOD hands over to UMFPACK
-    // (fallback_solver.hpp).
+    // (automatic_spd_solver.hpp).
     const bool indefinite = std::any_of(diagonal_.begin(), diagonal_.end(),
                                         [&](int p) { return p < 0 || k.values[p] <= 0.0; });
     if (!indefinite) return set_up_iterative(message);

@@ -17,6 +17,7 @@
 #include <tuple>
 #include <vector>
 
+#include "src/linalg/automatic_spd_solver.hpp"
 #include "src/linalg/cholmod_solver.hpp"
 #include "src/linalg/linear_solver.hpp"
 #include "src/linalg/pivot_checks.hpp"
@@ -347,6 +348,46 @@ TEST(LinearSolverChoice, AutomaticFallsBackToLuOnAnIndefiniteMatrix) {
   ASSERT_EQ(solver->solve(Eigen::Vector2d(3.0, 3.0), x, &message), LinearStatus::Ok) << message;
   EXPECT_NEAR(x[0], 1.0, 1e-14);
   EXPECT_NEAR(x[1], 1.0, 1e-14);
+}
+
+// The automatic SPD solver keeps CHOLMOD where its predicted factorization is cheap and hands a
+// costly one to CG with BoomerAMG. The truss lattice with 22³ nodes (31 944 equations, 19 nodes
+// per row) is predicted at 1.75e10 flops; the chain of the same order at a few flops per entry.
+// Both are then solved to the tolerance of their backend.
+TEST(LinearSolverChoice, AutomaticHandsCostlyFactorizationsToPetsc) {
+  const SparseMatrix lattice = truss_lattice_3d(22);
+  CholmodSolver cholmod;
+  std::string message;
+  ASSERT_EQ(cholmod.analyze(lattice, &message), LinearStatus::Ok) << message;
+  ASSERT_GE(cholmod.predicted_flops(), 1.5 * kIterativeFromFlops);
+  // A chain of unit springs, every node also on a spring of stiffness 1 to ground: 3 on the
+  // diagonal, −1 beside it (well conditioned), upper storage.
+  SparseMatrix chain;
+  chain.n = lattice.n;
+  chain.symmetric_upper = true;
+  chain.col_ptr.push_back(0);
+  for (int j = 0; j < chain.n; ++j) {
+    if (j > 0) {
+      chain.row_idx.push_back(j - 1);
+      chain.values.push_back(-1.0);
+    }
+    chain.row_idx.push_back(j);
+    chain.values.push_back(3.0);
+    chain.col_ptr.push_back(static_cast<int>(chain.row_idx.size()));
+  }
+  ASSERT_EQ(cholmod.analyze(chain, &message), LinearStatus::Ok) << message;
+  ASSERT_LE(cholmod.predicted_flops(), 100.0 * chain.nonzeros());
+
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(lattice.n, -1.0, 2.0);
+  for (const auto& [matrix, expected] : {std::pair{&lattice, "petsc"}, {&chain, "cholmod"}}) {
+    auto solver = make_linear_solver(SolverChoice::Automatic, true, true);
+    ASSERT_EQ(solver->analyze(*matrix, &message), LinearStatus::Ok) << message;
+    EXPECT_STREQ(solver->name(), expected);
+    ASSERT_EQ(solver->factorize(*matrix, &message), LinearStatus::Ok) << message;
+    Eigen::VectorXd x;
+    ASSERT_EQ(solver->solve(b, x, &message), LinearStatus::Ok) << message;
+    EXPECT_LE(relative_residual(*matrix, x, b), 1.1e-10) << expected;
+  }
 }
 
 TEST(LinearSolverChoice, AutomaticTakesCholeskyOnlyForSpdSystems) {

@@ -1,0 +1,48 @@
+#include "src/linalg/automatic_spd_solver.hpp"
+
+#include <limits>
+#include <string>
+
+#include "src/linalg/cholmod_solver.hpp"
+#include "src/linalg/petsc_plugin_loader.hpp"
+#include "src/linalg/umfpack_solver.hpp"
+
+namespace clinch {
+
+AutomaticSpdSolver::AutomaticSpdSolver()
+    : cholesky_(std::make_unique<CholmodSolver>()), active_(cholesky_.get()) {}
+
+LinearStatus AutomaticSpdSolver::analyze(const SparseMatrix& pattern, std::string* message) {
+  if (active_ != cholesky_.get()) return active_->analyze(pattern, message);
+  const LinearStatus analyzed = cholesky_->analyze(pattern, message);
+  // A factor too large for CHOLMOD's 32-bit indices (status CHOLMOD_TOO_LARGE) is the costliest
+  // case of all.
+  const double flops = analyzed == LinearStatus::Ok
+                           ? static_cast<const CholmodSolver&>(*cholesky_).predicted_flops()
+                           : std::numeric_limits<double>::infinity();
+  const bool costly = flops >= kIterativeFromFlops &&
+                      flops >= kIterativeFromFlopsPerEntry * pattern.nonzeros();
+  std::string unavailable;
+  if (!costly || petsc_plugin(&unavailable) == nullptr) return analyzed;
+  other_ = make_petsc_solver(true, true);
+  active_ = other_.get();
+  cholesky_.reset();
+  return active_->analyze(pattern, message);
+}
+
+LinearStatus AutomaticSpdSolver::factorize(const SparseMatrix& k, std::string* message) {
+  const LinearStatus status = active_->factorize(k, message);
+  if (status != LinearStatus::NotPositiveDefinite || active_ != cholesky_.get()) return status;
+  other_ = std::make_unique<UmfpackSolver>();
+  active_ = other_.get();
+  cholesky_.reset();
+  const LinearStatus analyzed = active_->analyze(k, message);
+  return analyzed == LinearStatus::Ok ? active_->factorize(k, message) : analyzed;
+}
+
+LinearStatus AutomaticSpdSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                                       std::string* message) {
+  return active_->solve(b, x, message);
+}
+
+}  // namespace clinch
