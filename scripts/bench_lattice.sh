@@ -11,7 +11,8 @@
 # to size N (its nonlinear N = 40 run takes about 45 minutes here). LATTICE_IRREGULAR="F P S"
 # runs the irregular lattice instead (generate_lattice --jitter F --patch P --seed S: nodes moved
 # by up to F·h, only the centred patch P of the face pulled): it has no closed form, so clinch's
-# err column is its difference from CalculiX's reaction.
+# err column is its difference from CalculiX's reaction. CLINCH_RUN_FLAGS are added to clinch's
+# command line, CLINCH_LAUNCHER goes before it ("mpirun -n 2": its MB is then the largest rank's).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 sizes=("$@")
@@ -99,8 +100,8 @@ measure() {
       grep -q 'total force' "$wd/job.dat" 2>/dev/null || ok=0
     else
       # shellcheck disable=SC2086
-      read -r secs kb user sys status < <(timed "$wd" "$bin/clinch" run "$deck" --out "$wd" \
-                                             --job job ${CLINCH_RUN_FLAGS:-})
+      read -r secs kb user sys status < <(timed "$wd" ${CLINCH_LAUNCHER:-} "$bin/clinch" run \
+                                             "$deck" --out "$wd" --job job ${CLINCH_RUN_FLAGS:-})
       { [ "$status" = 0 ] && clinch_completed "$wd"; } || ok=0
     fi
     ((ok)) || break
