@@ -1,5 +1,7 @@
 #include "src/linalg/automatic_spd_solver.hpp"
 
+#include <fmt/format.h>
+
 #include <limits>
 #include <string>
 
@@ -22,8 +24,17 @@ LinearStatus AutomaticSpdSolver::analyze(const SparseMatrix& pattern, std::strin
                            : std::numeric_limits<double>::infinity();
   const bool costly = flops >= kIterativeFromFlops &&
                       flops >= kIterativeFromFlopsPerEntry * pattern.nonzeros();
+  if (!costly) return analyzed;
+  const std::string cost =
+      analyzed == LinearStatus::Ok
+          ? fmt::format("CHOLMOD predicts {:.3g} flops per factorization", flops)
+          : fmt::format("CHOLMOD cannot analyse it ({})", message != nullptr ? *message : "");
   std::string unavailable;
-  if (!costly || petsc_plugin(&unavailable) == nullptr) return analyzed;
+  if (petsc_plugin(&unavailable) == nullptr) {
+    choice_ = fmt::format("{}, but the PETSc backend is unavailable: {}", cost, unavailable);
+    return analyzed;
+  }
+  choice_ = fmt::format("{}, so CG with BoomerAMG solves it", cost);
   other_ = make_petsc_solver(true, true);
   active_ = other_.get();
   cholesky_.reset();

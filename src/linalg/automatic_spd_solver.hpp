@@ -33,10 +33,12 @@ class AutomaticSpdSolver final : public LinearSolver {
   LinearStatus solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, std::string* message) override;
   int failed_pivot() const override { return active_->failed_pivot(); }
   void set_relative_tolerance(double rtol) override { active_->set_relative_tolerance(rtol); }
+  std::string choice() const override { return choice_; }
 
  private:
   std::unique_ptr<LinearSolver> cholesky_, other_;
   LinearSolver* active_;
+  std::string choice_;
 };
 
 }  // namespace clinch

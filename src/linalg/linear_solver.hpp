@@ -37,6 +37,9 @@ class LinearSolver {
   // method that solves loosely far from the solution. Iterative backends stop there (PETSc CG:
   // 1e-10 until set); direct backends solve to round-off whatever is asked and ignore it.
   virtual void set_relative_tolerance(double /*rtol*/) {}
+  // Why an automatic choice took the backend it did, after analyze, for the step's log line;
+  // empty when there was no choice to explain.
+  virtual std::string choice() const { return {}; }
 };
 
 enum class SolverChoice { Automatic, Cholmod, Umfpack, Dense, Petsc };

@@ -384,6 +384,7 @@ class Driver {
     }
     solver_ = solver.get();
     if (symmetric && plan_.has_multipliers) why += "; the multipliers make it indefinite";
+    if (const std::string choice = solver_->choice(); !choice.empty()) why += "; " + choice;
     out_.log.info(fmt::format("step {}: {} on the {} ({} equations, {} stored entries): {}",
                               step_number, solver_->name(),
                               symmetric ? "upper triangle" : "full pattern", system_.pattern().n,

@@ -383,6 +383,10 @@ TEST(LinearSolverChoice, AutomaticHandsCostlyFactorizationsToPetsc) {
     auto solver = make_linear_solver(SolverChoice::Automatic, true, true);
     ASSERT_EQ(solver->analyze(*matrix, &message), LinearStatus::Ok) << message;
     EXPECT_STREQ(solver->name(), expected);
+    // The step's log line says why the automatic choice left CHOLMOD.
+    EXPECT_EQ(solver->choice().find("flops per factorization") != std::string::npos,
+              std::string(expected) == "petsc")
+        << solver->choice();
     ASSERT_EQ(solver->factorize(*matrix, &message), LinearStatus::Ok) << message;
     Eigen::VectorXd x;
     ASSERT_EQ(solver->solve(b, x, &message), LinearStatus::Ok) << message;
