@@ -5,7 +5,6 @@
 #include <limits>
 #include <string>
 
-#include "src/linalg/cholmod_solver.hpp"
 #include "src/linalg/petsc_plugin_loader.hpp"
 #include "src/linalg/umfpack_solver.hpp"
 
@@ -20,7 +19,7 @@ LinearStatus AutomaticSpdSolver::analyze(const SparseMatrix& pattern, std::strin
   // A factor too large for CHOLMOD's 32-bit indices (status CHOLMOD_TOO_LARGE) is the costliest
   // case of all.
   const double flops = analyzed == LinearStatus::Ok
-                           ? static_cast<const CholmodSolver&>(*cholesky_).predicted_flops()
+                           ? cholesky_->predicted_flops()
                            : std::numeric_limits<double>::infinity();
   const bool costly = flops >= kIterativeFromFlops &&
                       flops >= kIterativeFromFlopsPerEntry * pattern.nonzeros();

@@ -17,6 +17,7 @@
 
 #include <memory>
 
+#include "src/linalg/cholmod_solver.hpp"
 #include "src/linalg/linear_solver.hpp"
 
 namespace clinch {
@@ -36,7 +37,8 @@ class AutomaticSpdSolver final : public LinearSolver {
   std::string choice() const override { return choice_; }
 
  private:
-  std::unique_ptr<LinearSolver> cholesky_, other_;
+  std::unique_ptr<CholmodSolver> cholesky_;
+  std::unique_ptr<LinearSolver> other_;  // PETSc or UMFPACK once CHOLMOD has handed over
   LinearSolver* active_;
   std::string choice_;
 };
