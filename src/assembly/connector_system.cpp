@@ -7,6 +7,7 @@
 #include <numbers>
 #include <numeric>
 
+#include "base/scaled_norm.hpp"
 #include "src/assembly/active_set_updates.hpp"
 #include "src/kinematics/rotation_math.hpp"
 
@@ -67,6 +68,22 @@ void ConnectorSystem::use_storage(bool symmetric) {
   std::unique_ptr<AssemblyPattern>& p = symmetric ? symmetric_pattern_ : full_pattern_;
   if (!p) p = std::make_unique<AssemblyPattern>(build_assembly_pattern(plan_, symmetric));
   pattern_ = p.get();
+}
+
+ConnectorSystem::Snapshot ConnectorSystem::snapshot() const {
+  return {state_,      conditions_, internal_,          predictor_,
+          predicting_, springs_,    multiplier_active_, element_forces_};
+}
+
+void ConnectorSystem::restore(const Snapshot& snapshot) {
+  state_ = snapshot.state;
+  conditions_ = snapshot.conditions;
+  internal_ = snapshot.internal;
+  predictor_ = snapshot.predictor;
+  predicting_ = snapshot.predicting;
+  springs_ = snapshot.springs;
+  multiplier_active_ = snapshot.multiplier_active;
+  element_forces_ = snapshot.element_forces;
 }
 
 void ConnectorSystem::set_nlgeom(bool nlgeom) {
@@ -184,8 +201,9 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
     const SpringRecord& spring = plan_.springs[s];
     evaluate_spring(plan_, spring, {state_.x, state_.x_n, context_.dt, context_.nlgeom},
                     want_tangent, local, springs_[s]);
-    if (zero_unless_non_finite(local.r.head(spring.local.count)) +
-            springs_[s].force * 0.0 + springs_[s].delta * 0.0 != 0.0) {
+    if (zero_unless_non_finite(local.r.head(spring.local.count)) + springs_[s].force * 0.0 +
+            springs_[s].delta * 0.0 !=
+        0.0) {
       const Element& e = model_.elements[static_cast<std::size_t>(spring.element)];
       failed = {false, fmt::format("spring element {}: a force or output is not finite",
                                    qualified_label(model_, e.instance, e.label))};
@@ -201,8 +219,8 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
   for (int eq : conditions_.prescribed()) {
     // Newton's row of a prescribed DOF is Δu = target − u. A reaction that overflows takes the
     // row's place, so that Newton stops on it rather than report it (principle 7).
-    residual[eq] = std::isfinite(internal_[eq]) ? state_.x[eq] - conditions_.target(eq)
-                                                : internal_[eq];
+    residual[eq] =
+        std::isfinite(internal_[eq]) ? state_.x[eq] - conditions_.target(eq) : internal_[eq];
     if (tangent) {
       tangent->values[static_cast<std::size_t>(pattern_->diagonal[static_cast<std::size_t>(eq)])] =
           1.0;
@@ -225,8 +243,8 @@ bool ConnectorSystem::connector_finite(std::size_t c, const LocalSystem& local) 
   }
   for (const LawSlot& slot : r.laws) {
     const auto first = state_.history.begin() + static_cast<std::ptrdiff_t>(slot.history);
-    sum = std::accumulate(first, first + static_cast<std::ptrdiff_t>(slot.law->history_size()),
-                          sum, [](double s, double v) { return s + v * 0.0; });
+    sum = std::accumulate(first, first + static_cast<std::ptrdiff_t>(slot.law->history_size()), sum,
+                          [](double s, double v) { return s + v * 0.0; });
   }
   return sum == 0.0;
 }
@@ -252,8 +270,8 @@ void ConnectorSystem::add_component_forces(const ConnectorResult& result) {
   }
 }
 
-void ConnectorSystem::scatter(const LocalEquations& l, std::size_t offset,
-                              const LocalSystem& local, bool symmetrize, SparseMatrix* tangent) {
+void ConnectorSystem::scatter(const LocalEquations& l, std::size_t offset, const LocalSystem& local,
+                              bool symmetrize, SparseMatrix* tangent) {
   for (int a = 0; a < l.count; ++a) {
     internal_[l.equation[static_cast<std::size_t>(a)]] += local.r[a];
   }
@@ -331,7 +349,7 @@ void ConnectorSystem::measure(const Eigen::VectorXd& residual, const Eigen::Vect
                               IterationNorms& norms) const {
   // q̃ (keywords.md §16 field 1): the entries of the elements, then the applied loads.
   ForceEntries entries = element_forces_;
-  double residual_sq = 0, correction_sq = 0;
+  ScaledNorm residual_norm, correction_norm;
   for (int eq = 0; eq < size(); ++eq) {
     const EquationField field = plan_.dofs.field(eq);
     if (field == EquationField::TranslationalMultiplier ||
@@ -348,13 +366,13 @@ void ConnectorSystem::measure(const Eigen::VectorXd& residual, const Eigen::Vect
     entries.add(f, std::abs(conditions_.external()[eq]));
     if (conditions_.is_prescribed(eq)) continue;
     norms.largest_residual[f] = max_keeping_nan(norms.largest_residual[f], std::abs(residual[eq]));
-    residual_sq += residual[eq] * residual[eq];
+    residual_norm.add(residual[eq]);
     norms.largest_increment[f] =
         max_keeping_nan(norms.largest_increment[f], std::abs(state_.x[eq] - state_.x_n[eq]));
     if (correction) {
       const double dx = (*correction)[eq];
       norms.largest_correction[f] = max_keeping_nan(norms.largest_correction[f], std::abs(dx));
-      correction_sq += dx * dx;
+      correction_norm.add(dx);
     }
   }
   for (int f = 0; f < 2; ++f) norms.flux[f] = entries.mean(f);
@@ -363,8 +381,8 @@ void ConnectorSystem::measure(const Eigen::VectorXd& residual, const Eigen::Vect
   const double force_scale = std::max(norms.flux[0], norms.flux[1] / plan_.length_scale);
   norms.force_resolution[0] = 1e-12 * force_scale;
   norms.force_resolution[1] = 1e-12 * force_scale * plan_.length_scale;
-  norms.residual_norm = std::sqrt(residual_sq);
-  norms.correction_norm = std::sqrt(correction_sq);
+  norms.residual_norm = residual_norm.value();
+  norms.correction_norm = correction_norm.value();
 }
 
 bool ConnectorSystem::update_active_set() { return update_stops(plan_, conditions_, state_); }
@@ -376,9 +394,10 @@ void ConnectorSystem::end_increment() {
     const ConnectorRecord& r = plan_.connectors[c];
     if (deleted_[c] || r.laws.empty() || !is_deleted(r, state_)) continue;
     deleted_[c] = 1;
-    events_.push_back(fmt::format("connector element {} deleted: every component its damage "
-                                  "affects is fully damaged (d = 1)",
-                                  elements_.label(c)));
+    events_.push_back(
+        fmt::format("connector element {} deleted: every component its damage "
+                    "affects is fully damaged (d = 1)",
+                    elements_.label(c)));
   }
 }
 
@@ -440,9 +459,10 @@ std::vector<std::string> ConnectorSystem::step_summary() const {
     }
   }
   if (count == 0) return {};
-  return {fmt::format("energy dissipated by the viscous regularisation of damage so far: {:.6g} "
-                      "({} connectors with VISCOSITY)",
-                      energy, count)};
+  return {
+      fmt::format("energy dissipated by the viscous regularisation of damage so far: {:.6g} "
+                  "({} connectors with VISCOSITY)",
+                  energy, count)};
 }
 
 // behaviors.md §7.4: a node that a deleted connector leaves without stiffness makes the system
@@ -489,9 +509,10 @@ std::string ConnectorSystem::failure_note(int failed_equation) const {
     }
   }
   if (softening == plan_.connectors.size()) return {};
-  return fmt::format("connector element {} softening (d={:.3g}) under load control, limit point "
-                     "passed?",
-                     elements_.label(softening), largest);
+  return fmt::format(
+      "connector element {} softening (d={:.3g}) under load control, limit point "
+      "passed?",
+      elements_.label(softening), largest);
 }
 
 double ConnectorSystem::nodal_value(std::int32_t node, int dof) const {

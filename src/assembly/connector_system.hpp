@@ -82,6 +82,23 @@ class ConnectorSystem final : public NonlinearProblem {
   // every rank holds what a serial evaluation gives. Without it every element is evaluated here.
   void distribute(Communicator& communicator);
 
+  // ---- diagnostics ----
+  // Everything an evaluation, a correction or a change of the conditions can change: the state,
+  // the conditions, the prescribed predictor and the last evaluation's results. A diagnostic that
+  // moves the state (the tangent check) takes one before and restores it after, so that the run
+  // goes on exactly as it would have without it.
+  struct Snapshot {
+    AnalysisState state;
+    IncrementConditions conditions;
+    Eigen::VectorXd internal, predictor;
+    bool predicting;
+    std::vector<SpringResult> springs;
+    std::vector<std::uint8_t> multiplier_active;
+    ForceEntries element_forces;
+  };
+  Snapshot snapshot() const;
+  void restore(const Snapshot& snapshot);
+
   // ---- results of the last evaluation ----
   double value(int equation) const { return state_.x[equation]; }
   double converged_value(int equation) const { return state_.x_n[equation]; }

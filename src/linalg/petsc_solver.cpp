@@ -486,7 +486,7 @@ LinearStatus PetscSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x,
     set_message(message, fmt::format("PETSc {} did not converge: {} after {} iterations (residual "
                                      "norm {:.3g}, |b| = {:.3g}){}",
                                      method(), reason_name(reason_), iterations_,
-                                     static_cast<double>(residual), b.norm(),
+                                     static_cast<double>(residual), b.stableNorm(),
                                      iterative_failure.empty() ? "" : "; " + iterative_failure));
     return LinearStatus::Failure;
   }

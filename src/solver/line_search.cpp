@@ -7,13 +7,24 @@ namespace clinch {
 
 EvalStatus search_line(NonlinearProblem& problem, Eigen::VectorXd& direction,
                        Eigen::VectorXd& residual, const LineSearchControls& controls) {
-  const double g0 = direction.dot(residual);
+  // Only ratios of the projections g(s) = d·r(s) matter: they are taken on d and r scaled by
+  // their largest entries at s = 0, so that residuals past 1e154 do not overflow them.
+  const auto inverse_of_largest = [](const Eigen::VectorXd& v) {
+    const double largest = v.size() > 0 ? v.cwiseAbs().maxCoeff() : 0.0;
+    return largest > 0 && std::isfinite(largest) ? 1.0 / largest : 1.0;
+  };
+  const double direction_scale = inverse_of_largest(direction);
+  const double residual_scale = inverse_of_largest(residual);
+  const auto projection = [&] {
+    return ((direction.array() * direction_scale) * (residual.array() * residual_scale)).sum();
+  };
+  const double g0 = projection();
   EvalStatus status = problem.evaluate(residual, nullptr);
   // Only a descent direction (g(0) < 0) has a step that reduces the projected residual.
   if (!status.ok || !(g0 < 0)) return status;
   double s = 1.0;
   for (int iteration = 0; iteration < controls.max_iterations; ++iteration) {
-    const double g = direction.dot(residual);
+    const double g = projection();
     if (std::abs(g) <= controls.eta * std::abs(g0)) break;
     // Zero of the line through (0, g0) and (s, g); with g ≤ g0 the secant has no zero ahead
     // and the step grows to s_max.

@@ -17,14 +17,15 @@ namespace clinch {
 // multiplicatively under NLGEOM); an equation with a zero step (prescribed) is neither
 // differenced nor compared. `k` is read whole: directly from a full pattern, mirrored from
 // symmetric-upper storage. With `symmetric_part`, compared with ½(J + Jᵀ) of the differences J.
-// Each evaluation restarts from the current state and leaves it as it was; none touches the
-// committed history (behaviors.md §1.4).
+// Each evaluation restarts from the current state and leaves it there up to round-off (x + h − h);
+// none touches the committed history (behaviors.md §1.4).
 JacobianReport check_assembled_tangent(NonlinearProblem& problem, const SparseMatrix& k,
                                        const Eigen::VectorXd& steps, bool symmetric_part = false);
 
-// The report (several lines); the state of `system` is unchanged afterwards. The whole matrix is
-// compared, prescribed DOFs included (it is checked without the increment's conditions), read
-// through the storage of its pattern (full or symmetric upper).
+// The report (several lines); the state of `system` is restored exactly afterwards (conditions,
+// prescribed predictor and results included), so a checked run gives the same history as an
+// unchecked one. The whole matrix is compared, prescribed DOFs included (it is checked without the
+// increment's conditions), read through the storage of its pattern (full or symmetric upper).
 std::string check_tangent(ConnectorSystem& system, int step, int increment);
 
 }  // namespace clinch

@@ -11,6 +11,13 @@
 #                                        column's scale (docs/parallel.md): the ranks sum their
 #                                        shares of the residual and tangent in another order than
 #                                        one process, and an iterative solver stops at 1e-10.
+#   run_case.sh --check-tangent CLINCH CASE_DIR
+#                                        the deck as written against the same run with
+#                                        `--check-tangent`, compared to 1e-12 of each column's
+#                                        scale: the check restores the state it moves, so a
+#                                        checked run is the unchecked one (the same operations on
+#                                        the same numbers, hence equal to the last bit; 1e-12
+#                                        leaves room for nothing but a changed answer).
 #   run_case.sh --unsymm CLINCH CASE_DIR the deck as written (each step stores the upper triangle
 #                                        of its symmetric tangent: CHOLMOD, or UMFPACK with
 #                                        multipliers) against the deck with every *STEP given
@@ -23,6 +30,7 @@
 set -u
 
 unsymm=0
+check_tangent=0
 solver=auto
 ranks=0
 if [ "${1:-}" = "--mpi" ] && [ "$#" -ge 2 ]; then
@@ -32,12 +40,15 @@ fi
 if [ "${1:-}" = "--unsymm" ]; then
   unsymm=1
   shift
+elif [ "${1:-}" = "--check-tangent" ]; then
+  check_tangent=1
+  shift
 elif [ "${1:-}" = "--solver" ] && [ "$#" -ge 2 ]; then
   solver=$2
   shift 2
 fi
 if [ "$#" -ne 2 ]; then
-  echo "usage: $0 [--unsymm | [--mpi RANKS] [--solver NAME]] CLINCH CASE_DIR" >&2
+  echo "usage: $0 [--unsymm | --check-tangent | [--mpi RANKS] [--solver NAME]] CLINCH CASE_DIR" >&2
   exit 3
 fi
 clinch=$1
@@ -57,10 +68,11 @@ out=$(mktemp -d "${TMPDIR:-/tmp}/clinch-verify-$case_name.XXXXXX") || exit 3
 trap 'rm -rf "$out"' EXIT
 
 # Runs `clinch run` on deck $1 into directory $2 with job name `job` (under mpirun with
-# $launch set).
+# $launch set), with the further options $3.
 run_deck() {
   mkdir -p "$2"
-  $launch "$clinch" run "$1" --out "$2" --job job --quiet --solver "$solver"
+  # shellcheck disable=SC2086
+  $launch "$clinch" run "$1" --out "$2" --job job --quiet --solver "$solver" ${3:-}
   status=$?
   if [ "$status" -ne 0 ]; then
     echo "verify $case_name: 'clinch run' of $1 exited with status $status (expected 0)" >&2
@@ -84,6 +96,15 @@ if [ "$ranks" -gt 0 ]; then
   result="$out/distributed/job.history.csv"
   reference="$out/as-written/job.history.csv"
   compare_args="--rtol 1e-8 --atol 1e-12"
+elif [ "$check_tangent" -eq 1 ]; then
+  run_deck "$deck" "$out/checked" --check-tangent
+  if ! grep -q '^tangent check at step' "$out/checked/job.log"; then
+    echo "verify $case_name: the --check-tangent run logged no tangent check" >&2
+    exit 1
+  fi
+  result="$out/checked/job.history.csv"
+  reference="$out/as-written/job.history.csv"
+  compare_args="--rtol 1e-12 --atol 0"
 elif [ "$unsymm" -eq 1 ]; then
   # *STEP lines (any case, with or without parameters) gain ", UNSYMM=YES".
   sed -E 's/^(\*[Ss][Tt][Ee][Pp])([ ,].*)?$/\1\2, UNSYMM=YES/' "$deck" > "$out/$case_name.inp"

@@ -1,6 +1,9 @@
 // ForcingTerm (src/solver/forcing_term.hpp) against Eisenstat–Walker's choice 2 worked by hand.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+
 #include "src/solver/forcing_term.hpp"
 
 namespace clinch {
@@ -39,6 +42,19 @@ TEST(ForcingTerm, NeverAsksForLessThanTheSmallestTerm) {
   ForcingTerm forcing;
   forcing.next(0, 1.0);
   EXPECT_DOUBLE_EQ(forcing.next(1, 1e-9), ForcingTerm::kSmallest);
+}
+
+// An overflowing residual norm (inf) has no ratio to the last one: the term stays inside
+// (0, 1), where an iterative solver accepts it, instead of becoming NaN (inf / inf).
+TEST(ForcingTerm, NonFiniteNormsKeepTheTermInRange) {
+  const double inf = std::numeric_limits<double>::infinity();
+  ForcingTerm forcing;
+  EXPECT_DOUBLE_EQ(forcing.next(0, inf), ForcingTerm::kFirst);
+  EXPECT_DOUBLE_EQ(forcing.next(1, inf), ForcingTerm::kFirst);
+  EXPECT_DOUBLE_EQ(forcing.next(2, std::nan("")), ForcingTerm::kFirst);
+  // From a finite norm again the ratio of two finite norms is used: 0.9·(0.1)² = 0.009.
+  forcing.next(3, 1.0);
+  EXPECT_NEAR(forcing.next(4, 0.1), 0.009, 0.009 * kTol);
 }
 
 }  // namespace
