@@ -66,10 +66,30 @@ bool is_deleted(const ConnectorRecord& r, const AnalysisState& state) {
   return false;
 }
 
+namespace {
+
+// CP, CU and CCU of an evaluation (output-variables.md §2): the constitutive motion only on the
+// available components that exist.
+void record_motions(const ConnectorRecord& r, const KinematicsResult& k, ConnectorResult& result) {
+  result.position = k.position;
+  result.change = k.change;
+  const Vector6 u = k.position - r.reference;
+  for (int i = 0; i < 6; ++i) {
+    const bool exists = has_component(k.existing, i + 1);
+    result.constitutive[i] = exists && has_component(r.available, i + 1) ? u[i] : 0.0;
+  }
+}
+
+}  // namespace
+
 // A deleted element (behaviors.md §7.4): no force, no stiffness, every multiplier row inactive
-// (λ = 0), its laws' history and its motions frozen at deletion, and forces reported as 0.
-EvalStatus ConnectorElements::evaluate_deleted(std::size_t c, AnalysisState& state,
-                                               bool want_tangent, LocalSystem& local) const {
+// (λ = 0), its laws' history frozen at deletion and its forces reported as 0. Its motions go on
+// reporting the kinematics of its nodes (output-variables.md §2), so that an analyst sees how far
+// the parts separated; where the kinematics is undefined (an AXIAL connector whose nodes meet)
+// they keep their last values, since a deleted element cannot stop the run.
+EvalStatus ConnectorElements::evaluate_deleted(std::size_t c, const ElementContext& context,
+                                               AnalysisState& state, bool want_tangent,
+                                               LocalSystem& local) const {
   const ConnectorRecord& r = plan_.connectors[c];
   const int n = r.column_count;
   for (const LawSlot& slot : r.laws) {
@@ -88,6 +108,11 @@ EvalStatus ConnectorElements::evaluate_deleted(std::size_t c, AnalysisState& sta
     for (int j = 0; j < r.multiplier_count; ++j) local.k(n + j, n + j) = 1.0;
   }
   ConnectorResult& result = state.results[c];
+  KinematicsResult& k = local.kinematics;
+  plan_.kinematics[r.kinematics].evaluate(node_pose(plan_.dofs, state, r.nodes[0]),
+                                          node_pose(plan_.dofs, state, r.nodes[1]), context.nlgeom,
+                                          state.position_n[c], false, k);
+  if (k.ok) record_motions(r, k, result);
   for (Vector6* v : {&result.elastic, &result.multiplier, &result.friction, &result.viscous,
                      &result.applied, &result.total}) {
     v->setZero();
@@ -99,7 +124,7 @@ EvalStatus ConnectorElements::evaluate(std::size_t c, const ElementContext& cont
                                        AnalysisState& state, bool want_tangent,
                                        LocalSystem& local) const {
   const ConnectorRecord& r = plan_.connectors[c];
-  if (is_deleted(r, state)) return evaluate_deleted(c, state, want_tangent, local);
+  if (is_deleted(r, state)) return evaluate_deleted(c, context, state, want_tangent, local);
   KinematicsResult& k = local.kinematics;
   plan_.kinematics[r.kinematics].evaluate(node_pose(plan_.dofs, state, r.nodes[0]),
                                           node_pose(plan_.dofs, state, r.nodes[1]), context.nlgeom,
@@ -243,11 +268,9 @@ EvalStatus ConnectorElements::evaluate(std::size_t c, const ElementContext& cont
   }
 
   ConnectorResult& result = state.results[c];
-  result.position = k.position;
-  result.change = k.change;
+  record_motions(r, k, result);
   for (int i = 0; i < 6; ++i) {
     const bool exists = has_component(k.existing, i + 1);
-    result.constitutive[i] = exists && has_component(r.available, i + 1) ? u[i] : 0.0;
     result.elastic[i] = exists ? elastic[i] : 0.0;
     result.multiplier[i] = exists ? constraint_force[i] : 0.0;
     result.friction[i] = exists ? friction[i] : 0.0;

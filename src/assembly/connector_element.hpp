@@ -41,8 +41,8 @@ class ConnectorElements {
   std::string label(std::size_t c) const;  // the element's label, for messages
 
  private:
-  EvalStatus evaluate_deleted(std::size_t c, AnalysisState& state, bool want_tangent,
-                              LocalSystem& local) const;
+  EvalStatus evaluate_deleted(std::size_t c, const ElementContext& context, AnalysisState& state,
+                              bool want_tangent, LocalSystem& local) const;
 
   const Model& model_;
   const AnalysisPlan& plan_;

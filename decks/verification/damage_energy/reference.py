@@ -4,7 +4,9 @@ Closed form (damage_lib.py): u_0 = 0.09, W = k((u_0 + κ)² − u_0²)/2 = 500 (
 envelope, d = 1 − exp(−W/G_f), d = 1 once d ≥ 0.99, CTF1 = (1 − d) k U. Asserts the §7.5 E13
 table, and that the energy dissipated after initiation, the area under element 2's force–motion
 history from u_0 to failure, is G_f: exactly G_f (1 − e^(−W_s/G_f)) for the continuous curve up to
-the switch at W_s, and within 1.1 % for the trapezoidal area of the history rows.
+the switch at W_s, and within 1.1 % for the trapezoidal area of the history rows. After its
+deletion element 2 has CTF1 = 0, CDMG = 1 and CDIF frozen, while CU1 goes on reporting the
+prescribed motion of node 4 up to 0.35 (behaviors.md §7.4, output-variables.md §2).
 """
 import math
 import os
@@ -25,19 +27,19 @@ path += [(2, i, 0.0025 * i, 1.0 + 0.0025 * i, 0.2, 0.0025 * i) for i in range(1,
 
 names = ["CU1@1", "CU1@2", "CTF1@1", "CTF1@2", "CDMG@1", "CDMG@2", "CDIF@1", "CDIF@2"]
 rows, e13_rows, curve = [], {}, [(0.0, 0.0)]
-deleted, frozen = False, 0.0
+deleted = False
 for step, inc, st, tt, u1, u2 in path:
     f1, d1, r1 = e13.update(u1) if inc > 0 else (0.0, 0.0, 0.0)
     if deleted:
-        cu2, f2, d2, r2 = frozen, 0.0, 1.0, fail.r_max
+        # behaviors.md §7.4, output-variables.md §2: no force, CDMG = 1, CDIF frozen; CU1 goes on
+        # reporting the prescribed motion of node 4.
+        f2, d2, r2 = 0.0, 1.0, fail.r_max
     else:
         f2, d2, r2 = fail.update(u2) if inc > 0 else (0.0, 0.0, 0.0)
-        cu2 = u2
         curve.append((u2, f2))
-        if d2 >= 1.0:
-            deleted, frozen = True, u2
+        deleted = d2 >= 1.0
     e13_rows[round(u1, 6)] = (d1, f1)
-    rows.append((step, inc, st, tt, [u1, cu2, f1, f2, d1, d2, r1, r2]))
+    rows.append((step, inc, st, tt, [u1, u2, f1, f2, d1, d2, r1, r2]))
 
 # §7.5 E13: (U, W, CDMG, CTF1).
 for u, w, d, f in ((0.10, 0.95, 0.090627066, 90.937293), (0.15, 7.2, 0.513247744, 73.012838),
@@ -57,11 +59,13 @@ area = sum(0.5 * (fa + fb) * (ub - ua) for (ua, fa), (ub, fb) in zip(curve, curv
 dl.check(exact / G_F, 0.99, 0.0015, "continuous dissipated energy / G_f")
 dl.check(area / G_F, exact / G_F, 1e-3, "trapezoidal area against the continuous curve")
 dl.check(area / G_F, 1.0, 0.011, "trapezoidal area of the history / G_f")
+dl.check(rows[-1][4][1], 0.35, 1e-15, "CU1 of the deleted element 2 at the end")
 
 g.write_golden(__file__, [
     "damage_energy: AXIAL k = 1000, FORCE initiation at 90, TYPE=ENERGY G_f = 10 (behaviors.md",
     "§7.2). Element 1 = E13 (U -> 0.2 in 4 incr.); element 2 driven to 0.35 in 140 incr., fails",
     f"(d >= 0.99 -> 1) at U = {u_s + 0.0025:.4f}. W = 500 (U^2 - 0.0081), d = 1 - exp(-W/G_f).",
     f"Dissipated after initiation: continuous {exact:.6f} = {exact / G_F:.6f} G_f; trapezoidal",
-    f"area of the history rows {area:.6f} = {area / G_F:.6f} G_f",
+    f"area of the history rows {area:.6f} = {area / G_F:.6f} G_f. After deletion: CTF1 = 0, CDMG = 1,",
+    "CDIF frozen, CU1 = the motion of node 4 (behaviors.md §7.4)",
 ], names, rows)

@@ -2,7 +2,10 @@
 
 Closed forms of damage_lib.py: u_0 = 90/1000, the force-shape laws d = 1 − u_0 g(κ)/(u_0 + κ)
 (LINEAR, EXPONENTIAL) and d = table(κ) (TABULAR), κ = max(U) − u_0, CTF1 = (1 − d) k U. The
-spec's printed E12 table and variant table are asserted to their digits.
+spec's printed E12 table and variant table are asserted to their digits. Every element reaches
+d = 1 at U = 0.3 and is deleted at the end of that increment; in step 4 (U = 0.35) its forces
+are 0, CDMG = 1, CDIF stays frozen, CSLST1 = 4, and CU1 = 0.35, the motion of its node
+(behaviors.md §7.4, output-variables.md §2).
 """
 import os
 import sys
@@ -30,13 +33,14 @@ names += [f"CDIF@{e}" for e in (1, 2, 3)] + [f"CSLST1@{e}" for e in (1, 2, 3)]
 names += ["RF1@2", "RF1@4", "RF1@6"]
 rows, table = [], {}
 deleted = [False] * 3
-frozen_u = [0.0] * 3
 for step, inc, st, tt, u in path:
     cu, ctf, dmg, cdif, status = [], [], [], [], []
     for i, el in enumerate(elements):
         if deleted[i]:
-            # §7.4: a deleted element carries no force; its outputs freeze; CSLST = 4.
-            cu.append(frozen_u[i])
+            # behaviors.md §7.4, output-variables.md §2: a deleted element carries no force,
+            # CDMG = 1, CDIF (history) stays frozen, CSLST = 4, and CU1 goes on reporting the
+            # prescribed motion of its node b.
+            cu.append(u)
             ctf.append(0.0)
             dmg.append(1.0)
             cdif.append(el.r_max)
@@ -54,7 +58,6 @@ for step, inc, st, tt, u in path:
     for i, el in enumerate(elements):
         if not deleted[i] and el.d >= 1.0:
             deleted[i] = True
-            frozen_u[i] = u
 
 # behaviors.md §7.5, E12 table (CDMG, CTF1) and the step-1 variants (d, F).
 e12 = {0.25: (0, 50), 0.5: (0.145, 85.5), 0.75: (0.58, 63), 1.0: (0.7975, 40.5),
@@ -70,10 +73,13 @@ for tt, (de, fe, dt, ft) in variants.items():
     dl.check(table[tt][0][1], fe, 5e-7, f"EXPONENTIAL F at {tt}")
     dl.check(table[tt][1][2], dt, 5e-7, f"TABULAR d at {tt}")
     dl.check(table[tt][0][2], ft, 1e-9, f"TABULAR F at {tt}")
+for i in range(3):
+    dl.check(rows[-1][4][i], 0.35, 0.0, f"CU1 of the deleted element {i + 1} at U = 0.35")
 
 g.write_golden(__file__, [
     "damage_force_softening: three AXIAL connectors, k = 1000, FORCE initiation at 90 (u_0 = 0.09),",
     "LINEAR (0.2), EXPONENTIAL (0.2, a = 5), TABULAR (0,0)/(0.5,0.05)/(1,0.2) softening, all driven",
     "U 0 -> 0.2 (4 incr.), -> 0.1 (1), -> 0.3 (4: every element deleted at U = 0.3), -> 0.35 (1).",
-    "Closed forms of behaviors.md §7.2 (damage_lib.py); matches the §7.5 E12 table and its variants",
+    "Closed forms of behaviors.md §7.2 (damage_lib.py); matches the §7.5 E12 table and its variants.",
+    "Deleted: forces 0, CDMG = 1, CDIF frozen, CSLST1 = 4, CU1 = the motion of node b (§7.4)",
 ], names, rows)

@@ -4,7 +4,10 @@ Closed form (damage_lib.PlasticDamage): perfectly plastic backward-Euler return 
 k = 1000; Δλ = (|F_tr| − F_y)/k), ū accumulating Δλ in both directions, CDIP = ū/ū_0 with
 ū_0 = 0.05, δ = ū − ū_0, d = 1 − g(δ) with linear g (plasticity is integrated in effective
 space, so the effective force stays on the yield surface, §7.3), CTF1 = (1 − d) f^eff. Asserts
-the §7.5 E14 table and its unloading figures.
+the §7.5 E14 table and its unloading figures. After deletion (behaviors.md §7.4,
+output-variables.md §2) an element's CTF1 is 0, CDMG = 1, CUP1, CUPEQ and CDIP stay at their
+values at deletion, and CU1 goes on reporting the prescribed motion of its node b (element 1 is
+held at 0.25; element 2 follows its node to 0.16).
 """
 import os
 import sys
@@ -31,12 +34,14 @@ names = []
 for e in (1, 2):
     names += [f"{v}@{e}" for v in ("CU1", "CTF1", "CUP1", "CUPEQ", "CDIP", "CDMG")]
 rows, e14_rows = [], {}
-state = [None, None]  # frozen outputs of a deleted element
+history = [None, None]  # CUP1, CUPEQ, CDIP of a deleted element, frozen at deletion
 for step, inc, st, tt, u2, u4 in path:
     values = []
     for e, (el, u) in enumerate(((e14, u2), (cyclic, u4))):
-        if state[e] is not None:
-            values += state[e]
+        if history[e] is not None:
+            # Deleted (behaviors.md §7.4, output-variables.md §2): force 0, plastic and damage
+            # history frozen, CDMG = 1; CU1 goes on reporting the prescribed motion of node b.
+            values += [u, 0.0] + history[e] + [1.0]
             continue
         if inc == 0:
             out = [0.0] * 6
@@ -45,8 +50,8 @@ for step, inc, st, tt, u2, u4 in path:
             out = [u, f, up, ubar, cdip, d]
             if e == 0:
                 e14_rows[round(u, 6)] = (ubar, cdip, d, f)
-            if d >= 1.0:  # deleted at the end of this increment (§7.4): forces 0, the rest frozen
-                state[e] = [u, 0.0, up, ubar, cdip, 1.0]
+            if d >= 1.0:  # deleted at the end of this increment (§7.4)
+                history[e] = [up, ubar, cdip]
         values += out
     rows.append((step, inc, st, tt, values))
 
@@ -62,10 +67,12 @@ for u in (0.05, 0.10, 0.15, 0.20):
 f, up, ubar, cdip, d, feff = probe.update(0.15)
 dl.check(feff, 30.0, 1e-9, "E14 unloading f^eff")
 dl.check(f, 9.0, 1e-9, "E14 unloading CTF1")
+dl.check(rows[-1][4][6], 0.16, 1e-15, "CU1 of the deleted element 2 at the end")
 
 g.write_golden(__file__, [
     "damage_plastic_motion_cyclic: AXIAL k = 1000, F_y = 80 perfectly plastic, PLASTIC MOTION",
     "initiation at 0.05, linear softening. Element 1 = E14 (0.1; U -> 0.25 in 5 incr., deleted).",
     "Element 2 (0.3): U 0 -> 0.12 -> -0.12 -> 0.14 -> -0.1 -> 0.16 (5 and 6 incr. per leg),",
-    "fails and is deleted at U = 0.116667. Backward-Euler return (§6.3), d = 1 - g(ubar - 0.05)",
+    "fails and is deleted at U = 0.116667. Backward-Euler return (§6.3), d = 1 - g(ubar - 0.05).",
+    "Deleted: CTF1 = 0, CDMG = 1, CUP1, CUPEQ, CDIP frozen, CU1 = the motion of node b (§7.4)",
 ], names, rows)
