@@ -81,6 +81,20 @@ run_deck() {
   fi
 }
 
+# The variant run of deck $1 into $out/$2 with the further options $3 must log a line matching
+# $4 (else $5 says what it missed); it is then compared with the run as written, with the
+# options $6.
+variant() {
+  run_deck "$1" "$out/$2" "$3"
+  if ! grep -q "$4" "$out/$2/job.log"; then
+    echo "verify $case_name: $5" >&2
+    exit 1
+  fi
+  result="$out/$2/job.history.csv"
+  reference="$out/as-written/job.history.csv"
+  compare_args=$6
+}
+
 launch=
 run_deck "$deck" "$out/as-written"
 if [ "$ranks" -gt 0 ]; then
@@ -88,34 +102,16 @@ if [ "$ranks" -gt 0 ]; then
   # beside other tests.
   export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
   launch="mpirun --oversubscribe -n $ranks"
-  run_deck "$deck" "$out/distributed"
-  if ! grep -q "distributed over $ranks processes" "$out/distributed/job.log"; then
-    echo "verify $case_name: the mpirun -n $ranks run did not distribute its elements" >&2
-    exit 1
-  fi
-  result="$out/distributed/job.history.csv"
-  reference="$out/as-written/job.history.csv"
-  compare_args="--rtol 1e-8 --atol 1e-12"
+  variant "$deck" distributed "" "distributed over $ranks processes" \
+          "the mpirun -n $ranks run did not distribute its elements" "--rtol 1e-8 --atol 1e-12"
 elif [ "$check_tangent" -eq 1 ]; then
-  run_deck "$deck" "$out/checked" --check-tangent
-  if ! grep -q '^tangent check at step' "$out/checked/job.log"; then
-    echo "verify $case_name: the --check-tangent run logged no tangent check" >&2
-    exit 1
-  fi
-  result="$out/checked/job.history.csv"
-  reference="$out/as-written/job.history.csv"
-  compare_args="--rtol 1e-12 --atol 0"
+  variant "$deck" checked --check-tangent '^tangent check at step' \
+          "the --check-tangent run logged no tangent check" "--rtol 1e-12 --atol 0"
 elif [ "$unsymm" -eq 1 ]; then
   # *STEP lines (any case, with or without parameters) gain ", UNSYMM=YES".
   sed -E 's/^(\*[Ss][Tt][Ee][Pp])([ ,].*)?$/\1\2, UNSYMM=YES/' "$deck" > "$out/$case_name.inp"
-  run_deck "$out/$case_name.inp" "$out/full"
-  if ! grep -q 'on the full pattern' "$out/full/job.log"; then
-    echo "verify $case_name: the UNSYMM=YES run did not assemble the full pattern" >&2
-    exit 1
-  fi
-  result="$out/full/job.history.csv"
-  reference="$out/as-written/job.history.csv"
-  compare_args="--rtol 1e-9 --atol 1e-12"
+  variant "$out/$case_name.inp" full "" 'on the full pattern' \
+          "the UNSYMM=YES run did not assemble the full pattern" "--rtol 1e-9 --atol 1e-12"
 else
   result="$out/as-written/job.history.csv"
   reference=$golden
