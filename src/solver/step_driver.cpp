@@ -8,6 +8,7 @@
 #include <set>
 
 #include "src/solver/convergence_criteria.hpp"
+#include "src/solver/static_time_stepper.hpp"
 #include "src/solver/step_conditions.hpp"
 #include "src/solver/tangent_check.hpp"
 
@@ -46,12 +47,21 @@ std::string describe_failure(const Model& model, const AnalysisPlan& plan,
   }
   if (name.empty()) return "the system is singular";
   if (plan.dofs.node_of(report.failed_equation) >= 0) {
-    return fmt::format("singular system: {} has no stiffness (add a *BOUNDARY or an element that "
-                       "restrains it)",
-                       name);
+    return fmt::format(
+        "singular system: {} has no stiffness (add a *BOUNDARY or an element that "
+        "restrains it)",
+        name);
   }
   return "overconstrained " + name;
 }
+
+// What an attempt leaves for the stepper and for the acceptance of its increment.
+struct Attempted {
+  AttemptOutcome outcome;
+  IncrementAttempt status_line;
+  StepRequest request;
+  IterationNorms last_iteration;  // the converged iteration's norms (keywords.md §16)
+};
 
 class Driver {
  public:
@@ -180,12 +190,46 @@ class Driver {
     const Step& step = model_.history.steps[s];
     const StaticProcedure procedure = step.procedure.value_or(StaticProcedure{});
     const int step_number = static_cast<int>(s) + 1;
+    if (!begin_step(step, procedure, step_number)) return false;
+    StaticTimeStepper stepper(
+        StaticTimeSettings::of(procedure, step.max_increments, step.controls.time));
+    Attempted last;
+    const int cutbacks_before = result_.cutbacks;
+    int attempt_number = 0;
+    for (TimeProposal proposal = stepper.first(); proposal.kind != TimeProposal::Kind::Done;) {
+      const int increment = stepper.increments() + 1;
+      if (proposal.kind == TimeProposal::Kind::Stop) {
+        return fail(proposal.reason, step_number, increment);
+      }
+      if (proposal.cut_back) {
+        out_.log.warning(fmt::format("step {} increment {}: {}; cutting back to {}", step_number,
+                                     increment, last.outcome.reason, proposal.dt));
+      }
+      attempt_number = proposal.cut_back ? attempt_number + 1 : 1;
+      if (!attempt_increment(step, step_number, increment, attempt_number, proposal.dt, last)) {
+        return false;
+      }
+      const bool converged = last.outcome.kind == AttemptOutcome::Kind::Converged;
+      proposal = stepper.next(last.outcome);
+      result_.cutbacks = cutbacks_before + stepper.cutbacks();
+      if (converged && !accept_increment(step_number, stepper, last)) return false;
+    }
+    conditions_.end_step(procedure.period, total_time_);
+    for (const std::string& line : problem_.step_summary()) {
+      out_.log.info(fmt::format("step {}: {}", step_number, line));
+    }
+    return true;
+  }
+
+  // What the step sets once: NLGEOM, the storage and its solver, the conditions, the line search,
+  // the criteria and the output columns.
+  bool begin_step(const Step& step, const StaticProcedure& procedure, int step_number) {
     controls_ = &step.controls;
     // DIRECT=NO STOP accepts an increment that reaches the iteration limit (keywords.md §15).
     accept_unconverged_ = procedure.direct && procedure.no_stop;
     system_.set_nlgeom(step.nlgeom);
     if (!choose_storage(step, step_number)) return false;
-    conditions_.begin_step(s, system_);
+    conditions_.begin_step(static_cast<std::size_t>(step_number - 1), system_);
     warned_.clear();
     // A stick–slip switch can send Newton back and forth across the narrow stick band (slip
     // tangents on both sides); a line search stops the cycle. Steps with friction get one unless
@@ -193,157 +237,134 @@ class Driver {
     line_search_ = step.controls.line_search;
     if (plan_.friction && !line_search_.given && line_search_.max_iterations == 0) {
       line_search_.max_iterations = kFrictionLineSearch;
-      out_.log.info(fmt::format("step {}: line search on (N_ls = {}): the step has friction and "
-                                "the deck does not set *CONTROLS, PARAMETERS=LINE SEARCH",
-                                step_number, kFrictionLineSearch));
+      out_.log.info(
+          fmt::format("step {}: line search on (N_ls = {}): the step has friction and "
+                      "the deck does not set *CONTROLS, PARAMETERS=LINE SEARCH",
+                      step_number, kFrictionLineSearch));
     }
     if (plan_.rate_dependent_friction) {
-      out_.log.info(fmt::format("step {}: the friction is rate dependent; in a *STATIC step the "
-                                "slip rate is the slip of an increment over its step time "
-                                "(friction.md §3.3)",
-                                step_number));
+      out_.log.info(
+          fmt::format("step {}: the friction is rate dependent; in a *STATIC step the "
+                      "slip rate is the slip of an increment over its step time "
+                      "(friction.md §3.3)",
+                      step_number));
     }
     criteria_.start_step(step.controls);
-    out_.columns.begin_step(s);
-    const TimeIncrementationControls& t = step.controls.time;
-    const double period = procedure.period;
-    double dt = std::min(procedure.initial_increment, period);
-    double step_time = 0.0, previous_dt = 0.0;
-    int increment = 0, easy_in_a_row = 0;
-    while (step_time < period * (1.0 - 1e-12)) {
-      if (increment >= step.max_increments) {
-        return fail(fmt::format("too many increments (INC={})", step.max_increments), step_number,
-                    increment);
+    out_.columns.begin_step(static_cast<std::size_t>(step_number - 1));
+    step_time_ = 0.0;
+    return true;
+  }
+
+  // One attempt at the increment from step_time_ to step_time_ + dt: conditions, predictor,
+  // Newton with the stop active set, and the failure criteria of the converged state, which
+  // release components and solve the same increment again (behaviors.md §5.3). A failed or
+  // abandoned attempt is reverted and its status line written. False when the run must stop
+  // here (a signal, an output that cannot be written).
+  bool attempt_increment(const Step& step, int step_number, int increment, int& attempt_number,
+                         double dt, Attempted& attempted) {
+    for (;; ++attempt_number) {
+      if (interrupted(step_number, increment)) return false;
+      const double new_time = step_time_ + dt;
+      system_.set_time(total_time_ + dt, dt);
+      conditions_.apply(system_, new_time, total_time_ + dt);
+      const bool extrapolate = step.extrapolation && increment > 1 && previous_dt_ > 0;
+      system_.start_increment(extrapolate ? dt / previous_dt_ : 0.0);
+      if (options_.check_tangent) out_.log.info(check_tangent(system_, step_number, increment));
+      int iterations = 0, changes = 0;
+      const NewtonReport report =
+          attempt(step_number, increment, attempt_number, iterations, changes);
+      result_.iterations += iterations;
+      if (report.outcome == NewtonOutcome::Interrupted && interrupted(step_number, increment)) {
+        return false;
       }
-      const double remaining = period - step_time;
-      // The last increment ends exactly at T (keywords.md §15).
-      if (dt >= remaining * (1.0 - 1e-9)) dt = remaining;
-      int cutbacks = 0;
-      for (int attempt_number = 1;; ++attempt_number) {
-        if (interrupted(step_number, increment + 1)) return false;
-        const double new_time = step_time + dt;
-        system_.set_time(total_time_ + dt, dt);
-        conditions_.apply(system_, new_time, total_time_ + dt);
-        const bool extrapolate = step.extrapolation && increment > 0 && previous_dt > 0;
-        system_.start_increment(extrapolate ? dt / previous_dt : 0.0);
-        if (options_.check_tangent) {
-          out_.log.info(check_tangent(system_, step_number, increment + 1));
-        }
-        int iterations = 0, changes = 0;
-        const NewtonReport report =
-            attempt(step_number, increment + 1, attempt_number, iterations, changes);
-        result_.iterations += iterations;
-        if (report.outcome == NewtonOutcome::Interrupted &&
-            interrupted(step_number, increment + 1)) {
-          return false;
-        }
-        const bool converged = report.converged();
-        // A converged attempt is still abandoned when a law asks for a smaller increment.
-        const StepRequest request = problem_.step_request();
-        const bool smaller = converged && request.dt_ratio < 1.0;
-        const IncrementAttempt status_line{step_number, increment + 1, attempt_number,
-                                           !converged || smaller, iterations, iterations + changes,
-                                           total_time_ + dt, new_time, dt};
-        if (!converged || smaller) out_.status.write_attempt(status_line);
-        if (!outputs_written(step_number, increment + 1)) return false;
-        // §5.3: a failure criterion met on the converged state releases its components; the
-        // same increment is then solved again (an attempt of its own, with the same time).
-        if (converged && !smaller) {
-          const std::vector<std::string> failures = problem_.release_failed_components();
-          if (!failures.empty()) {
-            for (const std::string& f : failures) {
-              out_.log.info(fmt::format("step {} increment {}: {}; the increment is solved again",
-                                        step_number, increment + 1, f));
-            }
-            IncrementAttempt redone = status_line;
-            redone.cut_back = true;
-            out_.status.write_attempt(redone);
-            problem_.revert();
-            continue;
-          }
-        }
-        if (converged && !smaller) {
-          problem_.commit();
-          criteria_.accept_increment(report.iterations.back());
-          for (const StepRequest::Warning& w : request.warnings) {
-            if (warned_.insert(w.element).second) out_.log.warning(w.message);
-          }
-          step_time = new_time;
-          total_time_ += dt;
-          ++increment;
-          ++result_.increments;
-          previous_dt = dt;
-          const bool last = step_time >= period * (1.0 - 1e-12);
-          write_row(step_number, increment, step_time, total_time_, last);
-          // The row is on disk before the status line of its increment: a killed run's status
-          // file is never ahead of its history.
-          if (!outputs_written(step_number, increment)) return false;
-          out_.status.write_attempt(status_line);
-          if (!outputs_written(step_number, increment)) return false;
-          // A lock engages at the converged state; its row shows the unlocked state
-          // (behaviors.md §5.2, example E5).
-          problem_.end_increment();
-          for (const std::string& event : problem_.take_events()) {
-            out_.log.info(fmt::format("step {} increment {}: {}", step_number, increment, event));
-          }
-          out_.progress.update(step_number, increment, total_time_);
-          if (!procedure.direct) {
-            // keywords.md §16: D_B after a hard increment, D_D after two easy ones.
-            easy_in_a_row = iterations <= t.ig ? easy_in_a_row + 1 : 0;
-            const double accepted = dt;
-            if (iterations > t.il)
-              dt *= t.db;
-            else if (easy_in_a_row >= 2)
-              dt *= t.dd;
-            // A law may cap the growth: by its ratio, or to none while it doubts its result.
-            dt = std::min(dt, accepted * (request.unreliable ? std::min(1.0, request.dt_ratio)
-                                                             : request.dt_ratio));
-            dt = std::min(dt, procedure.max_increment);
-          }
-          break;
-        }
-        const std::string note = smaller ? std::string() : problem_.failure_note(report.failed_equation);
+      const bool converged = report.converged();
+      // A converged attempt is still abandoned when a law asks for a smaller increment.
+      attempted.request = problem_.step_request();
+      const bool smaller = converged && attempted.request.dt_ratio < 1.0;
+      attempted.status_line = {step_number,           increment,  attempt_number,
+                               !converged || smaller, iterations, iterations + changes,
+                               total_time_ + dt,      new_time,   dt};
+      if (!converged || smaller) out_.status.write_attempt(attempted.status_line);
+      if (!outputs_written(step_number, increment)) return false;
+      if (converged && !smaller && redo_after_failures(step_number, increment, attempted)) continue;
+      attempted.outcome = outcome_of(report, attempted.request, smaller, iterations);
+      if (converged && !smaller) {
+        attempted.last_iteration = report.iterations.back();
+      } else {
         problem_.revert();
-        std::string reason = smaller ? request.message : report.message;
-        const bool singular = !smaller && report.outcome == NewtonOutcome::SolverFailed;
-        if (singular || (!smaller && report.outcome == NewtonOutcome::NonFinite)) {
-          reason = describe_failure(model_, plan_, report);
-        }
-        // A tangent may be singular at one state and not at another (past the last point of a
-        // table with CONSTANT extrapolation): smaller increments are tried as for any failed
-        // attempt (principle 7). When none helps, the singular DOF is the reason that stands.
-        const auto give_up = [&](std::string why) {
-          std::string stated = singular ? reason : std::move(why);
-          if (!note.empty()) stated += "; " + note;
-          return fail(std::move(stated), step_number, increment + 1);
-        };
-        if (!smaller && report.outcome == NewtonOutcome::EvaluationFailed && procedure.direct) {
-          return fail(reason, step_number, increment + 1);
-        }
-        if (procedure.direct) {
-          return give_up(
-              smaller ? fmt::format("a law asks for a smaller increment than DIRECT allows ({})",
-                                    reason)
-                      : fmt::format("no convergence with fixed increments ({})", reason));
-        }
-        ++result_.cutbacks;
-        if (++cutbacks > t.ia) {
-          return give_up(fmt::format("too many cutbacks ({}; last: {})", t.ia, reason));
-        }
-        dt *= smaller ? request.dt_ratio : report.outcome == NewtonOutcome::Diverged ? t.df : t.dc;
-        easy_in_a_row = 0;
-        if (dt < procedure.min_increment * (1.0 - 1e-12)) {
-          return give_up(fmt::format("time increment {} below the minimum {} ({})", dt,
-                                     procedure.min_increment, reason));
-        }
-        out_.log.warning(fmt::format("step {} increment {}: {}; cutting back to {}", step_number,
-                                     increment + 1, reason, dt));
       }
+      return true;
     }
-    conditions_.end_step(period, total_time_);
-    for (const std::string& line : problem_.step_summary()) {
-      out_.log.info(fmt::format("step {}: {}", step_number, line));
+  }
+
+  // §5.3: a failure criterion met on the converged state releases its components; the same
+  // increment is then solved again (an attempt of its own, with the same time).
+  bool redo_after_failures(int step_number, int increment, const Attempted& attempted) {
+    const std::vector<std::string> failures = problem_.release_failed_components();
+    if (failures.empty()) return false;
+    for (const std::string& f : failures) {
+      out_.log.info(fmt::format("step {} increment {}: {}; the increment is solved again",
+                                step_number, increment, f));
     }
+    IncrementAttempt redone = attempted.status_line;
+    redone.cut_back = true;
+    out_.status.write_attempt(redone);
+    problem_.revert();
+    return true;
+  }
+
+  // The stepper's view of an attempt. A singular system names its DOF, which stands as the reason
+  // when no smaller increment helps; the state may add a note (a connector deleted next to it).
+  AttemptOutcome outcome_of(const NewtonReport& report, const StepRequest& request, bool smaller,
+                            int iterations) const {
+    using Kind = AttemptOutcome::Kind;
+    AttemptOutcome outcome;
+    outcome.iterations = iterations;
+    outcome.dt_ratio = request.dt_ratio;
+    outcome.unreliable = request.unreliable;
+    if (smaller) {
+      outcome.kind = Kind::LawAsksSmaller;
+      outcome.reason = request.message;
+      return outcome;
+    }
+    if (report.converged()) return outcome;
+    outcome.kind = report.outcome == NewtonOutcome::Diverged           ? Kind::Diverged
+                   : report.outcome == NewtonOutcome::EvaluationFailed ? Kind::EvaluationFailed
+                                                                       : Kind::NotConverged;
+    outcome.note = problem_.failure_note(report.failed_equation);
+    outcome.reason_stands = report.outcome == NewtonOutcome::SolverFailed;
+    outcome.reason = outcome.reason_stands || report.outcome == NewtonOutcome::NonFinite
+                         ? describe_failure(model_, plan_, report)
+                         : report.message;
+    return outcome;
+  }
+
+  // A converged increment: commit, write its row and then its status line (a killed run's status
+  // file is never ahead of its history), engage locks and report the events.
+  bool accept_increment(int step_number, const StaticTimeStepper& stepper,
+                        const Attempted& attempted) {
+    const int increment = stepper.increments();
+    const double dt = attempted.status_line.time_increment;
+    problem_.commit();
+    criteria_.accept_increment(attempted.last_iteration);
+    for (const StepRequest::Warning& w : attempted.request.warnings) {
+      if (warned_.insert(w.element).second) out_.log.warning(w.message);
+    }
+    step_time_ = stepper.step_time();
+    total_time_ += dt;
+    ++result_.increments;
+    previous_dt_ = dt;
+    write_row(step_number, increment, step_time_, total_time_, stepper.at_end());
+    if (!outputs_written(step_number, increment)) return false;
+    out_.status.write_attempt(attempted.status_line);
+    if (!outputs_written(step_number, increment)) return false;
+    // A lock engages at the converged state; its row shows the unlocked state
+    // (behaviors.md §5.2, example E5).
+    problem_.end_increment();
+    for (const std::string& event : problem_.take_events()) {
+      out_.log.info(fmt::format("step {} increment {}: {}", step_number, increment, event));
+    }
+    out_.progress.update(step_number, increment, total_time_);
     return true;
   }
 
@@ -406,11 +427,14 @@ class Driver {
   const Controls* controls_ = nullptr;
   bool accept_unconverged_ = false;
   double total_time_ = 0.0;
+  double step_time_ = 0.0;    // of the step, at the last converged increment
+  double previous_dt_ = 0.0;  // the last converged increment (extrapolation)
   std::vector<double> values_;
   RunResult result_;
   std::set<std::size_t> warned_;
   static constexpr int kFrictionLineSearch = 5;
-  LineSearchControls line_search_;  // this step's, with clinch's choice for friction  // elements whose law warning this step's log already has
+  LineSearchControls line_search_;  // this step's, with clinch's choice for friction  // elements
+                                    // whose law warning this step's log already has
 };
 
 }  // namespace

@@ -1,10 +1,11 @@
-// The step driver (keywords.md §13–§16): runs every step of the deck, increment by increment —
-// automatic incrementation with cutbacks and growth, or DIRECT — calls Newton for each attempt,
-// settles the active set of stops, honours what the laws ask of the time step, engages locks on
-// converged increments, and reports each attempt to the status file, each iteration to the log
-// and each converged increment to the history table. Each step assembles a symmetric tangent
-// (CHOLMOD) or a full one (UMFPACK) as its laws and *STEP, UNSYMM require. A failure stops the run
-// with the reason, the step, the increment and the time.
+// The step driver (keywords.md §13–§16): runs every step of the deck, increment by increment, as
+// its time stepper proposes them (static_time_stepper.hpp: automatic incrementation with cutbacks
+// and growth, or DIRECT); calls Newton for each attempt, settles the active set of stops, passes
+// what the laws ask of the time step to the stepper, engages locks on converged increments, and
+// reports each attempt to the status file, each iteration to the log and each converged increment
+// to the history table. Each step assembles a symmetric tangent (CHOLMOD) or a full one (UMFPACK)
+// as its laws and *STEP, UNSYMM require. A failure stops the run with the reason, the step, the
+// increment and the time.
 #pragma once
 
 #include <functional>
@@ -45,8 +46,8 @@ struct RunResult {
   double time = 0;
   int increments = 0, iterations = 0, cutbacks = 0;
   int factorizations = 0;
-  double linear_seconds = 0;  // wall time in factorize + solve
-  double newton_seconds = 0;  // wall time in Newton (evaluation, assembly, factorize, solve)
+  double linear_seconds = 0;   // wall time in factorize + solve
+  double newton_seconds = 0;   // wall time in Newton (evaluation, assembly, factorize, solve)
   double analyze_seconds = 0;  // wall time in the solvers' symbolic analyses
 };
 

@@ -1,0 +1,206 @@
+// StaticTimeStepper (src/solver/static_time_stepper.hpp) on its own, with no deck and no files:
+// the increments it proposes after each kind of attempt, against keywords.md §15–§16 worked by
+// hand. Each expected increment is a product of at most a few decimal factors: 1e-15 relative
+// covers their rounding.
+#include <gtest/gtest.h>
+
+#include "src/solver/static_time_stepper.hpp"
+
+namespace clinch {
+namespace {
+
+constexpr double kTol = 1e-15;
+using Kind = TimeProposal::Kind;
+
+StaticTimeSettings settings(double initial, double period = 1.0) {
+  StaticTimeSettings s;
+  s.initial_increment = initial;
+  s.period = period;
+  return s;
+}
+
+AttemptOutcome converged(int iterations) {
+  AttemptOutcome o;
+  o.iterations = iterations;
+  return o;
+}
+
+AttemptOutcome failed(AttemptOutcome::Kind kind, std::string reason = "no convergence") {
+  AttemptOutcome o;
+  o.kind = kind;
+  o.reason = std::move(reason);
+  return o;
+}
+
+TEST(StaticTimeStepper, StartsWithTheInitialIncrementCappedAtThePeriod) {
+  StaticTimeStepper a(settings(0.1));
+  EXPECT_EQ(a.first().kind, Kind::Attempt);
+  StaticTimeStepper b(settings(0.1));
+  EXPECT_NEAR(b.first().dt, 0.1, 0.1 * kTol);
+  StaticTimeStepper c(settings(5.0, 2.0));
+  EXPECT_DOUBLE_EQ(c.first().dt, 2.0);
+}
+
+// I_G = 4 iterations or fewer is easy; after two easy increments in a row the increment grows by
+// D_D = 1.5, and not beyond the maximum increment.
+TEST(StaticTimeStepper, GrowsAfterTwoEasyIncrements) {
+  StaticTimeSettings s = settings(0.1, 10.0);
+  s.max_increment = 0.2;
+  StaticTimeStepper stepper(s);
+  stepper.first();
+  EXPECT_NEAR(stepper.next(converged(3)).dt, 0.1, 0.1 * kTol);    // one easy increment
+  EXPECT_NEAR(stepper.next(converged(4)).dt, 0.15, 0.15 * kTol);  // two: × 1.5
+  EXPECT_NEAR(stepper.next(converged(2)).dt, 0.2, 0.2 * kTol);    // 0.225, capped at 0.2
+  EXPECT_EQ(stepper.increments(), 3);
+  EXPECT_NEAR(stepper.step_time(), 0.35, 0.35 * kTol);
+}
+
+// More than I_L = 10 iterations: the next increment is D_B = 0.75 of this one; 5–10 iterations
+// keep it and break the run of easy increments.
+TEST(StaticTimeStepper, ShrinksAfterAHardIncrement) {
+  StaticTimeStepper stepper(settings(0.1, 10.0));
+  stepper.first();
+  EXPECT_NEAR(stepper.next(converged(11)).dt, 0.075, 0.075 * kTol);
+  EXPECT_NEAR(stepper.next(converged(1)).dt, 0.075, 0.075 * kTol);
+  EXPECT_NEAR(stepper.next(converged(7)).dt, 0.075, 0.075 * kTol);
+  EXPECT_NEAR(stepper.next(converged(1)).dt, 0.075, 0.075 * kTol);
+}
+
+// A failed attempt is cut back by D_C = 0.5, a diverging one by D_F = 0.25; a cutback also ends
+// a run of easy increments.
+TEST(StaticTimeStepper, CutsBackAFailedAttempt) {
+  StaticTimeStepper stepper(settings(0.4, 10.0));
+  stepper.first();
+  TimeProposal p = stepper.next(failed(AttemptOutcome::Kind::NotConverged));
+  EXPECT_EQ(p.kind, Kind::Attempt);
+  EXPECT_TRUE(p.cut_back);
+  EXPECT_NEAR(p.dt, 0.2, 0.2 * kTol);
+  p = stepper.next(failed(AttemptOutcome::Kind::Diverged));
+  EXPECT_NEAR(p.dt, 0.05, 0.05 * kTol);
+  EXPECT_EQ(stepper.cutbacks(), 2);
+  EXPECT_EQ(stepper.increments(), 0);
+  p = stepper.next(converged(1));
+  EXPECT_FALSE(p.cut_back);
+  EXPECT_NEAR(stepper.step_time(), 0.05, 0.05 * kTol);
+  EXPECT_NEAR(p.dt, 0.05, 0.05 * kTol);  // one easy increment only: no growth yet
+}
+
+// A law that asks for a ratio below 1 has the increment retried that much smaller; a ratio
+// above 1 caps the growth of the next one; an unreliable result keeps it from growing.
+TEST(StaticTimeStepper, HonoursTheLawsRequests) {
+  StaticTimeStepper stepper(settings(0.4, 10.0));
+  stepper.first();
+  AttemptOutcome smaller = failed(AttemptOutcome::Kind::LawAsksSmaller, "damage grows fast");
+  smaller.dt_ratio = 0.3;
+  TimeProposal p = stepper.next(smaller);
+  EXPECT_TRUE(p.cut_back);
+  EXPECT_NEAR(p.dt, 0.12, 0.12 * kTol);
+  stepper.next(converged(1));
+  AttemptOutcome capped = converged(1);
+  capped.dt_ratio = 1.2;  // growth by D_D = 1.5 capped at 1.2
+  EXPECT_NEAR(stepper.next(capped).dt, 0.144, 0.144 * kTol);
+  AttemptOutcome doubtful = converged(1);
+  doubtful.unreliable = true;
+  EXPECT_NEAR(stepper.next(doubtful).dt, 0.144, 0.144 * kTol);
+}
+
+// More than I_A = 5 cutbacks of one increment stop the step with the last reason.
+TEST(StaticTimeStepper, StopsAfterTooManyCutbacks) {
+  StaticTimeSettings s = settings(1.0);
+  s.min_increment = 1e-9;
+  StaticTimeStepper stepper(s);
+  stepper.first();
+  TimeProposal p;
+  for (int i = 0; i < 5; ++i) {
+    p = stepper.next(failed(AttemptOutcome::Kind::NotConverged));
+    ASSERT_EQ(p.kind, Kind::Attempt);
+  }
+  EXPECT_NEAR(p.dt, 1.0 / 32, kTol);
+  p = stepper.next(failed(AttemptOutcome::Kind::NotConverged, "no convergence in 16 iterations"));
+  EXPECT_EQ(p.kind, Kind::Stop);
+  EXPECT_EQ(p.reason, "too many cutbacks (5; last: no convergence in 16 iterations)");
+}
+
+// A cutback below the minimum increment stops the step; a singular system's reason stands on its
+// own, and the state's note follows.
+TEST(StaticTimeStepper, StopsBelowTheMinimumIncrement) {
+  StaticTimeSettings s = settings(1.0);
+  s.min_increment = 0.3;
+  StaticTimeStepper stepper(s);
+  stepper.first();
+  EXPECT_NEAR(stepper.next(failed(AttemptOutcome::Kind::NotConverged)).dt, 0.5, kTol);
+  TimeProposal p = stepper.next(failed(AttemptOutcome::Kind::NotConverged, "r grows"));
+  EXPECT_EQ(p.kind, Kind::Stop);
+  EXPECT_EQ(p.reason, "time increment 0.25 below the minimum 0.3 (r grows)");
+
+  StaticTimeStepper singular(s);
+  singular.first();
+  singular.next(failed(AttemptOutcome::Kind::NotConverged));
+  AttemptOutcome o =
+      failed(AttemptOutcome::Kind::NotConverged, "singular system: DOF u2 of node 2");
+  o.reason_stands = true;
+  o.note = "after connector element 1 was deleted (damage)";
+  EXPECT_EQ(singular.next(o).reason,
+            "singular system: DOF u2 of node 2; after connector element 1 was deleted (damage)");
+}
+
+// DIRECT keeps the increment whatever the iterations, and stops on the first failure, saying
+// why; an evaluation that fails stops it with its own message.
+TEST(StaticTimeStepper, DirectKeepsTheIncrementAndStopsCleanly) {
+  StaticTimeSettings s = settings(0.25);
+  s.direct = true;
+  StaticTimeStepper stepper(s);
+  stepper.first();
+  EXPECT_DOUBLE_EQ(stepper.next(converged(1)).dt, 0.25);
+  EXPECT_DOUBLE_EQ(stepper.next(converged(15)).dt, 0.25);
+  TimeProposal p = stepper.next(failed(AttemptOutcome::Kind::NotConverged, "r grows"));
+  EXPECT_EQ(p.kind, Kind::Stop);
+  EXPECT_EQ(p.reason, "no convergence with fixed increments (r grows)");
+  EXPECT_EQ(stepper.cutbacks(), 0);
+
+  StaticTimeStepper law(s);
+  law.first();
+  AttemptOutcome smaller = failed(AttemptOutcome::Kind::LawAsksSmaller, "d grows by 0.9");
+  smaller.dt_ratio = 0.5;
+  EXPECT_EQ(law.next(smaller).reason,
+            "a law asks for a smaller increment than DIRECT allows (d grows by 0.9)");
+  StaticTimeStepper evaluation(s);
+  evaluation.first();
+  EXPECT_EQ(
+      evaluation.next(failed(AttemptOutcome::Kind::EvaluationFailed, "element 3: overflow")).reason,
+      "element 3: overflow");
+}
+
+// The last increment ends exactly at the period: 0.3 + 0.3 + 0.3 leaves 0.1 (up to the rounding
+// of the sum), which is taken whole, and the step is then done.
+TEST(StaticTimeStepper, HitsTheStepEndExactly) {
+  StaticTimeSettings s = settings(0.3);
+  s.direct = true;
+  StaticTimeStepper stepper(s);
+  stepper.first();
+  stepper.next(converged(1));
+  stepper.next(converged(1));
+  const TimeProposal last = stepper.next(converged(1));
+  EXPECT_NEAR(last.dt, 0.1, 1e-15);
+  EXPECT_FALSE(stepper.at_end());
+  EXPECT_EQ(stepper.next(converged(1)).kind, Kind::Done);
+  EXPECT_TRUE(stepper.at_end());
+  EXPECT_DOUBLE_EQ(stepper.step_time(), 1.0);
+  // An increment within 1e-9 of what remains is stretched to it rather than leave a sliver.
+  StaticTimeStepper near(settings(1.0 - 1e-10));
+  EXPECT_DOUBLE_EQ(near.first().dt, 1.0);
+}
+
+TEST(StaticTimeStepper, StopsAtTheIncrementLimit) {
+  StaticTimeSettings s = settings(0.1);
+  s.max_increments = 2;
+  StaticTimeStepper stepper(s);
+  stepper.first();
+  stepper.next(converged(1));
+  const TimeProposal p = stepper.next(converged(1));
+  EXPECT_EQ(p.kind, Kind::Stop);
+  EXPECT_EQ(p.reason, "too many increments (INC=2)");
+}
+
+}  // namespace
+}  // namespace clinch
