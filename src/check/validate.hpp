@@ -8,8 +8,6 @@ namespace clinch {
 class DiagnosticSink;
 struct Model;
 
-// Resolves node and element references, places instances, builds the global arrays.
-void finalize_geometry(Model& model, DiagnosticSink& sink);
 // Sections, orientations, springs: types, element kinds, section_of_element, behaviour refs.
 void validate_sections(Model& model, DiagnosticSink& sink);
 // Behaviour rules of behaviors.md (attachment, duplicates, components available).
@@ -22,8 +20,8 @@ void validate_history(Model& model, DiagnosticSink& sink);
 void validate_model(Model& model, DiagnosticSink& sink);
 
 // Errors for what `clinch run` cannot run yet although validate_model accepts it (FORCE damage
-// beside friction or RIGID elasticity). `clinch check` and `clinch run` both call it after reading, so
-// that check never passes a deck that run refuses; tests of the validation alone do not.
+// beside friction or RIGID elasticity). `clinch check` and `clinch run` both call it after reading,
+// so that check never passes a deck that run refuses; tests of the validation alone do not.
 void report_run_refusals(const Model& model, DiagnosticSink& sink);
 
 }  // namespace clinch

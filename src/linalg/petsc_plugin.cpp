@@ -7,12 +7,13 @@
 #include <type_traits>
 
 #include "src/linalg/petsc_plugin_loader.hpp"
+#include "src/linalg/petsc_runtime.hpp"
 #include "src/linalg/petsc_solver.hpp"
 #include "src/parallel/communicator.hpp"
 
 namespace clinch {
-// The MPI world (src/parallel/mpi_communicator.cpp); make_world_communicator in clinch reaches it
-// through the plugin.
+// The MPI world (src/parallel/mpi_communicator.cpp), once MPI is running; make_world_communicator
+// in clinch reaches it through the plugin.
 std::unique_ptr<Communicator> make_mpi_world_communicator(std::string* error);
 }  // namespace clinch
 
@@ -35,6 +36,9 @@ __attribute__((visibility("default"))) clinch::LinearSolver* clinch_plugin_make_
 __attribute__((visibility("default"))) clinch::Communicator* clinch_plugin_make_world_communicator(
     std::string* error) {
   try {
+    // PETSc starts MPI (petsc_runtime.hpp), so that the linear solver and the exchanges share one
+    // world.
+    if (!clinch::ensure_petsc_initialized(error)) return nullptr;
     return clinch::make_mpi_world_communicator(error).release();
   } catch (const std::exception& e) {
     if (error != nullptr) *error = std::string("MPI world: ") + e.what();

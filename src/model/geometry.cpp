@@ -7,7 +7,6 @@
 #include "base/diagnostic.hpp"
 #include "base/suggest.hpp"
 #include "src/model/model.hpp"
-#include "src/check/validate.hpp"
 
 namespace clinch {
 

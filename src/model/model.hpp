@@ -35,4 +35,10 @@ struct Model {
   Model();
 };
 
+class DiagnosticSink;
+
+// Resolves node and element references, places instances and builds the global arrays
+// (geometry.cpp); the first stage of validate_model.
+void finalize_geometry(Model& model, DiagnosticSink& sink);
+
 }  // namespace clinch

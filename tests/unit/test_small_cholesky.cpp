@@ -1,4 +1,4 @@
-// SmallCholesky (src/linalg/small_cholesky.hpp) against Eigen's LLT on random symmetric positive
+// SmallCholesky (base/small_cholesky.hpp) against Eigen's LLT on random symmetric positive
 // definite 6×6 matrices with condition numbers up to about 1e8 (stiffness contrasts of connector
 // behaviours), and its refusal of indefinite and singular matrices.
 #include <gtest/gtest.h>
@@ -7,7 +7,7 @@
 
 #include <Eigen/Cholesky>
 
-#include "src/linalg/small_cholesky.hpp"
+#include "base/small_cholesky.hpp"
 #include "base/small_types.hpp"
 
 namespace clinch {

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "src/behavior/behavior.hpp"
-#include "src/linalg/small_cholesky.hpp"
+#include "base/small_cholesky.hpp"
 
 namespace clinch {
 namespace {

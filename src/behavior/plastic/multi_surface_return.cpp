@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "src/behavior/plastic/coupled_return_mapping.hpp"
-#include "src/linalg/small_cholesky.hpp"
+#include "base/small_cholesky.hpp"
 
 namespace clinch {
 namespace {
