@@ -163,9 +163,12 @@ int run_deck(const RunCommandOptions& options) {
   HistoryColumns columns(model, *plan);
   HistoryTable table;
   StatusFile status;
-  if (!every_rank_ok(table.open(output_path(".history.csv"), columns.names(), &error) &&
-                     status.open(output_path(".sta"), &error))) {
-    log.error(error);
+  // The status file first, so that it can say why the history could not be started (a header
+  // larger than the file-size limit, a full disk).
+  if (!every_rank_ok(status.open(output_path(".sta"), &error) &&
+                     table.open(output_path(".history.csv"), columns.names(), &error))) {
+    if (status.is_open()) status.write_failed(error, 1, 0, 0.0);
+    log.error(fmt::format("analysis stopped: {} (step 1, increment 0, time 0)", error));
     return kExitUsage;
   }
   const double columns_seconds = seconds_since(columns_start);
