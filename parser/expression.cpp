@@ -1392,11 +1392,10 @@ class Evaluator {
           // Checked before the concatenation is built, which could otherwise take gigabytes.
           if (a.s.size() + b.s.size() > kMaxParameterStringLength) {
             const std::string_view sum = span(left_begin, right.end);
-            return string_too_long(
-                at.pos,
-                fmt::format("'{}' would be",
-                            sum.size() > 40 ? std::string(sum.substr(0, 37)) + "..." : std::string(sum)),
-                a.s.size() + b.s.size());
+            const std::string shown =
+                sum.size() > 40 ? std::string(sum.substr(0, 37)) + "..." : std::string(sum);
+            return string_too_long(at.pos, fmt::format("'{}' would be", shown),
+                                   a.s.size() + b.s.size());
           }
           out = ParamValue::make_string(a.s + b.s);
           return true;
