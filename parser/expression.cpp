@@ -1234,6 +1234,10 @@ class Evaluator {
       case NodeKind::Literal:
         if (!node.overflow.empty())
           return fail(DiagCode::arithmetic_error, node.pos, node.overflow);
+        if (node.value.kind == ParamValue::Kind::String &&
+            node.value.s.size() > kMaxParameterStringLength) {
+          return string_too_long(node.pos, "this string literal is", node.value.s.size());
+        }
         out = node.value;
         return true;
       case NodeKind::Name:
@@ -1363,6 +1367,14 @@ class Evaluator {
     return true;
   }
 
+  // `what` says which string: "'a + b' would be" or "this string literal is".
+  bool string_too_long(std::uint32_t pos, const std::string& what, std::size_t length) {
+    return fail(DiagCode::arithmetic_error, pos,
+                fmt::format("{} {} characters long; a parameter string may have at most {} "
+                            "characters",
+                            what, length, kMaxParameterStringLength));
+  }
+
   bool int_overflow(std::uint32_t pos, std::int64_t a, std::string_view op, std::int64_t b) {
     return fail(DiagCode::arithmetic_error, pos,
                 fmt::format("integer overflow: {} {} {} does not fit in 64 bits", a, op, b));
@@ -1377,6 +1389,14 @@ class Evaluator {
     if (a.kind == K::String || b.kind == K::String) {
       if (a.kind == K::String && b.kind == K::String) {
         if (at.op == BinOp::Add) {
+          // Checked before the concatenation is built, which could otherwise take gigabytes.
+          if (a.s.size() + b.s.size() > kMaxParameterStringLength) {
+            const std::string_view sum = span(left_begin, right.end);
+            const std::string shown =
+                sum.size() > 40 ? std::string(sum.substr(0, 37)) + "..." : std::string(sum);
+            return string_too_long(at.pos, fmt::format("'{}' would be", shown),
+                                   a.s.size() + b.s.size());
+          }
           out = ParamValue::make_string(a.s + b.s);
           return true;
         }

@@ -36,6 +36,11 @@ struct ParamValue {
   std::string to_display() const;
 };
 
+// The longest string a parameter may hold (docs/decisions.md, "Parameter expressions"): far longer
+// than any Abaqus data line (256 characters), and small enough that doubling a string from line to
+// line cannot exhaust memory.
+inline constexpr std::size_t kMaxParameterStringLength = 65536;
+
 // Name resolution for evaluation: returns nullptr when the name is not (yet) defined. The
 // callback reports E0402/E0403 itself; the evaluator then fails without a further diagnostic. It
 // also returns nullptr, silently, for a parameter whose own definition failed (no cascade).

@@ -40,16 +40,6 @@ std::vector<ComponentMask> motion_components(const Model& model) {
   return mask;
 }
 
-double bounding_box_diagonal(const Model& model) {
-  if (model.nodes.empty()) return 0;
-  Vector3 lo = to_vector(model.nodes[0].x), hi = lo;
-  for (const Node& n : model.nodes) {
-    lo = lo.cwiseMin(to_vector(n.x));
-    hi = hi.cwiseMax(to_vector(n.x));
-  }
-  return (hi - lo).norm();
-}
-
 class PlanBuilder {
  public:
   PlanBuilder(const Model& model, AnalysisPlan& plan) : model_(model), plan_(plan) {}
@@ -60,7 +50,7 @@ class PlanBuilder {
     plan_.connector_of_element.assign(model_.elements.size(), -1);
     plan_.spring_of_element.assign(model_.elements.size(), -1);
     motions_ = motion_components(model_);
-    length_tolerance_ = 1e-8 * std::max(1.0, bounding_box_diagonal(model_));
+    length_tolerance_ = geometry_tolerance(model_.nodes);
     // NLGEOM stays on once set (keywords.md §13): the steps' flags are the effective ones.
     const auto& steps = model_.history.steps;
     plan_.small_displacement = steps.empty() || std::any_of(steps.begin(), steps.end(),
@@ -187,7 +177,7 @@ class PlanBuilder {
                            qualified_label(model_, element.instance, element.label), why);
       return false;
     }
-    plan_.length_scale = std::max(plan_.length_scale, (setup.xb0 - setup.xa0).norm());
+    plan_.length_scale = std::max(plan_.length_scale, (setup.xb0 - setup.xa0).stableNorm());
     r.kinematics = plan_.kinematics.size();
     r.reference = kinematics->initial_position();
     plan_.kinematics.push_back(std::move(*kinematics));

@@ -26,11 +26,11 @@ Elongation elongation(const AnalysisPlan& plan, const SpringRecord& s, const Eig
   if (s.type == ElementType::SpringA) {
     // keywords.md §7: exact axial kinematics under NLGEOM, initial direction otherwise.
     const Vector3 du = node_vector(s.nodes[1], 1) - node_vector(s.nodes[0], 1);
-    const double l0 = s.d0.norm();
+    const double l0 = s.d0.stableNorm();
     Vector3 n = s.d0 / l0;
     if (nlgeom) {
       const Vector3 d = s.d0 + du;
-      const double l = d.norm();
+      const double l = d.stableNorm();
       n = d / l;
       e.delta = l - l0;
       const Matrix3 lateral = (Matrix3::Identity() - n * n.transpose()) / l;

@@ -108,7 +108,7 @@ std::optional<double> initial_position(const Model& model, const ConnectorSectio
   xb = b != kGround ? model.nodes[static_cast<std::size_t>(b)].x : xa;
   const Vec3 d{xb[0] - xa[0], xb[1] - xa[1], xb[2] - xa[2]};
   if (component == 1 && has_type(s, "AXIAL")) {
-    return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    return length_of(d);
   }
   const bool oriented_a = !s.orientations.empty() && !s.orientations[0].empty();
   if (component <= 3 && !oriented_a && (has_type(s, "CARTESIAN") || has_type(s, "ACCELEROMETER"))) {

@@ -21,9 +21,6 @@
 namespace clinch {
 namespace {
 
-double distance(const Vec3& x, const Vec3& y) {
-  return std::hypot(x[0] - y[0], x[1] - y[1], x[2] - y[2]);
-}
 double dot(const Vec3& x, const Vec3& y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; }
 
 // "1.0", "20.0", "-10", "0.035": integral values keep one decimal, as the spec's examples do.
@@ -72,7 +69,7 @@ class SectionValidator {
     const std::size_t n = model_.elements.size();
     model_.sections.section_of_element.assign(n, -1);
     model_.sections.spring_of_element.assign(n, -1);
-    tolerance_ = geometry_tolerance();
+    tolerance_ = geometry_tolerance(model_.nodes);
     check_dimensions();
     for (Orientation& orientation : model_.sections.orientations) {
       if (orientation.definition == Orientation::Definition::Nodes && orientation.data_ok) {
@@ -96,20 +93,6 @@ class SectionValidator {
   }
 
  private:
-  // connection-types.md §2.2: tol = 1e-8 × max(1, diagonal of the model's bounding box).
-  double geometry_tolerance() const {
-    if (model_.nodes.empty()) return 1e-8;
-    Vec3 lo = model_.nodes.front().x, hi = lo;
-    for (const Node& node : model_.nodes) {
-      for (int k = 0; k < 3; ++k) {
-        lo[k] = std::min(lo[k], node.x[k]);
-        hi[k] = std::max(hi[k], node.x[k]);
-      }
-    }
-    const double diagonal = distance(lo, hi);
-    return 1e-8 * std::max(1.0, std::isfinite(diagonal) ? diagonal : 1.0);
-  }
-
   bool node_ok(std::int32_t index) const {
     return index >= 0 && static_cast<std::size_t>(index) < model_.nodes.size();
   }
@@ -420,7 +403,7 @@ class SectionValidator {
       const Element& element = model_.elements[static_cast<std::size_t>(index)];
       Vec3 d0{};
       if (!initial_offset(element, d0)) continue;
-      const double l0 = std::hypot(d0[0], d0[1], d0[2]);
+      const double l0 = length_of(d0);
       if (axial && !has_orientation && l0 <= tolerance_) axial_group.add(index);
       if (link && l0 <= tolerance_) link_group.add(index);
       if (radial && (!ori_a || ori_a->valid)) {
@@ -428,7 +411,7 @@ class SectionValidator {
         const double along = dot(e3, d0);
         const Vec3 radial_part = {d0[0] - along * e3[0], d0[1] - along * e3[1],
                                   d0[2] - along * e3[2]};
-        if (std::hypot(radial_part[0], radial_part[1], radial_part[2]) <= tolerance_) {
+        if (length_of(radial_part) <= tolerance_) {
           radial_group.add(index);
         }
       }
@@ -698,7 +681,7 @@ class SectionValidator {
       if (element.nodes[0] == element.nodes[1]) continue;  // reported by the element reader
       const Vec3& x1 = model_.nodes[static_cast<std::size_t>(element.nodes[0])].x;
       const Vec3& x2 = model_.nodes[static_cast<std::size_t>(element.nodes[1])].x;
-      if (distance(x1, x2) > tolerance_) continue;
+      if (length_of({x2[0] - x1[0], x2[1] - x1[1], x2[2] - x1[2]}) > tolerance_) continue;
       SourceLoc loc = element.loc();
       if (element.node_columns[1] > 0) loc.column = element.node_columns[1];
       sink_.report(DiagCode::degenerate_geometry, loc,

@@ -14,6 +14,8 @@
 #include "src/cli/blas_threads.hpp"
 #include "src/cli/stop_signals.hpp"
 #include "src/output/history_columns.hpp"
+#include "src/output/run_log.hpp"
+#include "src/output/status_file.hpp"
 #include "src/parallel/communicator.hpp"
 #include "src/solver/step_driver.hpp"
 
@@ -55,6 +57,22 @@ const char* stop_signal_of_any_rank() {
   return name.c_str();
 }
 
+// A signal that arrived before the analysis (while reading or planning): the run ends as a signal
+// during the analysis ends it (exit 2, cli-contract.md), with a status file that says where it
+// stopped. Returns false when no signal arrived.
+bool stopped_before_analysis(const char* stage, const std::string& status_path, RunLog& log) {
+  const char* signal = world ? stop_signal_of_any_rank() : stop_signal_name();
+  if (signal == nullptr) return false;
+  const std::string reason =
+      fmt::format("interrupted by {} {}, before the first increment", signal, stage);
+  StatusFile status;
+  std::string error;
+  if (!status.open(status_path, &error)) log.error(error);
+  else status.write_failed(reason, 1, 0, 0.0);
+  log.error(fmt::format("analysis stopped: {} (step 1, increment 0, time 0)", reason));
+  return true;
+}
+
 }  // namespace
 
 int run_deck(const RunCommandOptions& options) {
@@ -86,6 +104,9 @@ int run_deck(const RunCommandOptions& options) {
     }
   }
   const bool writer = !communicator || communicator->rank() == 0;
+  // From here a signal stops the run cleanly, at the next point that asks for it: after reading,
+  // after planning, or in the analysis (src/cli/stop_signals.hpp).
+  catch_stop_signals();
   const auto start = std::chrono::steady_clock::now();
   SourceManager sources;
   DiagnosticSink sink;
@@ -129,6 +150,9 @@ int run_deck(const RunCommandOptions& options) {
     else log.warning(text);
   }
   sources.release_texts();  // the lines a warning showed are not held through the analysis
+  if (stopped_before_analysis("while reading the deck", output_path(".sta"), log)) {
+    return kExitStopped;
+  }
   if (sink.has_errors()) {
     log.error(fmt::format("{}: {}, {}; nothing was run", deck_name,
                           count_of(sink.error_count(), "error"),
@@ -158,14 +182,20 @@ int run_deck(const RunCommandOptions& options) {
                          (plan->connectors.size() + communicator->size() - 1) / communicator->size(),
                          (plan->springs.size() + communicator->size() - 1) / communicator->size()));
   }
+  if (stopped_before_analysis("while planning the analysis", output_path(".sta"), log)) {
+    return kExitStopped;
+  }
   const double plan_seconds = seconds_since(plan_start);
   const auto columns_start = std::chrono::steady_clock::now();
   HistoryColumns columns(model, *plan);
   HistoryTable table;
   StatusFile status;
-  if (!every_rank_ok(table.open(output_path(".history.csv"), columns.names(), &error) &&
-                     status.open(output_path(".sta"), &error))) {
-    log.error(error);
+  // The status file first, so that it can say why the history could not be started (a header
+  // larger than the file-size limit, a full disk).
+  if (!every_rank_ok(status.open(output_path(".sta"), &error) &&
+                     table.open(output_path(".history.csv"), columns.names(), &error))) {
+    if (status.is_open()) status.write_failed(error, 1, 0, 0.0);
+    log.error(fmt::format("analysis stopped: {} (step 1, increment 0, time 0)", error));
     return kExitUsage;
   }
   const double columns_seconds = seconds_since(columns_start);
@@ -177,8 +207,6 @@ int run_deck(const RunCommandOptions& options) {
   };
   Progress progress = Progress::for_stderr(options.quiet || !writer);
   RunOutputs outputs{table, columns, status, log, progress};
-  // From here a signal stops the run cleanly; before, nothing had been run, so it may just kill.
-  catch_stop_signals();
   const RunResult result = run_analysis(model, system, solvers, outputs,
                                         RunOptions{options.check_tangent,
                                                    world ? stop_signal_of_any_rank

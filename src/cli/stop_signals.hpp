@@ -1,7 +1,8 @@
-// SIGINT and SIGTERM during `clinch run`: instead of dying mid-write, the run stops cleanly before
-// the next factorization or increment attempt, so that the history keeps every converged increment
-// and the status file says the run was interrupted (exit 2, cli-contract.md). A second signal of
-// the same kind kills at once, for a run that does not get there.
+// SIGINT and SIGTERM during `clinch run`: instead of dying mid-write, the run stops cleanly after
+// reading the deck, after planning, or before the next factorization or increment attempt, so
+// that the history keeps every converged increment and the status file says where the run was
+// interrupted (exit 2, cli-contract.md). A second signal of the same kind kills at once, for a run
+// that does not get there.
 #pragma once
 
 namespace clinch {

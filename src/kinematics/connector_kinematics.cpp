@@ -157,7 +157,7 @@ std::optional<ConnectorKinematics> ConnectorKinematics::create(const ConnectorSe
   // §2.2 JOIN: the frame of a co-rotates when node a has active rotations; a rotational part of
   // the same section activates them itself.
   k.corotating_a_ = !join || setup.rotations_a || k.rotation_ != Rotation::None;
-  const double l0 = k.d0_.norm();
+  const double l0 = k.d0_.stableNorm();
   if (k.translation_ == Translation::Link && l0 <= setup.length_tolerance) {
     return reject("link-zero-length: LINK joins two coincident points (§2.2)");
   }
@@ -340,7 +340,10 @@ void ConnectorKinematics::evaluate_exact(const Vector3& d, const Matrix3& ea, co
       const double radius = std::hypot(x1.v, x2.v);
       // §2.2: e_r = 0 in B whenever r ≤ tol.
       if (radius > length_tolerance_) {
-        store(radius, sqrt(x1 * x1 + x2 * x2), 0, want_hessian, out);
+        // Scaled by the radius, so that the squares neither overflow nor underflow at any
+        // finite coordinates; the derivatives are those of sqrt(x1² + x2²).
+        const Jet<12> y1 = x1 / radius, y2 = x2 / radius;
+        store(radius, sqrt(y1 * y1 + y2 * y2) * radius, 0, want_hessian, out);
       } else {
         store_constant(radius, 0, want_hessian, out);
       }
@@ -393,7 +396,7 @@ void ConnectorKinematics::evaluate_linear(const NodePose& a, const NodePose& b,
   out.position = initial_position_ + out.change;
   for (const LinearNorm& norm : linear.norms) {
     const Eigen::Vector2d v = norm.value + norm.b * q;
-    const double length = v.norm();
+    const double length = v.stableNorm();
     out.position[norm.row] = length;
     out.change[norm.row] = length - initial_position_[norm.row];
     if (length > norm.tolerance) {

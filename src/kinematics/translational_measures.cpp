@@ -5,7 +5,7 @@
 namespace clinch {
 
 bool distance_measure(const Vector3& d, double& value, Matrix6x12& b, int row, Matrix12* hessian) {
-  const double length = d.norm();
+  const double length = d.stableNorm();
   value = length;
   if (length == 0.0) return false;
   const Vector3 q = d / length;

@@ -13,11 +13,20 @@ namespace {
 
 constexpr const char* kPluginFile = "libclinch_petsc.so";
 
+// The plugin file named by CLINCH_PETSC_PLUGIN, or null when the variable is unset or empty.
+const char* chosen_plugin() {
+  const char* path = std::getenv("CLINCH_PETSC_PLUGIN");
+  return path != nullptr && *path != '\0' ? path : nullptr;
+}
+
+// The user's choice alone when there is one: another plugin in its place would run a build the
+// user did not ask for.
 std::vector<std::string> candidate_paths() {
   namespace fs = std::filesystem;
   std::vector<std::string> paths;
-  if (const char* path = std::getenv("CLINCH_PETSC_PLUGIN"); path != nullptr && *path != '\0') {
+  if (const char* path = chosen_plugin()) {
     paths.emplace_back(path);
+    return paths;
   }
   std::error_code ec;
   const fs::path executable = fs::read_symlink("/proc/self/exe", ec);
@@ -86,6 +95,12 @@ struct LoadedPlugin {
       }
       plugin = {};
       dlclose(handle);
+    }
+    if (const char* path = chosen_plugin()) {
+      error = fmt::format("the PETSc plugin '{}' that CLINCH_PETSC_PLUGIN names could not be "
+                          "loaded: {}",
+                          path, tried);
+      return;
     }
     if (tried.empty()) {
       tried = "nothing: /proc/self/exe is unreadable and CLINCH_PETSC_PLUGIN is unset";

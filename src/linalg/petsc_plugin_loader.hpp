@@ -32,11 +32,11 @@ struct PetscPlugin {
   PetscPluginMakeWorldCommunicator* make_world_communicator = nullptr;
 };
 
-// The plugin, loaded on the first call, from the first of: the file named by the environment
-// variable CLINCH_PETSC_PLUGIN (when set), libclinch_petsc.so in the directory of the running
-// executable, and in that directory's parent (build/tests/* find build/libclinch_petsc.so). Later
-// calls return the first outcome. Null when it could not be loaded, with `error` naming every file
-// tried and why each failed.
+// The plugin, loaded on the first call: the file named by the environment variable
+// CLINCH_PETSC_PLUGIN when it is set (and not empty), and nothing else; otherwise the first of
+// libclinch_petsc.so in the directory of the running executable and in that directory's parent
+// (build/tests/* find build/libclinch_petsc.so). Later calls return the first outcome. Null when
+// it could not be loaded, with `error` naming every file tried and why each failed (dlerror).
 const PetscPlugin* petsc_plugin(std::string* error);
 
 // The PETSc backend (petsc_solver.hpp) from the plugin; when the plugin cannot be loaded, an

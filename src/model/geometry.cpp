@@ -1,6 +1,7 @@
 // Geometry finalisation: set operations replayed, element node labels resolved, instances placed
 // and the global node and element arrays built (input-syntax.md §7).
 #include <algorithm>
+#include <cmath>
 
 #include <fmt/format.h>
 
@@ -22,6 +23,21 @@ const char* element_type_name(ElementType type) {
     case ElementType::Dashpot2: return "DASHPOT2";
   }
   return "?";
+}
+
+double length_of(const Vec3& x) { return std::hypot(x[0], x[1], x[2]); }
+
+double geometry_tolerance(const std::vector<Node>& nodes) {
+  if (nodes.empty()) return 1e-8;
+  Vec3 lo = nodes.front().x, hi = lo;
+  for (const Node& node : nodes) {
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], node.x[k]);
+      hi[k] = std::max(hi[k], node.x[k]);
+    }
+  }
+  const double diagonal = length_of({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+  return 1e-8 * std::max(1.0, std::isfinite(diagonal) ? diagonal : 1.0);
 }
 
 Vec3 Instance::rotate(const Vec3& v) const {

@@ -53,6 +53,16 @@ struct Node {
   SourceLoc loc() const { return {file, line, 1}; }
 };
 
+// connection-types.md §2.2: the length below which two points coincide, tol = 1e-8 × max(1,
+// diagonal of the bounding box of `nodes`). `clinch check` and the analysis plan both use it, so
+// that what check passes, run accepts. The diagonal is computed with scaling, exact for any finite
+// coordinates; a diagonal that overflows even so counts as 1.
+double geometry_tolerance(const std::vector<Node>& nodes);
+
+// |x|, computed with scaling: neither overflow nor underflow of the squares for coordinates
+// between about 1e-300 and 1e300.
+double length_of(const Vec3& x);
+
 struct Element {
   std::int32_t label = 0;
   std::int32_t instance = 0;

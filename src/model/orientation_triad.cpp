@@ -13,7 +13,7 @@ Vec3 sub(const Vec3& x, const Vec3& y) { return {x[0] - y[0], x[1] - y[1], x[2] 
 Vec3 cross(const Vec3& x, const Vec3& y) {
   return {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
 }
-double norm(const Vec3& x) { return std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]); }
+double norm(const Vec3& x) { return length_of(x); }
 Vec3 scaled(const Vec3& x, double s) { return {x[0] * s, x[1] * s, x[2] * s}; }
 Vec3 combine(double s, const Vec3& x, double t, const Vec3& y) {
   return {s * x[0] + t * y[0], s * x[1] + t * y[1], s * x[2] + t * y[2]};

@@ -343,6 +343,27 @@ TEST(Expression, Strings) {
   expect_error("b'x'", DiagCode::unsupported_expression, 0, "byte strings");
 }
 
+// A string longer than kMaxParameterStringLength is E0406, a literal at its quote and a sum at its
+// '+' before the sum is built; a string of exactly the limit is a value (docs/decisions.md).
+TEST(Expression, StringLengthLimit) {
+  const std::string full(kMaxParameterStringLength, 'x');
+  Result r = run("'" + full + "'");
+  ASSERT_TRUE(r.value);
+  EXPECT_EQ(r.value->s.size(), kMaxParameterStringLength);
+  r = run("'" + full.substr(1) + "' + 'y'");
+  ASSERT_TRUE(r.value);
+  EXPECT_EQ(r.value->s.size(), kMaxParameterStringLength);
+  expect_error_exact("'" + full + "x'", DiagCode::arithmetic_error, 0,
+                     "this string literal is 65537 characters long; a parameter string may have "
+                     "at most 65536 characters");
+  const std::string half(kMaxParameterStringLength / 2, 'x');
+  expect_error_exact("'a' + '" + half + "' + '" + half + "'", DiagCode::arithmetic_error,
+                     static_cast<std::uint32_t>(half.size()) + 9,
+                     "''a' + '" + std::string(30, 'x') +
+                         "...' would be 65537 characters long; a parameter string may have at "
+                         "most 65536 characters");
+}
+
 TEST(Expression, DisplayIsPythonRepr) {
   EXPECT_EQ(ParamValue::make_int(3).to_display(), "3");
   EXPECT_EQ(ParamValue::make_int(-7).to_display(), "-7");
