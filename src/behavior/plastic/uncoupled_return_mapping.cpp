@@ -1,12 +1,19 @@
 #include "src/behavior/plastic/uncoupled_return_mapping.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace clinch {
 namespace {
 
 constexpr int kMaxIterations = 50;     // §6.3 step 2
 constexpr double kTolerance = 1e-12;   // |r| ≤ 1e-12·F_y (§6.3 step 2)
+// r is a difference of terms as large as |ξ^tr|, so its round-off is a few ulps of |ξ^tr|: below
+// 64ε·|ξ^tr| it is zero. Without this floor a yield size far below |ξ^tr| (a friction capacity
+// from a contact force near zero, friction.md §4.1) asks for a residual that double precision
+// cannot reach, and the return fails.
+constexpr double kRoundOff = 64 * std::numeric_limits<double>::epsilon();
 
 struct Residual {
   double r = 0;      // r(Δλ)
@@ -60,11 +67,20 @@ UncoupledReturn uncoupled_return(const UncoupledReturnInput& in) {
     return out;
   }
 
+  const auto solved = [&](const Residual& at) {
+    return std::abs(at.r) <= std::max(kTolerance * std::abs(at.yield), kRoundOff * abs_xi);
+  };
   double dl = lo;
   Residual res = residual(dl);
   out.converged = false;
-  for (int it = 0; it < kMaxIterations; ++it) {
-    if (std::abs(res.r) <= kTolerance * std::abs(res.yield) || hi - lo <= 1e-15 * hi) {
+  // The root at hi to round-off (F_y ≈ 0): Newton would land on hi, which the bracket excludes.
+  if (solved(at_hi)) {
+    dl = hi;
+    res = at_hi;
+    out.converged = true;
+  }
+  for (int it = 0; it < kMaxIterations && !out.converged; ++it) {
+    if (solved(res) || hi - lo <= 1e-15 * hi) {
       out.converged = true;
       break;
     }
