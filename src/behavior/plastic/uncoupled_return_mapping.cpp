@@ -2,18 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
+
+#include "src/behavior/plastic/plastic_return_types.hpp"
 
 namespace clinch {
 namespace {
 
 constexpr int kMaxIterations = 50;     // §6.3 step 2
 constexpr double kTolerance = 1e-12;   // |r| ≤ 1e-12·F_y (§6.3 step 2)
-// r is a difference of terms as large as |ξ^tr|, so its round-off is a few ulps of |ξ^tr|: below
-// 64ε·|ξ^tr| it is zero. Without this floor a yield size far below |ξ^tr| (a friction capacity
-// from a contact force near zero, friction.md §4.1) asks for a residual that double precision
-// cannot reach, and the return fails.
-constexpr double kRoundOff = 64 * std::numeric_limits<double>::epsilon();
 
 struct Residual {
   double r = 0;      // r(Δλ)
@@ -67,8 +63,10 @@ UncoupledReturn uncoupled_return(const UncoupledReturnInput& in) {
     return out;
   }
 
+  // r is a difference of terms as large as |ξ^tr|: below a few ulps of |ξ^tr| it is round-off,
+  // which 1e-12·F_y alone cannot allow for when F_y ≪ |ξ^tr| (plastic_return_types.hpp).
   const auto solved = [&](const Residual& at) {
-    return std::abs(at.r) <= std::max(kTolerance * std::abs(at.yield), kRoundOff * abs_xi);
+    return std::abs(at.r) <= std::max(kTolerance * std::abs(at.yield), kReturnRoundOff * abs_xi);
   };
   double dl = lo;
   Residual res = residual(dl);
