@@ -317,8 +317,11 @@ def write_deck(path, connectors, control, residual, line_search):
                   f"{control[1]}, 1.0, 1e-6, {control[2]}"]
     # R_n and R_p (which replaces R_n after I_P = 9 iterations) both tight, and the zero-force
     # threshold epsilon tiny: at a lift-off the largest force can drop below the default
-    # 1e-5 q_bar, and then only the correction test applies.
-    lines += ["*CONTROLS, PARAMETERS=FIELD", f"{residual:g}, , , , {residual:g}, 1e-12,"]
+    # 1e-5 q_bar, and then only the correction test applies. q_bar_0 = 100, the order of the
+    # smallest peak load, is q_bar until a force appears: with the default 0.01, epsilon q_bar_0 =
+    # 1e-14 lies below the round-off of k u (1e-13 here), and a step that starts with every force
+    # zero to round-off (an inclined slot without normal load) could never pass R_n.
+    lines += ["*CONTROLS, PARAMETERS=FIELD", f"{residual:g}, , 100., , {residual:g}, 1e-12,"]
     if line_search is not None:
         lines += ["*CONTROLS, PARAMETERS=LINE SEARCH", f"{line_search},"]
     for c in connectors:
