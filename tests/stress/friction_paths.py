@@ -19,7 +19,17 @@ tangential motion going on, then re-contact). The tangential DOFs are driven in 
   parallel spring takes the excess.
 
 Some behaviours add an internal contact force F_int (F_N = |g| + F_int) or a TAUMAX cap. The step
-is *STATIC with automatic increments or *STATIC, DIRECT (chosen per deck).
+is *STATIC with automatic increments or *STATIC, DIRECT (chosen per deck); --direct makes every
+deck DIRECT, with an increment drawn from the list given.
+
+--inclined turns the slot of each SLOT CONN2D2 connector by a random angle theta (mu |tan theta|
+<= 0.5), written as Abaqus/CAE writes a datum CSYS ("3, theta" under *ORIENTATION); the drive
+spring of series and load paths takes the same orientation. Loads and drives then act in global
+components: the normal load along e2, the tangential load (load) along e1 in one amplitude per
+global DOF (a later *CLOAD on a DOF replaces an earlier one), the motion along e1 on both DOFs of
+c (series), and for direct paths on b's X alone, with Y free so that b follows the slot. The
+contact force is then a constraint reaction computed with round-off, zero to round-off during a
+lift-off. A direct path wedges: b's Y equilibrium gives N = P - CSF1 tan(theta) instead of N = P.
 
 Each step sets R_n and R_p of *CONTROLS, PARAMETERS=FIELD to --residual (default 1e-9) and the
 zero-force threshold epsilon to 1e-12: with clinch's defaults (0.005, 0.02 after 9 iterations,
@@ -36,7 +46,8 @@ last status line FAILED: ...). Anything else fails the test. Per connector, over
 2. CSLIPST = 1  =>  |P - F_lim| <= tol;
 3. CASU never decreases, and it does not change in a row with CSLIPST = 0;
 4. CNF = |N| + F_int, N the constraint force: CTF1 (SLIDE-PLANE), sqrt(CTF2^2 + CTF3^2) (SLOT
-   CONN3D2), CTF2 (SLOT CONN2D2); and |N| equals the applied normal load at that time;
+   CONN3D2), CTF2 (SLOT CONN2D2); and |N| equals the applied normal load at that time (an inclined
+   direct path: N = P - CSF1 tan(theta));
 5. equilibrium of b in the tangential DOFs: CSF = applied load - CTF of the parallel spring (load),
    CSF = -CTF of the series connector (series), friction components only (CSF1 = 0 on SLIDE-PLANE);
 6. SLIDE-PLANE: CNF2 = CNF3, CSLIPST2 = CSLIPST3, CASU2 = CASU3.
@@ -55,9 +66,16 @@ normal force changes within an increment that ends in stick; 40-50% of the load-
 stop. That is why clinch turns a line search on in steps with friction. With --per-deck 1 the
 rate per drive shows it. scripts/stress_friction.sh reports both.
 
+With DIRECT increments (--direct 0.005,0.01,0.0137,0.02 --inclined) every direct- and series-
+driven path completes; a load-driven path can still stop (1 of 200 with one connector per deck,
+seed 20261203): where the friction has to stick again, Newton's slip tangent sends it from one
+slip side of the narrow stick range (2 F_lim/k wide) to the other, the line search's secant lands
+on either side in turn, and a fixed increment cannot be cut back.
+
 Usage: friction_paths.py CLINCH [--paths N] [--per-deck M] [--seed S] [--work DIR] [--min-rate R]
                          [--max-cutback-fraction F] [--rtol T] [--residual R_n]
                          [--line-search N_ls] [--modes direct,series,load]
+                         [--kinds slide_plane,slot3d,slot2d] [--direct DT1,DT2,...] [--inclined]
 """
 
 import argparse
