@@ -19,9 +19,15 @@ EvalStatus search_line(NonlinearProblem& problem, Eigen::VectorXd& direction,
     return ((direction.array() * direction_scale) * (residual.array() * residual_scale)).sum();
   };
   const double g0 = projection();
+  // A correction orthogonal to the residual, as when the only imbalance is a load on a
+  // constrained direction and the multiplier alone restores it (d has no entry where R has one),
+  // gives g(0) = 0 up to round-off: g then says nothing about the step, whose sign would come from
+  // round-off elsewhere, and the full step is kept.
+  const double informative =
+      1e-10 * (direction * direction_scale).norm() * (residual * residual_scale).norm();
   EvalStatus status = problem.evaluate(residual, nullptr);
   // Only a descent direction (g(0) < 0) has a step that reduces the projected residual.
-  if (!status.ok || !(g0 < 0)) return status;
+  if (!status.ok || !(g0 < -informative)) return status;
   double s = 1.0;
   for (int iteration = 0; iteration < controls.max_iterations; ++iteration) {
     const double g = projection();

@@ -19,7 +19,17 @@ tangential motion going on, then re-contact). The tangential DOFs are driven in 
   parallel spring takes the excess.
 
 Some behaviours add an internal contact force F_int (F_N = |g| + F_int) or a TAUMAX cap. The step
-is *STATIC with automatic increments or *STATIC, DIRECT (chosen per deck).
+is *STATIC with automatic increments or *STATIC, DIRECT (chosen per deck); --direct makes every
+deck DIRECT, with an increment drawn from the list given.
+
+--inclined turns the slot of each SLOT CONN2D2 connector by a random angle theta (mu |tan theta|
+<= 0.5), written as Abaqus/CAE writes a datum CSYS ("3, theta" under *ORIENTATION); the drive
+spring of series and load paths takes the same orientation. Loads and drives then act in global
+components: the normal load along e2, the tangential load (load) along e1 in one amplitude per
+global DOF (a later *CLOAD on a DOF replaces an earlier one), the motion along e1 on both DOFs of
+c (series), and for direct paths on b's X alone, with Y free so that b follows the slot. The
+contact force is then a constraint reaction computed with round-off, zero to round-off during a
+lift-off. A direct path wedges: b's Y equilibrium gives N = P - CSF1 tan(theta) instead of N = P.
 
 Each step sets R_n and R_p of *CONTROLS, PARAMETERS=FIELD to --residual (default 1e-9) and the
 zero-force threshold epsilon to 1e-12: with clinch's defaults (0.005, 0.02 after 9 iterations,
@@ -36,7 +46,8 @@ last status line FAILED: ...). Anything else fails the test. Per connector, over
 2. CSLIPST = 1  =>  |P - F_lim| <= tol;
 3. CASU never decreases, and it does not change in a row with CSLIPST = 0;
 4. CNF = |N| + F_int, N the constraint force: CTF1 (SLIDE-PLANE), sqrt(CTF2^2 + CTF3^2) (SLOT
-   CONN3D2), CTF2 (SLOT CONN2D2); and |N| equals the applied normal load at that time;
+   CONN3D2), CTF2 (SLOT CONN2D2); and |N| equals the applied normal load at that time (an inclined
+   direct path: N = P - CSF1 tan(theta));
 5. equilibrium of b in the tangential DOFs: CSF = applied load - CTF of the parallel spring (load),
    CSF = -CTF of the series connector (series), friction components only (CSF1 = 0 on SLIDE-PLANE);
 6. SLIDE-PLANE: CNF2 = CNF3, CSLIPST2 = CSLIPST3, CASU2 = CASU3.
@@ -55,9 +66,19 @@ normal force changes within an increment that ends in stick; 40-50% of the load-
 stop. That is why clinch turns a line search on in steps with friction. With --per-deck 1 the
 rate per drive shows it. scripts/stress_friction.sh reports both.
 
+With DIRECT increments (--direct 0.005,0.01,0.0137,0.02 --inclined) every direct- and series-
+driven path completes, one or 50 to a deck; a load-driven path can still stop (1 of 200 with one
+connector per deck, seed 20261203): where the friction has to stick again, Newton's slip tangent
+sends it from one slip side of the narrow stick range (2 F_lim/k wide) to the other, the line
+search's secant lands on either side in turn, and a fixed increment cannot be cut back. In a deck
+of 50 such a connector stops all 50 paths, and so does one whose switches cut the one line-search
+step of the model to about f_s = 0.25 every iteration (the others then converge by 0.75 per
+iteration and run out of iterations): 1 of the 4 decks of seed 20261203 completes.
+
 Usage: friction_paths.py CLINCH [--paths N] [--per-deck M] [--seed S] [--work DIR] [--min-rate R]
                          [--max-cutback-fraction F] [--rtol T] [--residual R_n]
                          [--line-search N_ls] [--modes direct,series,load]
+                         [--kinds slide_plane,slot3d,slot2d] [--direct DT1,DT2,...] [--inclined]
 """
 
 import argparse
@@ -141,7 +162,7 @@ def walk(rng, count, unit):
 class Connector:
     """One path: its behaviour, its drive and its amplitudes."""
 
-    def __init__(self, rng, kind, j, modes):
+    def __init__(self, rng, kind, j, modes, inclined=False):
         self.kind, self.j = kind, j
         self.a, self.b, self.c = 3 * j + 1, 3 * j + 2, 3 * j + 3
         self.element, self.drive = 10000 + j, 20000 + j
@@ -157,6 +178,12 @@ class Connector:
                        if rng.random() < 0.1 else None)
         self.kd = self.k * (rng.uniform(0.5, 2.0) if self.mode == "series"
                             else rng.uniform(0.02, 0.2))
+        # An inclined SLOT on CONN2D2 (--inclined): e1 at theta to X, with mu |tan theta| <= 0.5, so
+        # that the wedge of the direct drive (below) has one solution.
+        self.theta = 0.0
+        if inclined and kind == "slot2d":
+            limit = math.degrees(math.atan(0.5 / self.mu))
+            self.theta = round(rng.uniform(-limit, limit), 4)
         self.times = time_grid(rng)
         n = len(self.times)
         normal = normal_values(rng, n)
@@ -181,6 +208,14 @@ class Connector:
     def driven_node(self):
         return self.c if self.mode == "series" else self.b
 
+    def orientation(self):
+        return f"O{self.j}" if self.theta else "GLOB"
+
+    def axes(self):
+        """Global X, Y components of the slot's e1 and e2."""
+        c, s = math.cos(math.radians(self.theta)), math.sin(math.radians(self.theta))
+        return (c, s), (-s, c)
+
     def applied(self, table, t):
         """Piecewise-linear amplitude value at step time t."""
         times = self.times
@@ -198,17 +233,23 @@ class Connector:
         lines = [f"*NODE", f"{self.a}, {x}", f"{self.b}, {x}"]
         if self.mode != "direct":
             lines.append(f"{self.c}, {x}")
+        if self.theta:  # as Abaqus/CAE writes a datum CSYS turned about 3
+            lines += [f"*ORIENTATION, NAME={self.orientation()}",
+                      "1.0, 0.0, 0.0, 0.0, 1.0, 0.0", f"3, {fmt(self.theta)}"]
         etype = "CONN2D2" if two_d else "CONN3D2"
         lines += [f"*ELEMENT, TYPE={etype}, ELSET=FRIC", f"{self.element}, {self.a}, {self.b}",
                   f"*ELSET, ELSET=E{self.j}", f"{self.element}",
                   f"*CONNECTOR SECTION, ELSET=E{self.j}, BEHAVIOR=F{self.j}",
-                  "SLIDE-PLANE," if self.kind == "slide_plane" else "SLOT,", "GLOB"]
+                  "SLIDE-PLANE," if self.kind == "slide_plane" else "SLOT,", self.orientation()]
         if self.mode != "direct":
             first = self.c if self.mode == "series" else self.a
             lines += [f"*ELEMENT, TYPE={etype}, ELSET=DRIVE", f"{self.drive}, {first}, {self.b}",
                       f"*ELSET, ELSET=D{self.j}", f"{self.drive}",
-                      f"*CONNECTOR SECTION, ELSET=D{self.j}, BEHAVIOR=K{self.j}", "CARTESIAN,",
-                      f"*CONNECTOR BEHAVIOR, NAME=K{self.j}"]
+                      f"*CONNECTOR SECTION, ELSET=D{self.j}, BEHAVIOR=K{self.j}", "CARTESIAN,"]
+            # Inclined: the drive spring acts along the slot's e1 too.
+            if self.theta:
+                lines.append(self.orientation())
+            lines.append(f"*CONNECTOR BEHAVIOR, NAME=K{self.j}")
             for comp in TANGENTIAL[self.kind]:
                 lines += [f"*CONNECTOR ELASTICITY, COMPONENT={comp}", fmt(self.kd)]
         lines.append(f"*CONNECTOR BEHAVIOR, NAME=F{self.j}")
@@ -228,7 +269,7 @@ class Connector:
         # Held node a; the DOFs of c (series) that carry no drive stiffness are held too.
         lines += ["*BOUNDARY"]
         lines += [f"{self.a}, 1, 2", f"{self.a}, 6, 6"] if two_d else [f"{self.a}, 1, 6"]
-        if self.mode == "series":
+        if self.mode == "series" and not self.theta:  # inclined: both DOFs of c are driven
             for dof in (1, 2) if two_d else (1, 2, 3):
                 if dof not in TANGENTIAL[self.kind]:
                     lines.append(f"{self.c}, {dof}, {dof}")
@@ -242,9 +283,19 @@ class Connector:
             lines += amplitude_lines(f"N{self.j}_{comp}", self.times, self.normal[n])
         for n, comp in enumerate(TANGENTIAL[self.kind]):
             lines += amplitude_lines(f"T{self.j}_{comp}", self.times, self.tangential[n])
+        if self.theta and self.mode == "load":
+            # A later *CLOAD on the same DOF replaces the earlier one, so the normal and the
+            # tangential load of an inclined slot go into one amplitude per global DOF.
+            e1, e2 = self.axes()
+            for d in range(2):
+                lines += amplitude_lines(
+                    f"L{self.j}_{d + 1}", self.times,
+                    [n * e2[d] + t * e1[d] for n, t in zip(self.normal[0], self.tangential[0])])
         return lines
 
     def step_lines(self):
+        if self.theta:
+            return self.inclined_step_lines()
         lines = []
         for comp in NORMAL[self.kind]:
             lines += [f"*CLOAD, AMPLITUDE=N{self.j}_{comp}", f"{self.b}, {comp}, 1.0"]
@@ -255,6 +306,24 @@ class Connector:
                 lines += [f"*BOUNDARY, AMPLITUDE=T{self.j}_{comp}",
                           f"{self.driven_node()}, {comp}, {comp}, 1.0"]
         return lines
+
+    def inclined_step_lines(self):
+        """The loads and drives of an inclined slot in global components: the normal load along
+        e2 (direct: its Y component) and the tangential load (load) along e1 on b; the motion along
+        e1 of c (series, both DOFs), or of b through its X alone (direct: Y stays free, so b
+        moves along the slot)."""
+        (c1, s1), (c2, s2) = self.axes()
+        n, t = f"N{self.j}_2", f"T{self.j}_1"
+        if self.mode == "load":
+            return [f"*CLOAD, AMPLITUDE=L{self.j}_1", f"{self.b}, 1, 1.0",
+                    f"*CLOAD, AMPLITUDE=L{self.j}_2", f"{self.b}, 2, 1.0"]
+        if self.mode == "series":
+            return [f"*CLOAD, AMPLITUDE={n}", f"{self.b}, 1, {fmt(c2)}",
+                    f"{self.b}, 2, {fmt(s2)}", f"*BOUNDARY, AMPLITUDE={t}",
+                    f"{self.c}, 1, 1, {fmt(c1)}", f"{self.c}, 2, 2, {fmt(s1)}"]
+        # direct: X of b is prescribed, so only Y takes a load
+        return [f"*CLOAD, AMPLITUDE={n}", f"{self.b}, 2, {fmt(s2)}",
+                f"*BOUNDARY, AMPLITUDE={t}", f"{self.b}, 1, 1, {fmt(c1)}"]
 
 
 def write_deck(path, connectors, control, residual, line_search):
@@ -269,8 +338,11 @@ def write_deck(path, connectors, control, residual, line_search):
                   f"{control[1]}, 1.0, 1e-6, {control[2]}"]
     # R_n and R_p (which replaces R_n after I_P = 9 iterations) both tight, and the zero-force
     # threshold epsilon tiny: at a lift-off the largest force can drop below the default
-    # 1e-5 q_bar, and then only the correction test applies.
-    lines += ["*CONTROLS, PARAMETERS=FIELD", f"{residual:g}, , , , {residual:g}, 1e-12,"]
+    # 1e-5 q_bar, and then only the correction test applies. q_bar_0 = 100, the order of the
+    # smallest peak load, is q_bar until a force appears: with the default 0.01, epsilon q_bar_0 =
+    # 1e-14 lies below the round-off of k u (1e-13 here), and a step that starts with every force
+    # zero to round-off (an inclined slot without normal load) could never pass R_n.
+    lines += ["*CONTROLS, PARAMETERS=FIELD", f"{residual:g}, , 100., , {residual:g}, 1e-12,"]
     if line_search is not None:
         lines += ["*CONTROLS, PARAMETERS=LINE SEARCH", f"{line_search},"]
     for c in connectors:
@@ -364,7 +436,13 @@ def check_path(c, rows, rtol):
             lifted += 1
         if abs(cnf - (normal + c.fint)) > tol:
             bad(f"CNF = {cnf:.9g}, |N| + F_int = {normal + c.fint:.9g}")
-        if abs(normal - applied) > tol:
+        if c.theta and c.mode == "direct":
+            # b's Y equilibrium, f1 sin(theta) + f2 cos(theta) = P cos(theta): the slot wedges.
+            wedged = c.applied(c.normal[0], t) - csf[0] * math.tan(math.radians(c.theta))
+            if abs(ctf_n[0] - wedged) > tol:
+                bad(f"N = {ctf_n[0]:.9g}, normal load minus the wedge CSF1 tan(theta) "
+                    f"{wedged:.9g}")
+        elif abs(normal - applied) > tol:
             bad(f"|N| = {normal:.9g}, applied normal load {applied:.9g}")
         for n, i in enumerate(comps):
             if c.mode == "load":
@@ -402,6 +480,18 @@ def main():
     parser.add_argument("--modes", type=lambda v: v.split(","), default=MODES,
                         help="comma-separated drives to use (direct,series,load); a connector "
                              "drawn with another drive gets the first")
+    parser.add_argument("--kinds", type=lambda v: v.split(","), default=KINDS,
+                        help="comma-separated connection types, one per deck in turn "
+                             "(slide_plane,slot3d,slot2d)")
+    parser.add_argument("--direct", type=lambda v: [float(x) for x in v.split(",")],
+                        default=None,
+                        help="every deck *STATIC, DIRECT with an increment drawn from this "
+                             "comma-separated list (default: 30%% of the decks DIRECT with 0.01 "
+                             "or 0.02, the others automatic)")
+    parser.add_argument("--inclined", action="store_true",
+                        help="SLOT CONN2D2 connectors in a slot turned by a random angle, so "
+                             "that their contact force is a constraint reaction computed with "
+                             "round-off (zero to round-off where the normal load is 0)")
     parser.add_argument("--line-search", type=int, default=None,
                         help="N_ls of *CONTROLS, PARAMETERS=LINE SEARCH in the step (0: off; "
                              "default: none in the deck, clinch's choice)")
@@ -412,16 +502,20 @@ def main():
     problems = []
     # per kind: decks, completed decks, paths, paths in completed decks, increments, iterations,
     # cutbacks, most iterations in an increment, slipping rows, lift-off rows
-    stats = {kind: [0] * 10 for kind in KINDS}
+    stats = {kind: [0] * 10 for kind in args.kinds}
     worst_slip = 0.0
     modes = {m: [0, 0] for m in MODES}  # paths, paths in completed decks
     remaining, deck_number = args.paths, 0
     while remaining > 0:
-        kind = KINDS[deck_number % len(KINDS)]
+        kind = args.kinds[deck_number % len(args.kinds)]
         count = min(args.per_deck, remaining)
-        connectors = [Connector(rng, kind, j, args.modes) for j in range(1, count + 1)]
-        control = (["direct", rng.choice([0.01, 0.02])] if rng.random() < 0.3 else
-                   ["auto", rng.choice([0.01, 0.02]), rng.choice([0.02, 0.05])])
+        connectors = [Connector(rng, kind, j, args.modes, args.inclined)
+                      for j in range(1, count + 1)]
+        if args.direct:
+            control = ["direct", rng.choice(args.direct)]
+        else:
+            control = (["direct", rng.choice([0.01, 0.02])] if rng.random() < 0.3 else
+                       ["auto", rng.choice([0.01, 0.02]), rng.choice([0.02, 0.05])])
         deck = os.path.join(work, f"friction{deck_number:03d}.inp")
         write_deck(deck, connectors, control, args.residual, args.line_search)
         code, last, per_inc, incs, its, cuts, rows, err = run_deck(

@@ -3,8 +3,8 @@
 // constraint forces λ, with a linear elastic law below it in the stack, so that a contact force
 // read from an elastic component or from a multiplier is checked through the chain rule too.
 // States: sticking, slipping, just past the stick–slip transition (both sides of the check stay
-// on the slip side: one-sided at the kink), reversed, rate-dependent, with F_int(γ), with the
-// TAUMAX cap, and with coupled (SUM and MAX) potentials.
+// on the slip side: one-sided at the kink), reversed, at zero and near-zero contact force,
+// rate-dependent, with F_int(γ), with the TAUMAX cap, and with coupled (SUM and MAX) potentials.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -154,6 +154,64 @@ TEST(FrictionTangent, SlotJustPastTheTransitionAndAfterAReversal) {
   const FrictionDriver::Result r = d.evaluate(vec(0.0), lambda);
   EXPECT_NEAR(r.out.force[0], -300.0, 1e-9);
   EXPECT_NEAR(d.history("CASU", 1, r), 0.07 + 0.04, 1e-12);
+}
+
+// §4.1 step 5 and §4.2 at F_N = 0 and near it (SLOT, μ = 0.3, k = 1e4):
+// - F_N = 0, at rest (u = u_s): no capacity, so no stick range: f = 0, tangent 0, CSLIPST 0;
+// - F_N = 0, moving: f = 0, all motion is slip (CASU = u1), tangent 0; against λ the central
+//   difference straddles the kink of |λ| and gives 0, the subgradient of §4.2;
+// - F_N = 1e-16, a constraint reaction of round-off size: its capacity, 3e-17, is below the stick
+//   test's resolution 1e-12·|f_tr| (step 3), so it is none: f = 0 exactly;
+// - F_N = 1e-3 (above the differences' λ step 1e-6): sticking within the stick range F_lim/k =
+//   3e-8, and slipping with f1 = F_lim = 3e-4 and ∂f1/∂λ2 = −μ.
+TEST(FrictionTangent, SlotAtZeroAndNearZeroContactForce) {
+  FrictionDriver d(kSlot, kSlotAvailable, kSlotConstrained, Vector6::Zero());
+  d.expect_fd_tangent(vec(0.0), Vector6::Zero(), kStick, false);
+  const FrictionDriver::Result rest = d.evaluate(vec(0.0), Vector6::Zero());
+  EXPECT_EQ(rest.out.force[0], 0.0);
+  EXPECT_EQ(rest.out.tangent(0, 0), 0.0);
+  d.expect_fd_tangent(vec(0.01), Vector6::Zero(), kStick, true);
+  const FrictionDriver::Result moving = d.evaluate(vec(0.01), Vector6::Zero());
+  EXPECT_EQ(moving.out.force[0], 0.0);
+  EXPECT_EQ(moving.out.tangent(0, 0), 0.0);
+  EXPECT_EQ(moving.out.force_tangent(0, 1), 0.0);
+  EXPECT_NEAR(d.history("CASU", 1, moving), 0.01, 1e-15);
+  EXPECT_EQ(d.history("CNF", 1, moving), 0.0);
+
+  const Vector6 round_off = vec(0, 1e-16);
+  d.expect_fd_tangent(vec(0.01), round_off, kStick, true);
+  const FrictionDriver::Result tiny = d.evaluate(vec(0.01), round_off);
+  ASSERT_EQ(tiny.status, IntegrationStatus::Success) << tiny.out.message;
+  EXPECT_EQ(tiny.out.force[0], 0.0);
+
+  const Vector6 near_zero = vec(0, -1e-3);
+  d.expect_fd_tangent(vec(1e-8), near_zero, kStick, false);
+  d.expect_fd_tangent(vec(0.01), near_zero, kStick, true);
+  d.expect_fd_tangent(vec(-0.01), near_zero, kStick, true);
+  const FrictionDriver::Result slip = d.evaluate(vec(0.01), near_zero);
+  EXPECT_NEAR(slip.out.force[0], 3e-4, 1e-18);  // to a few ulps of 3e-4
+  EXPECT_NEAR(slip.out.force_tangent(0, 1), -0.3, 1e-12);
+}
+
+// The same through the closest-point return of a coupled potential (CONTACT FORCE from a
+// derived component of a multiplier, §2.1 form 3): no capacity at F_N = 0, and at F_N = 1e-6,
+// whose capacity 2e-7 is 1e-9 of the trial force, the return still converges (its residuals
+// stop at round-off of the trial, not at 1e-12·F_lim) and the force lies on the surface.
+TEST(FrictionTangent, CoupledPotentialAtZeroAndNearZeroContactForce) {
+  FrictionDriver d("*CONNECTOR FRICTION, CONTACT FORCE=press, STICK STIFFNESS=1.0e4\n"
+                   "*CONNECTOR POTENTIAL\n2, 1.\n3, 2.\n*FRICTION\n0.2\n"
+                   "*CONNECTOR DERIVED COMPONENT, NAME=press\n1\n1.0\n",
+                   kAll, 0, Vector6::Zero());
+  const Vector6 u = vec(0, 0.03, -0.02);
+  d.expect_fd_tangent(vec(0.0), Vector6::Zero(), kStick, false);
+  d.expect_fd_tangent(u, Vector6::Zero(), kStick, true);
+  const FrictionDriver::Result none = d.evaluate(u, Vector6::Zero());
+  EXPECT_EQ(none.out.force.norm(), 0.0);
+  const Vector6 near_zero = vec(-1e-6);
+  const FrictionDriver::Result r = d.evaluate(u, near_zero);
+  ASSERT_EQ(r.status, IntegrationStatus::Success) << r.out.message;
+  // P(f) = sqrt(f2² + (f3/2)²) = F_lim = 2e-7, to the return's floor 64ε·P(f_tr) ≈ 3e-12.
+  EXPECT_NEAR(std::hypot(r.out.force[1], r.out.force[2] / 2), 2e-7, 1e-11);
 }
 
 // CONTACT FORCE=1 on an elastic component (k_e = 2000 below the friction): F_N = k_e·u1, so the

@@ -96,5 +96,65 @@ TEST(LineSearch, LeavesAGoodStepAlone) {
   EXPECT_EQ(with.x(), without.x());
 }
 
+// A load P on a constrained direction (connection-types.md §3.8): unknowns (v, u, λ) with
+// R_v = k v − F + e, R_u = λ − P, R_λ = u. The Newton correction restores R_u through λ alone, so
+// it is orthogonal to that part of the residual, and g(0) = dᵀR is the round-off of R_v: e
+// alternates between ±1e-12 at every evaluation, as the round-off of a converged friction row did.
+// The line search must keep the full step (λ = P after one iteration); steered by e it took
+// s = 1/3 and the multiplier crept towards P.
+class ConstrainedLoadProblem final : public NonlinearProblem {
+ public:
+  ConstrainedLoadProblem() {
+    pattern_.n = 3;
+    pattern_.col_ptr = {0, 1, 2, 3};
+    pattern_.row_idx = {0, 2, 1};  // K_vv = k, K_λu = K_uλ = 1
+    pattern_.values = {kK, 1.0, 1.0};
+  }
+  int size() const override { return 3; }
+  const SparseMatrix& pattern() const override { return pattern_; }
+  EvalStatus evaluate(Eigen::VectorXd& residual, SparseMatrix* tangent) override {
+    residual.resize(3);
+    noise_ = -noise_;
+    residual << kK * x_[0] - kF + noise_, x_[2] - kP, x_[1];
+    if (tangent) tangent->values = pattern_.values;
+    return {};
+  }
+  void apply_correction(const Eigen::VectorXd& correction) override { x_ += correction; }
+  void measure(const Eigen::VectorXd& residual, const Eigen::VectorXd* correction,
+               IterationNorms& norms) const override {
+    norms.largest_residual[0] = residual.head<2>().cwiseAbs().maxCoeff();
+    norms.flux[0] = kP;
+    norms.largest_increment[0] = x_.head<2>().cwiseAbs().maxCoeff();
+    if (correction) norms.largest_correction[0] = correction->head<2>().cwiseAbs().maxCoeff();
+  }
+  void commit() override {}
+  void revert() override {}
+  double multiplier() const { return x_[2]; }
+  static constexpr double kK = 1e4, kF = 50.0, kP = 10.0;
+
+ private:
+  Eigen::Vector3d x_{kF / kK, 0.0, 0.0};
+  double noise_ = 1e-12;
+  SparseMatrix pattern_;
+};
+
+TEST(LineSearch, KeepsTheFullStepOfACorrectionOrthogonalToTheResidual) {
+  ConstrainedLoadProblem p;
+  Controls controls;
+  controls.translation.residual = 1e-9;
+  controls.translation.correction = 1e-9;
+  ConvergenceCriteria criteria(controls);
+  auto solver = make_linear_solver(SolverChoice::Dense, false, false);
+  std::string message;
+  ASSERT_EQ(solver->analyze(p.pattern(), &message), LinearStatus::Ok) << message;
+  NewtonOptions options;
+  options.max_iterations = 16;
+  options.line_search.max_iterations = 5;
+  const NewtonReport report = solve_increment(p, *solver, criteria, options);
+  ASSERT_TRUE(report.converged()) << report.message;
+  EXPECT_LE(report.iterations.size(), 3u);
+  EXPECT_NEAR(p.multiplier(), ConstrainedLoadProblem::kP, 1e-12);
+}
+
 }  // namespace
 }  // namespace clinch

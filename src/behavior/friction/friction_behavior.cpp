@@ -134,7 +134,9 @@ IntegrationStatus FrictionBehavior::radial_slip(const Vector6& trial,
     return IntegrationStatus::Failure;
   }
   const Vector6 e = trial / size;
-  const double magnitude = size - k * r.multiplier;
+  // The closed form f = F_lim·f_tr/|f_tr| of §4.1 step 4: |f| is the capacity at the root, also
+  // when F_lim is far below |f_tr| and |f_tr| − kΔλ would be round-off of either sign.
+  const double magnitude = capacity.at(slip_old + r.multiplier).value;
   slip.force = magnitude * e;
   slip.multiplier = r.multiplier;
   if (want_tangent) {
@@ -174,19 +176,26 @@ IntegrationStatus FrictionBehavior::integrate(const BehaviorInput& in, BehaviorO
   const YieldSample stick_capacity = capacity.at(gamma_old);
 
   Slip slip;
-  bool slipping = size - stick_capacity.value >
-                  kStickTolerance * std::max(stick_capacity.value, size);
+  // §4.1 step 5: no capacity (F_N = 0, and F_lim cannot grow with the slip) means no force, all
+  // of the motion is slip, and the tangent is 0 (the stick range has zero width). A capacity below
+  // the stick test's resolution of the trial, 1e-12·P(f_tr) (step 3), counts as none: a contact
+  // force that is a constraint reaction of round-off size gives such a capacity.
+  const bool no_capacity = stick_capacity.slope <= 0 &&
+                           stick_capacity.value <= kStickTolerance * size;
+  // §6: CSLIPST = 1 when the increment slips, which without capacity is any motion at all.
+  bool slipping = no_capacity ? size > 0
+                              : size - stick_capacity.value >
+                                    kStickTolerance * std::max(stick_capacity.value, size);
   double gamma = gamma_old;
   Vector6 slip_new = slip_old;
-  if (!slipping) {
-    slip.force = trial;
-    if (want_tangent) slip.tangent = mask_vector(components_).asDiagonal() * space_.stiffness;
-  } else if (stick_capacity.value <= 0 && stick_capacity.slope <= 0) {
-    // §4.1 step 5: no capacity, no force; the motion is all slip.
+  if (no_capacity) {
     slip_new = u.cwiseProduct(mask_vector(components_));
     double mean = 0;
     for (int s = 0; s < count_; ++s) mean += stiffness_[layout_[static_cast<std::size_t>(s)].component - 1];
     gamma = gamma_old + size / (mean / count_);
+  } else if (!slipping) {
+    slip.force = trial;
+    if (want_tangent) slip.tangent = mask_vector(components_).asDiagonal() * space_.stiffness;
   } else if (!potential_) {
     const IntegrationStatus status =
         radial_slip(trial, capacity, gamma_old, want_tangent, slip, out.message);
@@ -217,7 +226,8 @@ IntegrationStatus FrictionBehavior::integrate(const BehaviorInput& in, BehaviorO
     out.tangent = slip.tangent;
     // §4.2: df = … + (A n)(∂F_lim/∂F_N)/D · dF_N, with dF_N = sgn·∇N·df^N and f^N the force
     // of the laws below plus the constraint forces.
-    const double c = slipping ? capacity.contact_sensitivity(gamma) : 0.0;
+    // Without capacity the force is 0 for every F_N up to the threshold above: no coupling.
+    const double c = slipping && !no_capacity ? capacity.contact_sensitivity(gamma) : 0.0;
     if (c != 0 && contact_.present()) {
       const Vector6 column = c * slip.sensitivity;
       const Eigen::Matrix<double, 1, 6> row = contact_gradient.transpose();

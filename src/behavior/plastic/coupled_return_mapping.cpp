@@ -35,7 +35,8 @@ struct Iterate {
 
 struct Scales {
   double motion;  // ‖K⁻¹ F^tr‖: the stopping scale of R_F (§6.4 step 2)
-  double force;   // F_y(ū_n)
+  double force;   // F_y(ū_n), at least `floor`
+  double floor;   // the round-off of R_λ: kReturnRoundOff·P(F^tr)
 };
 
 void evaluate(const ElasticSpace& space, const ConnectorPotential& potential,
@@ -56,7 +57,7 @@ void evaluate(const ElasticSpace& space, const ConnectorPotential& potential,
 
 bool converged(const Iterate& it, const Scales& scales) {
   return it.residual_force.norm() <= kTolerance * scales.motion &&
-         std::abs(it.residual_yield) <= kTolerance * it.yield.value;
+         std::abs(it.residual_yield) <= std::max(kTolerance * it.yield.value, scales.floor);
 }
 
 // M = K⁻¹ + Δλ N2 with the rows and columns of `held` replaced by the identity, so that a solve
@@ -147,10 +148,13 @@ CoupledReturn closest_point_return(const ElasticSpace& space, const ConnectorPot
   out.force = trial;
   const double yield_old = yield.at(equivalent_old).value;
   // Step 1: the elastic test needs the value only.
-  if (!(potential.value(trial) - yield_old > 0)) return out;
+  const double trial_value = potential.value(trial);
+  if (!(trial_value - yield_old > 0)) return out;
   out.plastic = true;
 
-  const Scales scales{(space.compliance * trial).norm(), yield_old};
+  // R_λ is measured against F_y, but not below its round-off.
+  const double floor = kReturnRoundOff * trial_value;
+  const Scales scales{(space.compliance * trial).norm(), std::max(yield_old, floor), floor};
   const std::vector<KinkGroup>& groups = potential.kink_groups();
   // Kink groups held at zero (an active set on the kinks of P): a group is collapsed when a
   // Newton step overshoots it, and released when its subgradient condition fails at the
@@ -268,11 +272,12 @@ CoupledReturn cutting_plane_return(const ElasticSpace& space, const ConnectorPot
   Vector6 force = trial;
   double multiplier = 0;
   PotentialValue pv;
+  const double floor = kReturnRoundOff * potential.value(trial);
   for (int iteration = 0; iteration <= kMaxCuttingPlaneIterations; ++iteration) {
     potential.evaluate(force, pv, false);
     const YieldSample y = yield.at(equivalent_old + multiplier);
     const double phi = pv.value - y.value;
-    if (std::abs(phi) <= kTolerance * y.value) {
+    if (std::abs(phi) <= std::max(kTolerance * y.value, floor)) {
       out.converged = true;
       break;
     }

@@ -50,7 +50,8 @@ struct Context {
   const Vector6& trial;
   double equivalent_old;
   double motion_scale;  // ‖K⁻¹ F^tr‖
-  double force_scale;   // F_y(ū_n)
+  double force_scale;   // F_y(ū_n), at least `floor`
+  double floor;         // the round-off of the φ_j: kReturnRoundOff·P(F^tr)
 };
 
 void evaluate(const Context& c, const ActiveSet& set, bool hessian, Iterate& it) {
@@ -73,7 +74,8 @@ void evaluate(const Context& c, const ActiveSet& set, bool hessian, Iterate& it)
 bool converged(const Context& c, const ActiveSet& set, const Iterate& it) {
   if (it.residual_force.norm() > kTolerance * c.motion_scale) return false;
   for (int j = 0; j < set.size; ++j) {
-    if (std::abs(it.residual[static_cast<std::size_t>(j)]) > kTolerance * it.yield.value) {
+    if (std::abs(it.residual[static_cast<std::size_t>(j)]) >
+        std::max(kTolerance * it.yield.value, c.floor)) {
       return false;
     }
   }
@@ -254,8 +256,10 @@ CoupledReturn multi_surface_return(const ElasticSpace& space, const ConnectorPot
   if (set.size == 0) return out;
   out.plastic = true;
   sort_by_index(set);
+  // The φ_j are measured against F_y, but not below their round-off.
+  const double floor = kReturnRoundOff * potential.value(trial);
   const Context c{space, potential, yield, trial, equivalent_old,
-                  (space.compliance * trial).norm(), yield_old};
+                  (space.compliance * trial).norm(), std::max(yield_old, floor), floor};
   while (drop_parallel(c, set, trial)) {
   }
 
@@ -294,7 +298,7 @@ CoupledReturn multi_surface_return(const ElasticSpace& space, const ConnectorPot
     }
     // Add the most violated surface outside J, if any.
     int worst = -1;
-    double worst_phi = kAddTolerance * it.yield.value;
+    double worst_phi = std::max(kAddTolerance * it.yield.value, 10 * c.floor);
     for (int i = 0; i < count; ++i) {
       if (std::find(set.surface.begin(), set.surface.begin() + set.size, i) !=
           set.surface.begin() + set.size) {

@@ -3,6 +3,8 @@
 // behaviour.
 #pragma once
 
+#include <limits>
+
 #include "base/small_types.hpp"
 
 namespace clinch {
@@ -14,6 +16,13 @@ struct ElasticSpace {
   Matrix6 stiffness = Matrix6::Identity();   // K (padded)
   Matrix6 compliance = Matrix6::Identity();  // K⁻¹ (padded)
 };
+
+// The floor of the yield residuals of the returns (P(F) − F_y, or r of the uncoupled one), as a
+// fraction of the trial P(F^tr): F is reached from F^tr, so its round-off, and that of P(F), is a
+// few ulps of the trial. Without it a yield size far below the trial (a friction capacity from a
+// contact force near zero, friction.md §4.1) asks 1e-12·F_y of a residual that double precision
+// cannot reach.
+constexpr double kReturnRoundOff = 64 * std::numeric_limits<double>::epsilon();
 
 struct CoupledReturn {
   bool plastic = false;    // φ^tr > 0

@@ -1,6 +1,9 @@
 #include "src/behavior/plastic/uncoupled_return_mapping.hpp"
 
+#include <algorithm>
 #include <cmath>
+
+#include "src/behavior/plastic/plastic_return_types.hpp"
 
 namespace clinch {
 namespace {
@@ -60,11 +63,22 @@ UncoupledReturn uncoupled_return(const UncoupledReturnInput& in) {
     return out;
   }
 
+  // r is a difference of terms as large as |ξ^tr|: below a few ulps of |ξ^tr| it is round-off,
+  // which 1e-12·F_y alone cannot allow for when F_y ≪ |ξ^tr| (plastic_return_types.hpp).
+  const auto solved = [&](const Residual& at) {
+    return std::abs(at.r) <= std::max(kTolerance * std::abs(at.yield), kReturnRoundOff * abs_xi);
+  };
   double dl = lo;
   Residual res = residual(dl);
   out.converged = false;
-  for (int it = 0; it < kMaxIterations; ++it) {
-    if (std::abs(res.r) <= kTolerance * std::abs(res.yield) || hi - lo <= 1e-15 * hi) {
+  // The root at hi to round-off (F_y ≈ 0): Newton would land on hi, which the bracket excludes.
+  if (solved(at_hi)) {
+    dl = hi;
+    res = at_hi;
+    out.converged = true;
+  }
+  for (int it = 0; it < kMaxIterations && !out.converged; ++it) {
+    if (solved(res) || hi - lo <= 1e-15 * hi) {
       out.converged = true;
       break;
     }
