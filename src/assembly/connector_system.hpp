@@ -66,15 +66,17 @@ class ConnectorSystem final : public NonlinearProblem {
   bool moving_prescribed() const override { return predicting_; }
   void measure(const Eigen::VectorXd& residual, const Eigen::VectorXd* correction,
                IterationNorms& norms) const override;
-  void commit() override { state_.commit(); }
-  void revert() override { state_.revert(); }
-  bool update_active_set() override;
-  void end_increment() override;
-  std::vector<std::string> take_events() override { return std::move(events_); }
-  std::string failure_note(int failed_equation) const override;
-  std::vector<std::string> step_summary() const override;
-  std::vector<std::string> release_failed_components() override;
-  StepRequest step_request() const override { return state_.request; }
+
+  // ---- between solves (StepProblem, connector_step_problem.hpp, passes these on) ----
+  void commit() { state_.commit(); }
+  void revert() { state_.revert(); }
+  bool update_active_set();
+  void end_increment();
+  std::vector<std::string> take_events() { return std::move(events_); }
+  std::string failure_note(int failed_equation) const;
+  std::vector<std::string> step_summary() const;
+  std::vector<std::string> release_failed_components();
+  StepRequest step_request() const { return state_.request; }
 
   // ---- distributed runs (docs/parallel.md) ----
   // From the next evaluation on, evaluates only this rank's share of the connectors and springs
@@ -147,8 +149,8 @@ class ConnectorSystem final : public NonlinearProblem {
   // K_fp·(target − u)_p while prescribed DOFs are short of their targets (predicting_).
   Eigen::VectorXd predictor_;
   bool predicting_ = false;
-  std::vector<std::uint8_t> deleted_;  // per connector: deleted by damage (§7.4)
-  Communicator* communicator_ = nullptr;  // null: a serial run
+  std::vector<std::uint8_t> deleted_;           // per connector: deleted by damage (§7.4)
+  Communicator* communicator_ = nullptr;        // null: a serial run
   ItemRange owned_connectors_, owned_springs_;  // the elements this process evaluates
   std::vector<std::size_t> history_bytes_;      // per rank: the bytes of its connectors' history
   std::vector<std::string> events_;

@@ -10,6 +10,7 @@
 #include "parser/diagnostic_render.hpp"
 #include "src/check/validate.hpp"
 #include "src/assembly/analysis_plan.hpp"
+#include "src/assembly/connector_step_problem.hpp"
 #include "src/assembly/connector_system.hpp"
 #include "src/cli/blas_threads.hpp"
 #include "src/cli/stop_signals.hpp"
@@ -206,8 +207,10 @@ int run_deck(const RunCommandOptions& options) {
     return make_linear_solver(options.solver, symmetric, definite);
   };
   Progress progress = Progress::for_stderr(options.quiet || !writer);
-  RunOutputs outputs{table, columns, status, log, progress};
-  const RunResult result = run_analysis(model, system, solvers, outputs,
+  HistoryRecorder history(columns, table, system);
+  RunOutputs outputs{history, status, log, progress};
+  ConnectorStepProblem step_problem(model, system);
+  const RunResult result = run_analysis(model, system, step_problem, solvers, outputs,
                                         RunOptions{options.check_tangent,
                                                    world ? stop_signal_of_any_rank
                                                          : stop_signal_name});

@@ -92,30 +92,6 @@ class NonlinearProblem {
   // is non-null.
   virtual void measure(const Eigen::VectorXd& residual, const Eigen::VectorXd* correction,
                        IterationNorms& norms) const = 0;
-
-  // ---- between solves (the step driver) ----
-  virtual void commit() = 0;  // the trial state becomes the converged one
-  virtual void revert() = 0;  // back to the converged state (a cutback)
-  // Updates the active set (stops) from the solved state; true when it changed, and the
-  // increment then iterates on.
-  virtual bool update_active_set() { return false; }
-  // Events of a converged, committed increment (locks engage, elements are deleted).
-  virtual void end_increment() {}
-  // Applies the events of a converged state that change the problem itself and require the
-  // increment to be solved again (*CONNECTOR FAILURE releasing components): one log line each;
-  // empty when there is none. The caller then reverts and re-solves the same increment.
-  virtual std::vector<std::string> release_failed_components() { return {}; }
-  // What the log reports at the end of a step (one line each): totals of the converged state.
-  virtual std::vector<std::string> step_summary() const { return {}; }
-  // What end_increment did that the log reports (one line each), taken once.
-  virtual std::vector<std::string> take_events() { return {}; }
-  // A likely cause of a failed attempt read from its last (trial) state, for the reason a stop
-  // gives: a connector deleted next to `failed_equation` (the equation of a zero pivot, −1 if
-  // none), else a connector softening past its peak; empty when there is none.
-  virtual std::string failure_note(int /*failed_equation*/) const { return {}; }
-  // What the laws asked for in the last evaluation: a time-step ratio (below 1: retry smaller;
-  // above 1: grow at most so much), whether a result was unreliable, and why.
-  virtual StepRequest step_request() const { return {}; }
 };
 
 }  // namespace clinch

@@ -9,152 +9,9 @@
 
 #include "src/solver/convergence_criteria.hpp"
 #include "src/solver/static_time_stepper.hpp"
-#include "src/solver/step_conditions.hpp"
-#include "src/solver/tangent_check.hpp"
 
 namespace clinch {
 namespace {
-
-constexpr const char* kDofNames[] = {"", "u1", "u2", "u3", "ur1", "ur2", "ur3"};
-
-// The DOF or the multiplier behind an equation (connection-types.md §1.1, §3.8); empty when the
-// equation is not one of the plan's.
-std::string name_equation(const Model& model, const AnalysisPlan& plan, int equation) {
-  if (equation < 0 || equation >= plan.dofs.equations()) return {};
-  const std::int32_t node = plan.dofs.node_of(equation);
-  if (node >= 0) {
-    const Node& n = model.nodes[static_cast<std::size_t>(node)];
-    return fmt::format("DOF {} of node {}", kDofNames[plan.dofs.dof_of(equation)],
-                       qualified_label(model, n.instance, n.label));
-  }
-  for (const ConnectorRecord& r : plan.connectors) {
-    for (int j = 0; j < r.multiplier_count; ++j) {
-      if (r.local.equation[static_cast<std::size_t>(r.column_count + j)] != equation) continue;
-      const Element& e = model.elements[static_cast<std::size_t>(r.element)];
-      return fmt::format("connector {} component {}", qualified_label(model, e.instance, e.label),
-                         r.multiplier_components[static_cast<std::size_t>(j)]);
-    }
-  }
-  return {};
-}
-
-// Whether connector `r` gives its local column `column` stiffness in the initial pose: a nonzero
-// entry of B there, in a component that a law acts on or a multiplier holds.
-bool connector_holds(const AnalysisPlan& plan, const ConnectorRecord& r, int column) {
-  ComponentMask held = r.constrained | r.rigid;
-  for (const LawSlot& slot : r.laws) held |= slot.law->components();
-  for (int j = 0; j < r.multiplier_count; ++j) {
-    held |= component_bit(r.multiplier_components[static_cast<std::size_t>(j)]);
-  }
-  const ConnectorKinematics& kinematics = plan.kinematics[r.kinematics];
-  KinematicsResult initial;
-  kinematics.evaluate(NodePose{}, NodePose{}, true, kinematics.initial_position(), false, initial);
-  for (int i = 0; i < 6; ++i) {
-    if (!has_component(held, i + 1)) continue;
-    const double scale = initial.b.row(i).cwiseAbs().maxCoeff();
-    if (std::abs(initial.b(i, column)) > 1e-12 * scale) return true;
-  }
-  return false;
-}
-
-// Whether spring `s` gives its local column `column` stiffness: its direction has a component
-// along that DOF (keywords.md §7).
-bool spring_holds(const SpringRecord& s, int column) {
-  const Vector3 direction = s.type == ElementType::SpringA
-                                ? Vector3(s.d0)
-                                : s.direction[static_cast<std::size_t>(column / 3)];
-  const double scale = direction.cwiseAbs().maxCoeff();
-  return std::abs(direction[column % 3]) > 1e-12 * scale;
-}
-
-// The elements that give the DOF of `equation` stiffness in their initial pose, named: "connector
-// element 1", "connector elements 1 and 2", "SPRINGA element 4 and 2 more elements".
-struct Holding {
-  std::size_t count = 0;
-  std::string names;
-};
-Holding elements_holding(const Model& model, const AnalysisPlan& plan, int equation) {
-  std::vector<std::pair<std::string, std::string>> found;  // kind, label
-  const auto add = [&](std::string kind, std::int32_t element) {
-    const Element& e = model.elements[static_cast<std::size_t>(element)];
-    found.emplace_back(std::move(kind), qualified_label(model, e.instance, e.label));
-  };
-  for (const ConnectorRecord& r : plan.connectors) {
-    for (int k = 0; k < r.column_count; ++k) {
-      if (r.local.equation[static_cast<std::size_t>(k)] == equation &&
-          connector_holds(plan, r, r.columns[static_cast<std::size_t>(k)])) {
-        add("connector", r.element);
-      }
-    }
-  }
-  for (const SpringRecord& s : plan.springs) {
-    for (int k = 0; k < s.column_count; ++k) {
-      if (s.local.equation[static_cast<std::size_t>(k)] == equation &&
-          spring_holds(s, s.columns[static_cast<std::size_t>(k)])) {
-        add(element_type_name(model.elements[static_cast<std::size_t>(s.element)].type), s.element);
-      }
-    }
-  }
-  Holding holding{found.size(), {}};
-  if (found.empty()) return holding;
-  const auto& [kind, label] = found[0];
-  if (found.size() == 1) {
-    holding.names = fmt::format("{} element {}", kind, label);
-  } else if (found.size() > 2) {
-    holding.names =
-        fmt::format("{} element {} and {} more elements", kind, label, found.size() - 1);
-  } else if (found[1].first == kind) {
-    holding.names = fmt::format("{} elements {} and {}", kind, label, found[1].second);
-  } else {
-    holding.names = fmt::format("{} element {} and {} element {}", kind, label, found[1].first,
-                                found[1].second);
-  }
-  return holding;
-}
-
-// Whether some *BOUNDARY of the deck (model data or any step) names DOF `dof` of `node`.
-bool has_boundary(const Model& model, std::int32_t node, int dof) {
-  const auto names = [&](const std::vector<BoundaryCondition>& conditions) {
-    return std::any_of(conditions.begin(), conditions.end(), [&](const BoundaryCondition& bc) {
-      return ((bc.dofs >> (dof - 1)) & 1u) != 0 &&
-             std::find(bc.resolved.begin(), bc.resolved.end(), node) != bc.resolved.end();
-    });
-  };
-  if (names(model.history.model_boundaries)) return true;
-  return std::any_of(model.history.steps.begin(), model.history.steps.end(),
-                     [&](const Step& step) { return names(step.boundaries); });
-}
-
-// Why an attempt failed at an equation: a zero pivot, or a value that is not finite. A DOF with
-// no stiffness gets the hint to restrain it only when nothing does (connection-types.md §1.1):
-// no *BOUNDARY names it and no element gives it stiffness in its initial pose. Otherwise the
-// stiffness was lost on the way (a yielded, damaged or flat law past the load it can carry), or
-// the DOF moves in a mechanism, and a restraint of that DOF is not the fix.
-std::string describe_failure(const Model& model, const AnalysisPlan& plan,
-                             const NewtonReport& report) {
-  const std::string name = name_equation(model, plan, report.failed_equation);
-  if (report.outcome == NewtonOutcome::NonFinite) {
-    return name.empty() ? report.message : fmt::format("{} at {}", report.message, name);
-  }
-  if (name.empty()) return "the system is singular";
-  const std::int32_t node = plan.dofs.node_of(report.failed_equation);
-  if (node < 0) return "overconstrained " + name;
-  if (const Holding holding = elements_holding(model, plan, report.failed_equation);
-      holding.count > 0) {
-    return fmt::format("singular system: {} has no stiffness, although {} gave it stiffness at "
-                       "the start: {} stiffness vanished in this state, or the DOF moves with "
-                       "others in a mechanism",
-                       name, holding.names, holding.count == 1 ? "its" : "their");
-  }
-  if (has_boundary(model, node, plan.dofs.dof_of(report.failed_equation))) {
-    return fmt::format("singular system: {} has no stiffness: no element restrains it, and its "
-                       "*BOUNDARY does not hold it in this step",
-                       name);
-  }
-  return fmt::format("singular system: {} has no stiffness (add a *BOUNDARY or an element that "
-                     "restrains it)",
-                     name);
-}
 
 // What an attempt leaves for the stepper and for the acceptance of its increment.
 struct Attempted {
@@ -166,16 +23,14 @@ struct Attempted {
 
 class Driver {
  public:
-  Driver(const Model& model, ConnectorSystem& system, const SolverFactory& solvers, RunOutputs& out,
-         const RunOptions& options)
+  Driver(const Model& model, NonlinearProblem& problem, StepProblem& step_problem,
+         const SolverFactory& solvers, RunOutputs& out, const RunOptions& options)
       : model_(model),
-        plan_(system.plan()),
-        system_(system),
-        problem_(system),
+        problem_(problem),
+        step_problem_(step_problem),
         solvers_(solvers),
         out_(out),
         options_(options),
-        conditions_(model, system.plan()),
         criteria_(model.history.steps.empty() ? Controls{} : model.history.steps[0].controls) {}
 
   RunResult run() {
@@ -187,14 +42,14 @@ class Driver {
       out_.log.error(fmt::format("analysis stopped: {}", result_.reason));
       return result_;
     }
-    write_row(1, 0, 0.0, 0.0, false);
+    out_.history.converged(1, 0, 0.0, 0.0, false);
     if (!outputs_written(1, 0)) return stop();
     for (std::size_t s = 0; s < model_.history.steps.size(); ++s) {
       if (!run_step(s)) return stop();
     }
     // Completion is claimed only when every output is whole and the history is on the disk, the
     // COMPLETED line included.
-    out_.table.sync();
+    out_.history.sync();
     if (!outputs_written(result_.step, result_.increment)) return stop();
     out_.status.write_completed();
     out_.status.sync();
@@ -211,12 +66,6 @@ class Driver {
     return result_;
   }
 
-  void write_row(int step, int increment, double step_time, double total_time, bool last) {
-    if (!out_.columns.due(increment, last)) return;
-    out_.columns.evaluate(system_, increment, last, values_);
-    out_.table.write_row(step, increment, step_time, total_time, values_);
-  }
-
   // Between attempts, or when Newton stopped an attempt for it, the history holds every converged
   // increment and nothing more, so a stop asked from outside (SIGINT, SIGTERM) is honoured here.
   bool interrupted(int step, int increment) {
@@ -230,7 +79,7 @@ class Driver {
   // run stops there rather than go on with a history that has lost rows. While all is well it
   // records how far the run got, which a failed COMPLETED line reports.
   bool outputs_written(int step, int increment) {
-    for (const OutputFile* file : {&out_.table.file(), &out_.status.file(), &out_.log.file()}) {
+    for (const OutputFile* file : {&out_.history.file(), &out_.status.file(), &out_.log.file()}) {
       if (file->failed()) {
         result_.io_error = true;
         return fail(file->error(), step, increment);
@@ -278,7 +127,7 @@ class Driver {
         out_.log.iteration(record);
       }
       iterations += std::max(0, static_cast<int>(report.iterations.size()) - 1);
-      if (!report.converged() || !problem_.update_active_set()) return report;
+      if (!report.converged() || !step_problem_.update_active_set()) return report;
       if (++changes > 8) {
         report.outcome = NewtonOutcome::TooManyIterations;
         report.message = "stop active set did not settle";
@@ -315,8 +164,8 @@ class Driver {
       result_.cutbacks = cutbacks_before + stepper.cutbacks();
       if (converged && !accept_increment(step_number, stepper, last)) return false;
     }
-    conditions_.end_step(procedure.period, total_time_);
-    for (const std::string& line : problem_.step_summary()) {
+    step_problem_.end_step(procedure.period, total_time_);
+    for (const std::string& line : step_problem_.step_summary()) {
       out_.log.info(fmt::format("step {}: {}", step_number, line));
     }
     return true;
@@ -328,30 +177,26 @@ class Driver {
     controls_ = &step.controls;
     // DIRECT=NO STOP accepts an increment that reaches the iteration limit (keywords.md §15).
     accept_unconverged_ = procedure.direct && procedure.no_stop;
-    system_.set_nlgeom(step.nlgeom);
+    step_problem_.begin_step(static_cast<std::size_t>(step_number - 1), step.nlgeom);
     if (!choose_storage(step, step_number)) return false;
-    conditions_.begin_step(static_cast<std::size_t>(step_number - 1), system_);
     warned_.clear();
-    // A stick–slip switch can send Newton back and forth across the narrow stick band (slip
-    // tangents on both sides); a line search stops the cycle. Steps with friction get one unless
-    // the deck sets PARAMETERS=LINE SEARCH itself (docs/decisions.md "Friction").
+    // A law may ask for a line search (friction: docs/decisions.md "Friction"); the deck's own
+    // PARAMETERS=LINE SEARCH wins.
+    const ProcedureNeeds needs = step_problem_.procedure_needs();
     line_search_ = step.controls.line_search;
-    if (plan_.friction && !line_search_.given && line_search_.max_iterations == 0) {
-      line_search_.max_iterations = kFrictionLineSearch;
+    if (needs.line_search_iterations > 0 && !line_search_.given &&
+        line_search_.max_iterations == 0) {
+      line_search_.max_iterations = needs.line_search_iterations;
       out_.log.info(
-          fmt::format("step {}: line search on (N_ls = {}): the step has friction and "
-                      "the deck does not set *CONTROLS, PARAMETERS=LINE SEARCH",
-                      step_number, kFrictionLineSearch));
+          fmt::format("step {}: line search on (N_ls = {}): {} and the deck does not "
+                      "set *CONTROLS, PARAMETERS=LINE SEARCH",
+                      step_number, needs.line_search_iterations, needs.line_search_reason));
     }
-    if (plan_.rate_dependent_friction) {
-      out_.log.info(
-          fmt::format("step {}: the friction is rate dependent; in a *STATIC step the "
-                      "slip rate is the slip of an increment over its step time "
-                      "(friction.md §3.3)",
-                      step_number));
+    for (const std::string& note : needs.notes) {
+      out_.log.info(fmt::format("step {}: {}", step_number, note));
     }
     criteria_.start_step(step.controls);
-    out_.columns.begin_step(static_cast<std::size_t>(step_number - 1));
+    out_.history.begin_step(static_cast<std::size_t>(step_number - 1));
     step_time_ = 0.0;
     return true;
   }
@@ -366,11 +211,12 @@ class Driver {
     for (;; ++attempt_number) {
       if (interrupted(step_number, increment)) return false;
       const double new_time = step_time_ + dt;
-      system_.set_time(total_time_ + dt, dt);
-      conditions_.apply(system_, new_time, total_time_ + dt);
       const bool extrapolate = step.extrapolation && increment > 1 && previous_dt_ > 0;
-      system_.start_increment(extrapolate ? dt / previous_dt_ : 0.0);
-      if (options_.check_tangent) out_.log.info(check_tangent(system_, step_number, increment));
+      step_problem_.begin_increment(new_time, total_time_ + dt, dt,
+                                    extrapolate ? dt / previous_dt_ : 0.0);
+      if (options_.check_tangent) {
+        out_.log.info(step_problem_.check_tangent(step_number, increment));
+      }
       int iterations = 0, changes = 0;
       const NewtonReport report =
           attempt(step_number, increment, attempt_number, iterations, changes);
@@ -380,7 +226,7 @@ class Driver {
       }
       const bool converged = report.converged();
       // A converged attempt is still abandoned when a law asks for a smaller increment.
-      attempted.request = problem_.step_request();
+      attempted.request = step_problem_.step_request();
       const bool smaller = converged && attempted.request.dt_ratio < 1.0;
       attempted.status_line = {step_number,           increment,  attempt_number,
                                !converged || smaller, iterations, iterations + changes,
@@ -392,7 +238,7 @@ class Driver {
       if (converged && !smaller) {
         attempted.last_iteration = report.iterations.back();
       } else {
-        problem_.revert();
+        step_problem_.revert();
       }
       return true;
     }
@@ -401,7 +247,7 @@ class Driver {
   // §5.3: a failure criterion met on the converged state releases its components; the same
   // increment is then solved again (an attempt of its own, with the same time).
   bool redo_after_failures(int step_number, int increment, const Attempted& attempted) {
-    const std::vector<std::string> failures = problem_.release_failed_components();
+    const std::vector<std::string> failures = step_problem_.release_failed_components();
     if (failures.empty()) return false;
     for (const std::string& f : failures) {
       out_.log.info(fmt::format("step {} increment {}: {}; the increment is solved again",
@@ -410,7 +256,7 @@ class Driver {
     IncrementAttempt redone = attempted.status_line;
     redone.cut_back = true;
     out_.status.write_attempt(redone);
-    problem_.revert();
+    step_problem_.revert();
     return true;
   }
 
@@ -432,10 +278,10 @@ class Driver {
     outcome.kind = report.outcome == NewtonOutcome::Diverged           ? Kind::Diverged
                    : report.outcome == NewtonOutcome::EvaluationFailed ? Kind::EvaluationFailed
                                                                        : Kind::NotConverged;
-    outcome.note = problem_.failure_note(report.failed_equation);
+    outcome.note = step_problem_.failure_note(report.failed_equation);
     outcome.reason_stands = report.outcome == NewtonOutcome::SolverFailed;
     outcome.reason = outcome.reason_stands || report.outcome == NewtonOutcome::NonFinite
-                         ? describe_failure(model_, plan_, report)
+                         ? step_problem_.describe_failure(report)
                          : report.message;
     return outcome;
   }
@@ -446,7 +292,7 @@ class Driver {
                         const Attempted& attempted) {
     const int increment = stepper.increments();
     const double dt = attempted.status_line.time_increment;
-    problem_.commit();
+    step_problem_.commit();
     criteria_.accept_increment(attempted.last_iteration);
     for (const StepRequest::Warning& w : attempted.request.warnings) {
       if (warned_.insert(w.element).second) out_.log.warning(w.message);
@@ -455,14 +301,14 @@ class Driver {
     total_time_ += dt;
     ++result_.increments;
     previous_dt_ = dt;
-    write_row(step_number, increment, step_time_, total_time_, stepper.at_end());
+    out_.history.converged(step_number, increment, step_time_, total_time_, stepper.at_end());
     if (!outputs_written(step_number, increment)) return false;
     out_.status.write_attempt(attempted.status_line);
     if (!outputs_written(step_number, increment)) return false;
     // A lock engages at the converged state; its row shows the unlocked state
     // (behaviors.md §5.2, example E5).
-    problem_.end_increment();
-    for (const std::string& event : problem_.take_events()) {
+    step_problem_.end_increment();
+    for (const std::string& event : step_problem_.take_events()) {
       out_.log.info(fmt::format("step {} increment {}: {}", step_number, increment, event));
     }
     out_.progress.update(step_number, increment, total_time_);
@@ -474,7 +320,7 @@ class Driver {
   // UNSYMM=NO keeps the upper triangle and symmetrises unsymmetric laws. A solver is analysed
   // once per storage and kept for later steps.
   bool choose_storage(const Step& step, int step_number) {
-    const bool laws_symmetric = plan_.laws_symmetric();
+    const bool laws_symmetric = step_problem_.laws_symmetric();
     bool symmetric = laws_symmetric;
     std::string why =
         laws_symmetric ? "every law's tangent is symmetric" : "a law's tangent is unsymmetric";
@@ -487,7 +333,7 @@ class Driver {
                            : "*STEP, UNSYMM=NO: the unsymmetric tangent is symmetrised";
     }
     std::unique_ptr<LinearSolver>& solver = symmetric ? symmetric_solver_ : full_solver_;
-    system_.use_storage(symmetric);
+    step_problem_.use_storage(symmetric);
     if (!solver) {
       const auto start = std::chrono::steady_clock::now();
       solver = solvers_(symmetric);
@@ -498,51 +344,48 @@ class Driver {
                     step_number, 0);
       }
       std::string error;
-      if (solver->analyze(system_.pattern(), &error) != LinearStatus::Ok) {
+      if (solver->analyze(problem_.pattern(), &error) != LinearStatus::Ok) {
         return fail(fmt::format("linear solver analysis failed: {}", error), step_number, 0);
       }
       result_.analyze_seconds +=
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
     solver_ = solver.get();
-    if (symmetric && plan_.has_multipliers) why += "; the multipliers make it indefinite";
+    if (symmetric && step_problem_.has_multipliers()) why += "; the multipliers make it indefinite";
     if (const std::string choice = solver_->choice(); !choice.empty()) why += "; " + choice;
     out_.log.info(fmt::format("step {}: {} on the {} ({} equations, {} stored entries): {}",
                               step_number, solver_->name(),
-                              symmetric ? "upper triangle" : "full pattern", system_.pattern().n,
-                              system_.pattern().values.size(), why));
+                              symmetric ? "upper triangle" : "full pattern", problem_.pattern().n,
+                              problem_.pattern().values.size(), why));
     return true;
   }
 
   const Model& model_;
-  const AnalysisPlan& plan_;
-  ConnectorSystem& system_;    // conditions and output
-  NonlinearProblem& problem_;  // solving and the state between solves
+  NonlinearProblem& problem_;  // what Newton solves
+  StepProblem& step_problem_;  // the step's set-up, the increment's time, the state between solves
   const SolverFactory& solvers_;
   std::unique_ptr<LinearSolver> symmetric_solver_, full_solver_;
   LinearSolver* solver_ = nullptr;
   RunOutputs& out_;
   const RunOptions& options_;
-  StepConditions conditions_;
   ConvergenceCriteria criteria_;
   const Controls* controls_ = nullptr;
   bool accept_unconverged_ = false;
   double total_time_ = 0.0;
   double step_time_ = 0.0;    // of the step, at the last converged increment
   double previous_dt_ = 0.0;  // the last converged increment (extrapolation)
-  std::vector<double> values_;
   RunResult result_;
   std::set<std::size_t> warned_;
-  static constexpr int kFrictionLineSearch = 5;
   LineSearchControls line_search_;  // this step's, with clinch's choice for friction  // elements
                                     // whose law warning this step's log already has
 };
 
 }  // namespace
 
-RunResult run_analysis(const Model& model, ConnectorSystem& system, const SolverFactory& solvers,
-                       RunOutputs& outputs, const RunOptions& options) {
-  return Driver(model, system, solvers, outputs, options).run();
+RunResult run_analysis(const Model& model, NonlinearProblem& problem, StepProblem& step_problem,
+                       const SolverFactory& solvers, RunOutputs& outputs,
+                       const RunOptions& options) {
+  return Driver(model, problem, step_problem, solvers, outputs, options).run();
 }
 
 }  // namespace clinch

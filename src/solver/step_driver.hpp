@@ -12,20 +12,19 @@
 #include <memory>
 #include <string>
 
-#include "src/assembly/connector_system.hpp"
 #include "src/linalg/linear_solver.hpp"
-#include "src/output/history_columns.hpp"
-#include "src/output/history_table.hpp"
+#include "src/model/model.hpp"
+#include "src/output/history_recorder.hpp"
 #include "src/output/progress.hpp"
 #include "src/output/run_log.hpp"
 #include "src/output/status_file.hpp"
 #include "src/solver/newton.hpp"
+#include "src/solver/step_problem.hpp"
 
 namespace clinch {
 
 struct RunOutputs {
-  HistoryTable& table;
-  HistoryColumns& columns;
+  HistoryRecorder& history;
   StatusFile& status;
   RunLog& log;
   Progress& progress;
@@ -55,7 +54,10 @@ struct RunResult {
 // nullptr when the solver the user chose cannot solve it.
 using SolverFactory = std::function<std::unique_ptr<LinearSolver>(bool symmetric)>;
 
-RunResult run_analysis(const Model& model, ConnectorSystem& system, const SolverFactory& solvers,
-                       RunOutputs& outputs, const RunOptions& options);
+// Runs every step of `model` on `problem` (what Newton solves) and `step_problem` (what the
+// driver sets and keeps between solves), the two faces of one analysis.
+RunResult run_analysis(const Model& model, NonlinearProblem& problem, StepProblem& step_problem,
+                       const SolverFactory& solvers, RunOutputs& outputs,
+                       const RunOptions& options);
 
 }  // namespace clinch

@@ -39,8 +39,6 @@ class ArctanProblem final : public NonlinearProblem {
     norms.largest_increment[0] = std::abs(x_ - x0_);
     if (correction) norms.largest_correction[0] = std::abs((*correction)[0]);
   }
-  void commit() override { x0_ = x_; }
-  void revert() override { x_ = x0_; }
   double x() const { return x_; }
   int evaluations = 0;
   static constexpr double kRoot = 0.2;
@@ -127,8 +125,6 @@ class ConstrainedLoadProblem final : public NonlinearProblem {
     norms.largest_increment[0] = x_.head<2>().cwiseAbs().maxCoeff();
     if (correction) norms.largest_correction[0] = correction->head<2>().cwiseAbs().maxCoeff();
   }
-  void commit() override {}
-  void revert() override {}
   double multiplier() const { return x_[2]; }
   static constexpr double kK = 1e4, kF = 50.0, kP = 10.0;
 

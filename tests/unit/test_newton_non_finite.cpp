@@ -40,8 +40,6 @@ class TwoSprings final : public NonlinearProblem {
     norms.largest_increment[0] = x_.cwiseAbs().maxCoeff();
     if (correction) norms.largest_correction[0] = correction->cwiseAbs().maxCoeff();
   }
-  void commit() override {}
-  void revert() override {}
   const Eigen::Vector2d& x() const { return x_; }
 
  private:

@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "parser/deck_reader.hpp"
+#include "src/assembly/connector_step_problem.hpp"
 #include "src/assembly/connector_system.hpp"
 #include "src/output/history_columns.hpp"
 #include "src/solver/step_driver.hpp"
@@ -62,11 +63,13 @@ DriverRun run_with_law(const std::string& deck_text, const Behavior& law, const 
   EXPECT_TRUE(status.open(dir / (job + ".sta"), &error)) << error;
   EXPECT_TRUE(log.open(dir / (job + ".log"), &error)) << error;
   Progress progress = Progress::for_stderr(true);
-  RunOutputs outputs{table, columns, status, log, progress};
+  HistoryRecorder history(columns, table, system);
+  RunOutputs outputs{history, status, log, progress};
+  ConnectorStepProblem step_problem(deck.model, system);
   const SolverFactory solvers = [](bool symmetric) {
     return make_linear_solver(SolverChoice::Automatic, symmetric, true);
   };
-  run.result = run_analysis(deck.model, system, solvers, outputs, options);
+  run.result = run_analysis(deck.model, system, step_problem, solvers, outputs, options);
   table = HistoryTable{};
   status = StatusFile{};
   std::ifstream csv(dir / (job + ".csv"));

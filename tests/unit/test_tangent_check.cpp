@@ -38,8 +38,6 @@ class LinearProblem : public NonlinearProblem {
   }
   void apply_correction(const Eigen::VectorXd& correction) override { x_ += correction; }
   void measure(const Eigen::VectorXd&, const Eigen::VectorXd*, IterationNorms&) const override {}
-  void commit() override {}
-  void revert() override {}
   const Eigen::Vector3d& state() const { return x_; }
 
  private:

@@ -1,4 +1,4 @@
-#include "src/solver/step_conditions.hpp"
+#include "src/assembly/step_conditions.hpp"
 
 namespace clinch {
 namespace {

@@ -1,0 +1,51 @@
+#include "src/assembly/connector_step_problem.hpp"
+
+#include "src/assembly/connector_tangent_check.hpp"
+#include "src/assembly/failure_description.hpp"
+
+namespace clinch {
+
+ConnectorStepProblem::ConnectorStepProblem(const Model& model, ConnectorSystem& system)
+    : model_(model), system_(system), conditions_(model, system.plan()) {}
+
+void ConnectorStepProblem::begin_step(std::size_t step, bool nlgeom) {
+  system_.set_nlgeom(nlgeom);
+  conditions_.begin_step(step, system_);
+}
+
+void ConnectorStepProblem::end_step(double period, double total_time) {
+  conditions_.end_step(period, total_time);
+}
+
+ProcedureNeeds ConnectorStepProblem::procedure_needs() const {
+  ProcedureNeeds needs;
+  // A stick–slip switch can send Newton back and forth across the narrow stick band (slip
+  // tangents on both sides); a line search stops the cycle (docs/decisions.md "Friction").
+  if (system_.plan().friction) {
+    needs.line_search_iterations = 5;
+    needs.line_search_reason = "the step has friction";
+  }
+  if (system_.plan().rate_dependent_friction) {
+    needs.notes.emplace_back(
+        "the friction is rate dependent; in a *STATIC step the slip rate is "
+        "the slip of an increment over its step time (friction.md §3.3)");
+  }
+  return needs;
+}
+
+void ConnectorStepProblem::begin_increment(double step_time, double total_time, double dt,
+                                           double extrapolate_scale) {
+  system_.set_time(total_time, dt);
+  conditions_.apply(system_, step_time, total_time);
+  system_.start_increment(extrapolate_scale);
+}
+
+std::string ConnectorStepProblem::check_tangent(int step, int increment) {
+  return clinch::check_tangent(system_, step, increment);
+}
+
+std::string ConnectorStepProblem::describe_failure(const NewtonReport& report) const {
+  return clinch::describe_failure(model_, system_.plan(), report);
+}
+
+}  // namespace clinch

@@ -1,0 +1,49 @@
+// The connector system as a procedure's driver sees it (StepProblem): the steps' conditions
+// (step_conditions.hpp) pushed into the system at each increment, the system's state between
+// solves, the tangent check and the description of failures in the deck's terms.
+#pragma once
+
+#include "src/assembly/connector_system.hpp"
+#include "src/assembly/step_conditions.hpp"
+#include "src/solver/step_problem.hpp"
+
+namespace clinch {
+
+class ConnectorStepProblem final : public StepProblem {
+ public:
+  ConnectorStepProblem(const Model& model, ConnectorSystem& system);
+
+  void begin_step(std::size_t step, bool nlgeom) override;
+  void end_step(double period, double total_time) override;
+  bool laws_symmetric() const override { return system_.plan().laws_symmetric(); }
+  bool has_multipliers() const override { return system_.plan().has_multipliers; }
+  void use_storage(bool symmetric) override { system_.use_storage(symmetric); }
+  ProcedureNeeds procedure_needs() const override;
+
+  void begin_increment(double step_time, double total_time, double dt,
+                       double extrapolate_scale) override;
+  std::string check_tangent(int step, int increment) override;
+
+  void commit() override { system_.commit(); }
+  void revert() override { system_.revert(); }
+  bool update_active_set() override { return system_.update_active_set(); }
+  void end_increment() override { system_.end_increment(); }
+  std::vector<std::string> release_failed_components() override {
+    return system_.release_failed_components();
+  }
+  std::vector<std::string> step_summary() const override { return system_.step_summary(); }
+  std::vector<std::string> take_events() override { return system_.take_events(); }
+  StepRequest step_request() const override { return system_.step_request(); }
+
+  std::string describe_failure(const NewtonReport& report) const override;
+  std::string failure_note(int failed_equation) const override {
+    return system_.failure_note(failed_equation);
+  }
+
+ private:
+  const Model& model_;
+  ConnectorSystem& system_;
+  StepConditions conditions_;
+};
+
+}  // namespace clinch

@@ -1,0 +1,79 @@
+// What a procedure's driver sees of the problem beside NonlinearProblem (ARCHITECTURE.md "Key
+// interfaces"): the set-up of a step, the time and conditions of an increment, the state between
+// solves (keep, drop, active sets, events), and what the state says about a failure. Newton never
+// sees it; the driver never sees an element.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "src/solver/newton.hpp"
+#include "src/solver/nonlinear_problem.hpp"
+
+namespace clinch {
+
+// What the laws of the model ask of every step's procedure: a line search of so many iterations
+// unless the deck sets one (0: none), and why; notes for the step's log.
+struct ProcedureNeeds {
+  int line_search_iterations = 0;
+  std::string line_search_reason;
+  std::vector<std::string> notes;
+};
+
+class StepProblem {
+ public:
+  virtual ~StepProblem() = default;
+
+  // ---- a step ----
+  // Starts step `step` (0-based) of the deck: NLGEOM, and its conditions resolved against those
+  // carried over from the converged state (keywords.md §13).
+  virtual void begin_step(std::size_t step, bool nlgeom) = 0;
+  // Records the conditions' values at the end of the step for the next one.
+  virtual void end_step(double period, double total_time) = 0;
+  virtual bool laws_symmetric() const = 0;   // every law's tangent is symmetric
+  virtual bool has_multipliers() const = 0;  // multipliers make a symmetric matrix indefinite
+  // Stores the tangent as an upper triangle (symmetric) or in full from the next evaluation on;
+  // NonlinearProblem::pattern() is then that storage's.
+  virtual void use_storage(bool symmetric) = 0;
+  virtual ProcedureNeeds procedure_needs() const = 0;
+
+  // ---- an increment ----
+  // Sets the time and the conditions of the increment that ends at (step_time, total_time) and
+  // starts it, adding `extrapolate_scale` times the last converged increment (0: none).
+  virtual void begin_increment(double step_time, double total_time, double dt,
+                               double extrapolate_scale) = 0;
+  // `--check-tangent`: the assembled tangent against finite differences at the start of the
+  // increment, as a report for the log; the state is left exactly as it was.
+  virtual std::string check_tangent(int step, int increment) = 0;
+
+  // ---- between solves ----
+  virtual void commit() = 0;  // the trial state becomes the converged one
+  virtual void revert() = 0;  // back to the converged state (a cutback)
+  // Updates the active set (stops) from the solved state; true when it changed, and the
+  // increment then iterates on.
+  virtual bool update_active_set() = 0;
+  // Events of a converged, committed increment (locks engage, elements are deleted).
+  virtual void end_increment() = 0;
+  // Applies the events of a converged state that change the problem itself and require the
+  // increment to be solved again (*CONNECTOR FAILURE releasing components): one log line each;
+  // empty when there is none. The caller then reverts and re-solves the same increment.
+  virtual std::vector<std::string> release_failed_components() = 0;
+  // What the log reports at the end of a step (one line each): totals of the converged state.
+  virtual std::vector<std::string> step_summary() const = 0;
+  // What end_increment did that the log reports (one line each), taken once.
+  virtual std::vector<std::string> take_events() = 0;
+  // What the laws asked for in the last evaluation: a time-step ratio (below 1: retry smaller;
+  // above 1: grow at most so much), whether a result was unreliable, and why.
+  virtual StepRequest step_request() const = 0;
+
+  // ---- a failure ----
+  // Why a Newton attempt failed, in the deck's terms (the DOF or multiplier of a zero pivot or of
+  // a value that is not finite).
+  virtual std::string describe_failure(const NewtonReport& report) const = 0;
+  // A likely cause read from the failed (trial) state: a connector deleted next to
+  // `failed_equation` (−1 if none), else a connector softening past its peak; empty when none.
+  virtual std::string failure_note(int failed_equation) const = 0;
+};
+
+}  // namespace clinch
