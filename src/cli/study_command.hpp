@@ -26,6 +26,13 @@ struct StudyOptions {
   bool quiet = false;
 };
 
+// Check a --ratio value (a finite number from 1.01 to 1000) and a --budget or --rtol value (a
+// finite number > 0). Each returns an empty string when the value is one, else the message (the
+// CLI11 validator convention): NaN compares false with every bound, so a range test alone lets it
+// through.
+std::string check_ratio(const std::string& text);
+std::string check_positive(const std::string& text);
+
 int run_study(const StudyOptions& options);
 
 }  // namespace clinch
