@@ -84,7 +84,8 @@ int run_command_line(int argc, char** argv) {
       "estimated by Richardson extrapolation; writes <job>.study.csv, <job>.study-columns.csv "
       "and the work-precision plot <job>.study.svg into the work directory; exit 0 = at least "
       "two settings compared, 1 = deck errors (nothing run), 2 = fewer than two settings "
-      "completed, 3 = usage or I/O error");
+      "completed, or stopped by SIGINT or SIGTERM (forwarded to the running settings; the table "
+      "of what completed is written), 3 = usage or I/O error");
   study->add_option("DECK", study_options.deck, "the deck (.inp), or - for standard input")
       ->required();
   study->add_option("--work", study_options.work_dir,

@@ -5,7 +5,8 @@
 // finest setting, and estimated by Richardson extrapolation where an order shows). Writes
 // DIR/<job>.study.csv, DIR/<job>.study-columns.csv and the work-precision plot
 // DIR/<job>.study.svg. Exit 0 = the study compared at least two settings, 1 = the deck has errors
-// (nothing was run), 2 = fewer than two settings completed, 3 = usage or I/O error.
+// (nothing was run), 2 = fewer than two settings completed or the study was stopped by SIGINT or
+// SIGTERM (docs/study-and-report.md "Stopping a study"), 3 = usage or I/O error.
 #pragma once
 
 #include <optional>
