@@ -179,6 +179,12 @@ def time_histories(page, history, where, columns, kind):
                 "ends)", where=where, panels=len(families))
 
 
+def drawable(norm):
+    """The norm where a log scale can show it: zero norms (increments whose motions are all
+    prescribed) and NaN or infinite ones (a Newton iteration that diverged) are left out."""
+    return norm if 0.0 < norm < math.inf else math.nan
+
+
 def convergence(page, data):
     iterations, attempts = data["iterations"], data["attempts"]
     if not iterations and not attempts:
@@ -199,8 +205,8 @@ def convergence(page, data):
         first = slot + 1
         for r in records or [None]:
             x.append(slot := slot + 1)
-            residual.append(r["residual"] if r and r["residual"] > 0.0 else math.nan)
-            correction.append(r["correction"] if r and r["correction"] > 0.0 else math.nan)
+            residual.append(drawable(r["residual"]) if r else math.nan)
+            correction.append(drawable(r["correction"]) if r else math.nan)
         spans.append((key, first, slot))
         # A gap between attempts: each attempt's iterations make their own line.
         x.append(slot + 0.5)
@@ -220,8 +226,8 @@ def convergence(page, data):
         ax.set_yscale("log")
         ax.set_ylabel("norm (log scale)")
     else:
-        ax.text(0.5, 0.5, "every norm is zero (all motions prescribed): nothing to draw on a "
-                "log scale", transform=ax.transAxes, ha="center", fontsize=8)
+        ax.text(0.5, 0.5, "no norm is positive and finite (zero: all motions prescribed): "
+                "nothing to draw on a log scale", transform=ax.transAxes, ha="center", fontsize=8)
         ax.set_ylabel("norm")
         ax.set_yticks([])
     ax.set_xlabel("Newton iteration (counted over the run; grey lines: a new increment attempt)")
@@ -231,7 +237,7 @@ def convergence(page, data):
     ax.legend(fontsize=8)
     fig.tight_layout()
     page.figure(fig, "convergence", "Residual and correction norms of every Newton iteration "
-                "(from the .log); zero norms are not drawn; red bands: attempts that were cut "
+                "(from the .log); zero and non-finite norms are not drawn; red bands: attempts that were cut "
                 "back (from the .sta)", attempts=len(spans), cutbacks=cutbacks)
 
 
