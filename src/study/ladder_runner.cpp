@@ -68,6 +68,9 @@ std::optional<pid_t> spawn_run(const std::string& clinch, const LadderSetting& s
     if (getppid() != parent) _exit(127);  // the study died before prctl took effect
     setpgid(0, 0);
     if (dup2(fd, STDOUT_FILENO) < 0 || dup2(fd, STDERR_FILENO) < 0) _exit(127);
+    // dup2 onto itself (a study started with stdout closed) keeps close-on-exec: cleared here.
+    fcntl(STDOUT_FILENO, F_SETFD, 0);
+    fcntl(STDERR_FILENO, F_SETFD, 0);
     sigprocmask(SIG_SETMASK, &previous, nullptr);
     execv(argv[0], argv.data());
     _exit(127);
