@@ -29,7 +29,8 @@ namespace fs = std::filesystem;
 
 // An interrupted study exits like one with too few settings: it did not finish (2).
 constexpr int kExitStudied = 0, kExitDeckErrors = 1, kExitTooFewRuns = 2, kExitUsage = 3;
-// Below 1.01 the settings hardly differ; above 1000 a few levels overflow any increment count.
+// --ratio's range: below 1.01 successive settings hardly differ, and above 1000 the third setting
+// already takes 10^6 times the deck's increments.
 constexpr double kMinimumRatio = 1.01, kMaximumRatio = 1000.0;
 
 // Stop/lock and stick/slip status columns hold codes, not quantities that converge with the
