@@ -1,8 +1,10 @@
 #include "src/output/csv_table.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cstring>
+#include <deque>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -21,20 +23,14 @@ std::string_view trim(std::string_view s) {
   return s.substr(first, last - first + 1);
 }
 
-// The fields of one record, reused from record to record so that a long table is read without
-// an allocation per number.
+// The fields of one record: views into the text, but for quoted fields with doubled quotes,
+// which are held undoubled in `unescaped`. A long table is read without an allocation per number.
 struct Record {
-  std::vector<std::string> fields;
-  std::size_t size = 0;
-  bool quoted = false;  // some field was quoted
+  std::vector<std::string_view> fields;
+  std::deque<std::string> unescaped;  // a deque: its strings stay where the views point
+  bool quoted = false;                // some field was quoted
 
-  std::string& next_field() {
-    if (size == fields.size()) fields.emplace_back();
-    std::string& field = fields[size++];
-    field.clear();
-    return field;
-  }
-  bool blank() const { return size == 1 && fields[0].empty() && !quoted; }
+  bool blank() const { return fields.size() == 1 && fields[0].empty() && !quoted; }
 };
 
 // Reads the record that starts at `pos` (RFC 4180: fields separated by commas; a field in double
@@ -44,33 +40,46 @@ struct Record {
 // False, with the reason in `why`, when a quote is not closed or text follows a closing quote.
 bool read_record(std::string_view text, std::size_t& pos, std::size_t& line, Record& record,
                  std::string* why) {
-  record.size = 0;
+  record.fields.clear();
+  record.unescaped.clear();
   record.quoted = false;
   const std::size_t n = text.size();
   while (true) {
-    std::string& field = record.next_field();
-    std::size_t start = pos;
+    const std::size_t start = pos;
     while (pos < n && is_blank(text[pos])) ++pos;
     if (pos < n && text[pos] == '"') {
       record.quoted = true;
       const std::size_t opening_line = line;
-      for (++pos;; ++pos) {
-        if (pos >= n) {
+      const std::size_t first = ++pos;
+      bool doubled = false;
+      while (true) {
+        const std::size_t quote = text.find('"', pos);
+        if (quote == std::string_view::npos) {
           *why = fmt::format("the quoted field that starts on line {} is not closed",
                              opening_line);
           return false;
         }
-        if (text[pos] == '"') {
-          if (pos + 1 < n && text[pos + 1] == '"') {
-            field += '"';
-            ++pos;
-            continue;
-          }
+        line += static_cast<std::size_t>(
+            std::count(text.begin() + static_cast<std::ptrdiff_t>(pos),
+                       text.begin() + static_cast<std::ptrdiff_t>(quote), '\n'));
+        pos = quote + 1;
+        if (pos < n && text[pos] == '"') {
+          doubled = true;
           ++pos;
+          continue;
+        }
+        const std::string_view inside = text.substr(first, quote - first);
+        if (!doubled) {
+          record.fields.push_back(inside);
           break;
         }
-        if (text[pos] == '\n') ++line;
-        field += text[pos];
+        std::string& field = record.unescaped.emplace_back();
+        for (std::size_t i = 0; i < inside.size(); ++i) {
+          field += inside[i];
+          if (inside[i] == '"') ++i;  // the second quote of a pair
+        }
+        record.fields.push_back(field);
+        break;
       }
       while (pos < n && is_blank(text[pos])) ++pos;
       if (pos < n && text[pos] != ',' && text[pos] != '\n') {
@@ -79,8 +88,8 @@ bool read_record(std::string_view text, std::size_t& pos, std::size_t& line, Rec
         return false;
       }
     } else {
-      while (pos < n && text[pos] != ',' && text[pos] != '\n') ++pos;
-      field.assign(trim(text.substr(start, pos - start)));
+      pos = std::min(text.find_first_of(",\n", pos), n);
+      record.fields.push_back(trim(text.substr(start, pos - start)));
     }
     if (pos >= n || text[pos] == '\n') {
       ++pos;
@@ -152,8 +161,7 @@ std::optional<CsvTable> parse_csv_table(const std::string& path, std::string_vie
     }
     if (record.blank()) continue;
     if (!have_header) {
-      for (std::size_t i = 0; i < record.size; ++i) {
-        const std::string& name = record.fields[i];
+      for (const std::string_view name : record.fields) {
         if (name.empty()) {
           *error = fmt::format("{}:{}: empty column name in the header", path, record_line);
           return std::nullopt;
@@ -163,18 +171,18 @@ std::optional<CsvTable> parse_csv_table(const std::string& path, std::string_vie
                                record_line, name);
           return std::nullopt;
         }
-        table.columns.push_back(name);
+        table.columns.emplace_back(name);
       }
       have_header = true;
       continue;
     }
-    if (record.size != table.columns.size()) {
+    if (record.fields.size() != table.columns.size()) {
       *error = fmt::format("{}:{}: row has {} fields, the header has {}", path, record_line,
-                           record.size, table.columns.size());
+                           record.fields.size(), table.columns.size());
       return std::nullopt;
     }
-    std::vector<double> row(record.size);
-    for (std::size_t i = 0; i < record.size; ++i) {
+    std::vector<double> row(record.fields.size());
+    for (std::size_t i = 0; i < row.size(); ++i) {
       if (!parse_number(record.fields[i], &row[i])) {
         *error = fmt::format("{}:{}: '{}' in column '{}' is not a number", path, record_line,
                              record.fields[i], table.columns[i]);
