@@ -2,10 +2,12 @@
 # Builds the libFuzzer targets with clang and ASan/UBSan and runs each for a bounded time.
 # Usage: scripts/fuzz.sh [SECONDS] [TARGET[=SECONDS]...]
 #   SECONDS          time per target unless a target gives its own (default 600)
-#   TARGET=SECONDS   run only the named targets (deck_reader, expression, compare), each for its
-#                    own time; e.g. scripts/fuzz.sh deck_reader=1800 compare=600
+#   TARGET[=SECONDS] run only the named targets (deck_reader, expression, compare, csv_table,
+#                    report_data), each for its own time or SECONDS; e.g.
+#                    scripts/fuzz.sh deck_reader=1800 compare=600, scripts/fuzz.sh 60 csv_table
 # Seeds: decks/ and tests/diagnostics/ (deck_reader, expression), the golden tables of
-# decks/verification/ and tests/compare/ (compare). The corpus grows in fuzz-out/<target>/corpus;
+# decks/verification/ and tests/compare/ (compare, csv_table, report_data), and tables with
+# quoted names. The corpus grows in fuzz-out/<target>/corpus;
 # crashing inputs are kept in fuzz-out/<target>/ (crash-*, leak-*, timeout-*) and the whole
 # libFuzzer log in fuzz-out/<target>/fuzz.log.
 set -euo pipefail
@@ -16,7 +18,7 @@ declare -A seconds=()
 for arg in "$@"; do
   case "$arg" in
     [0-9]*) default_seconds=$arg ;;
-    deck_reader* | expression* | compare*)
+    deck_reader* | expression* | compare* | csv_table* | report_data*)
       name=${arg%%=*}
       targets+=("$name")
       [ "$name" = "$arg" ] || seconds[$name]=${arg#*=}
@@ -24,7 +26,7 @@ for arg in "$@"; do
     *) echo "fuzz.sh: unknown argument '$arg'" >&2; exit 2 ;;
   esac
 done
-[ ${#targets[@]} -gt 0 ] || targets=(deck_reader expression compare)
+[ ${#targets[@]} -gt 0 ] || targets=(deck_reader expression compare csv_table report_data)
 
 command -v clang++ >/dev/null || { apt-get install -y -qq clang >/dev/null; }
 # libFuzzer's runtime comes with Debian's libclang-rt-dev.
@@ -59,6 +61,28 @@ seed() {
         { echo; cat "$golden"; echo '%%'; cat "$golden"; } \
           > "$corpus/$(basename "$(dirname "$golden")").cmp"
       done
+      ;;
+    csv_table)
+      cp tests/compare/*.csv "$corpus"/
+      for golden in decks/verification/*/golden.csv; do
+        cp "$golden" "$corpus/$(basename "$(dirname "$golden")").csv"
+      done
+      # Names quoted as the history writer quotes them (docs/history-table.md).
+      printf 'step,increment,step_time,total_time,"CTF1@Weld, left","a ""b""","two\nlines"\n1,0,0,0,0,nan,-inf\n' \
+        > "$corpus/quoted.csv"
+      ;;
+    report_data)
+      # fuzz_report_data.cpp's input: the job name, how the run ended, the history, '%%', the
+      # golden table.
+      for golden in tests/compare/golden_*.csv; do
+        { echo 'job'; echo 'COMPLETED'; cat tests/compare/result.csv; echo '%%'; cat "$golden"; } \
+          > "$corpus/$(basename "$golden" .csv).rep"
+      done
+      { printf 'weld\377\n'; echo 'FAILED: interrupted by SIGTERM'; cat tests/compare/result.csv; } \
+        > "$corpus/latin1.rep"
+      { echo 'w$_$'; echo 'COMPLETED'
+        printf 'step,increment,step_time,total_time,"CTF1@Weld, left"\n1,0,0,0,nan\n1,1,1,1,inf\n'; } \
+        > "$corpus/quoted.rep"
       ;;
   esac
 }

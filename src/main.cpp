@@ -1,5 +1,5 @@
 // The clinch command line (cli-contract.md): `run`, `check`, `compare`, `study` and `report`.
-// Usage errors exit with 3.
+// Usage errors, and standard output that cannot be written, exit with 3.
 #include <csignal>
 #include <iostream>
 
@@ -10,14 +10,12 @@
 #include "src/cli/huge_pages.hpp"
 #include "src/cli/report_command.hpp"
 #include "src/cli/run_command.hpp"
+#include "src/cli/standard_output.hpp"
 #include "src/cli/study_command.hpp"
 
-int main(int argc, char** argv) {
-  // A write past the file-size limit (ulimit -f) then fails with EFBIG, and the output's own error
-  // path reports which file could not be written (exit 3, cli-contract.md), instead of SIGXFSZ
-  // ending the process without a word.
-  std::signal(SIGXFSZ, SIG_IGN);
-  clinch::use_huge_pages(argv);
+namespace {
+
+int run_command_line(int argc, char** argv) {
   CLI::App app{"clinch: implicit analysis of connector elements from Abaqus-style keyword decks"};
   app.set_version_flag("--version", std::string("clinch ") + CLINCH_VERSION);
   app.require_subcommand(1);
@@ -87,7 +85,8 @@ int main(int argc, char** argv) {
       "estimated by Richardson extrapolation; writes <job>.study.csv, <job>.study-columns.csv "
       "and the work-precision plot <job>.study.svg into the work directory; exit 0 = at least "
       "two settings compared, 1 = deck errors (nothing run), 2 = fewer than two settings "
-      "completed, 3 = usage or I/O error");
+      "completed, or stopped by SIGINT or SIGTERM (forwarded to the running settings; the table "
+      "of what completed is written), 3 = usage or I/O error");
   study->add_option("DECK", study_options.deck, "the deck (.inp), or - for standard input")
       ->required();
   study->add_option("--work", study_options.work_dir,
@@ -98,17 +97,17 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   study->add_option("--ratio", study_options.ratio,
                     "each setting's increments are the previous one's divided by this")
-      ->check(CLI::Range(1.01, 1000.0))
+      ->check(CLI::Validator(clinch::check_ratio, "RATIO"))
       ->capture_default_str();
   study->add_option("--budget", study_options.budget_seconds,
                     "wall-time budget in seconds: a finer setting starts only when its predicted "
                     "time fits")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Validator(clinch::check_positive, "SECONDS"));
   study->add_option("--rtol", study_options.rtol,
                     "name the cheapest setting (least work: increment attempts plus Newton "
                     "iterations) whose estimated "
                     "relative error is below this")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Validator(clinch::check_positive, "RTOL"));
   study->add_option("--jobs", study_options.jobs, "runs at once (default: one per core)")
       ->check(CLI::Range(1, 1024));
   study->add_option("--columns", study_options.columns,
@@ -177,4 +176,18 @@ int main(int argc, char** argv) {
   if (study->parsed()) return clinch::run_study(study_options);
   if (report->parsed()) return clinch::run_report(report_options);
   return 3;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // A write past the file-size limit (ulimit -f) then fails with EFBIG, and the output's own error
+  // path reports which file could not be written (exit 3, cli-contract.md), instead of SIGXFSZ
+  // ending the process without a word.
+  std::signal(SIGXFSZ, SIG_IGN);
+  clinch::use_huge_pages(argv);
+  const int status = run_command_line(argc, argv);
+  // Output that did not reach standard output (a full disk, /dev/full) is an I/O error, whatever
+  // the command found (cli-contract.md: exit 3).
+  return clinch::standard_output_written() ? status : 3;
 }

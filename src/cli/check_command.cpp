@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "parser/deck_reader.hpp"
 #include "parser/diagnostic_render.hpp"
@@ -20,11 +21,15 @@ int run_check(const std::string& deck_path, DiagnosticFormat format) {
   std::string io_error;
   if (read_deck_file(deck_path, sources, model, sink, &io_error) == ReadStatus::IoError) {
     if (format == DiagnosticFormat::Json) {
-      std::cout << fmt::format(
-          "[{{\"file\": null, \"line\": null, \"column\": null, \"severity\": \"error\", "
-          "\"code\": \"E0108\", \"name\": \"file-not-found\", \"message\": \"{}\", "
-          "\"notes\": []}}]\n",
-          io_error);
+      // The message names the path, which may hold quotes or bytes that are not UTF-8: built as
+      // JSON, not pasted into it.
+      const nlohmann::json diagnostic = {
+          {"file", nullptr},     {"line", nullptr},       {"column", nullptr},
+          {"end_column", nullptr}, {"severity", "error"}, {"code", "E0108"},
+          {"name", "file-not-found"}, {"message", io_error}, {"notes", nlohmann::json::array()}};
+      std::cout << nlohmann::json::array({diagnostic}).dump(
+                       2, ' ', false, nlohmann::json::error_handler_t::replace)
+                << "\n";
     }
     std::cerr << "clinch: error: " << io_error << "\n";
     return 3;

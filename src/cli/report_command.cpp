@@ -112,7 +112,7 @@ int run_report(const ReportOptions& options) {
   const std::string data_path = page + ".json";
   {
     std::ofstream out(data_path);
-    out << report_data(inputs).dump();
+    out << report_data_text(inputs);
     out.close();
     if (!out) {
       std::cerr << fmt::format("clinch: error: cannot write '{}'\n", data_path);
@@ -121,6 +121,10 @@ int run_report(const ReportOptions& options) {
   }
   std::vector<std::string> script_args = {data_path, page};
   if (options.quiet) script_args.push_back("--quiet");
+  if (inputs.study_csv) {
+    script_args.push_back("--study");
+    script_args.push_back(*inputs.study_csv);
+  }
   const bool drawn = run_plot_script("report_page.py", script_args, &error);
   fs::remove(data_path, ec);
   if (!drawn) {

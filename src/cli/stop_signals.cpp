@@ -33,4 +33,11 @@ const char* stop_signal_name() {
   }
 }
 
+int stop_signal_number() { return received; }
+
+void release_stop_signals() {
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+}
+
 }  // namespace clinch

@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 #include <re2/re2.h>
 
+#include <charconv>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -12,6 +14,7 @@
 #include "parser/deck_reader.hpp"
 #include "parser/diagnostic_render.hpp"
 #include "src/check/validate.hpp"
+#include "src/cli/stop_signals.hpp"
 #include "src/output/csv_table.hpp"
 #include "src/output/progress.hpp"
 #include "src/output/table_comparison.hpp"
@@ -24,7 +27,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// An interrupted study exits like one with too few settings: it did not finish (2).
 constexpr int kExitStudied = 0, kExitDeckErrors = 1, kExitTooFewRuns = 2, kExitUsage = 3;
+// --ratio's range: below 1.01 successive settings hardly differ, and above 1000 the third setting
+// already takes 10^6 times the deck's increments.
+constexpr double kMinimumRatio = 1.01, kMaximumRatio = 1000.0;
 
 // Stop/lock and stick/slip status columns hold codes, not quantities that converge with the
 // increment size: a status that switches one increment later would read as a 100 % error. They
@@ -116,7 +123,34 @@ std::vector<std::string> estimated_columns(const CsvTable& table, const re2::RE2
   return names;
 }
 
+// The value of `text` when all of it is a finite number.
+std::optional<double> finite_number(const std::string& text) {
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) {
+    return std::nullopt;
+  }
+  return value;
+}
+
 }  // namespace
+
+std::string check_ratio(const std::string& text) {
+  const std::optional<double> value = finite_number(text);
+  if (!value || *value < kMinimumRatio || *value > kMaximumRatio) {
+    return fmt::format("'{}' is not a ratio: a finite number from {:g} to {:g} is needed", text,
+                       kMinimumRatio, kMaximumRatio);
+  }
+  return {};
+}
+
+std::string check_positive(const std::string& text) {
+  const std::optional<double> value = finite_number(text);
+  if (!value || *value <= 0.0) {
+    return fmt::format("'{}' is not a finite number > 0", text);
+  }
+  return {};
+}
 
 int run_study(const StudyOptions& options) {
   SourceManager sources;
@@ -186,7 +220,13 @@ int run_study(const StudyOptions& options) {
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()));
     };
   }
+  // SIGINT and SIGTERM while the settings run stop them cleanly (ladder_runner.hpp) and the
+  // study reports what completed; before and after, they have their default effect.
+  catch_stop_signals();
+  run_options.stop_signal = stop_signal_number;
   const std::vector<SettingOutcome> outcomes = run_ladder(*ladder, run_options);
+  const char* const stopped_by = stop_signal_name();
+  release_stop_signals();
   progress.clear();
 
   StudyResult result;
@@ -231,7 +271,8 @@ int run_study(const StudyOptions& options) {
     std::cerr << "clinch: error: " << error << "\n";
     return kExitUsage;
   }
-  const bool plotted = options.plot && tables.size() >= 2;
+  // An interrupted study is left as soon as what it has is written: no plot.
+  const bool plotted = options.plot && tables.size() >= 2 && stopped_by == nullptr;
   const std::string svg = (work / (job + ".study.svg")).string();
   if (plotted && !run_plot_script("work_precision_plot.py", {settings_csv, svg}, &error)) {
     std::cerr << "clinch: error: " << error << " (--no-plot skips the plot)\n";
@@ -239,6 +280,11 @@ int run_study(const StudyOptions& options) {
   }
   if (!options.quiet) {
     std::cout << fmt::format("wrote {}{}\n", settings_csv, plotted ? ", " + svg : "");
+  }
+  if (stopped_by != nullptr) {
+    std::cerr << fmt::format("clinch: error: interrupted by {}: {} of {} settings completed\n",
+                             stopped_by, tables.size(), ladder->size());
+    return kExitTooFewRuns;
   }
   if (tables.size() < 2) {
     std::cerr << fmt::format("clinch: error: {} of {} settings completed: no error estimate\n",

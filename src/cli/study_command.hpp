@@ -5,7 +5,8 @@
 // finest setting, and estimated by Richardson extrapolation where an order shows). Writes
 // DIR/<job>.study.csv, DIR/<job>.study-columns.csv and the work-precision plot
 // DIR/<job>.study.svg. Exit 0 = the study compared at least two settings, 1 = the deck has errors
-// (nothing was run), 2 = fewer than two settings completed, 3 = usage or I/O error.
+// (nothing was run), 2 = fewer than two settings completed or the study was stopped by SIGINT or
+// SIGTERM (docs/study-and-report.md "Stopping a study"), 3 = usage or I/O error.
 #pragma once
 
 #include <optional>
@@ -25,6 +26,13 @@ struct StudyOptions {
   bool plot = true;
   bool quiet = false;
 };
+
+// Check a --ratio value (a finite number from 1.01 to 1000) and a --budget or --rtol value (a
+// finite number > 0). Each returns an empty string when the value is one, else the message (the
+// CLI11 validator convention): NaN compares false with every bound, so a range test alone lets it
+// through.
+std::string check_ratio(const std::string& text);
+std::string check_positive(const std::string& text);
 
 int run_study(const StudyOptions& options);
 

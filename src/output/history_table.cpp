@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "src/output/csv_table.hpp"
+
 namespace clinch {
 
 bool HistoryTable::open(const std::filesystem::path& path, std::vector<std::string> columns,
@@ -18,7 +20,7 @@ bool HistoryTable::open(const std::filesystem::path& path, std::vector<std::stri
   }
   for (const std::string& column : columns_) {
     line_ += ',';
-    line_ += column;
+    line_ += csv_field(column);  // a set name may hold a comma (RFC 4180 quoting)
   }
   line_ += '\n';
   if (!file_.write(line_)) {

@@ -1,10 +1,26 @@
 #include "src/report/report_data.hpp"
 
+#include <cmath>
+
 namespace clinch {
 namespace {
 
+// JSON has no NaN or infinity: those are written as the strings "nan", "inf" and "-inf", which
+// report_page.py reads back as numbers (a history row of a run that diverged holds them).
+nlohmann::json number(double value) {
+  if (std::isfinite(value)) return value;
+  if (std::isnan(value)) return "nan";
+  return value > 0.0 ? "inf" : "-inf";
+}
+
 nlohmann::json table_json(const CsvTable& table) {
-  return {{"path", table.path}, {"columns", table.columns}, {"rows", table.rows}};
+  nlohmann::json rows = nlohmann::json::array();
+  for (const std::vector<double>& row : table.rows) {
+    nlohmann::json values = nlohmann::json::array();
+    for (double v : row) values.push_back(number(v));
+    rows.push_back(std::move(values));
+  }
+  return {{"path", table.path}, {"columns", table.columns}, {"rows", std::move(rows)}};
 }
 
 const char* verdict_text(ColumnVerdict verdict) {
@@ -34,8 +50,8 @@ nlohmann::json report_data(const ReportInputs& in) {
                           {"attempt", a.attempt},
                           {"cut_back", a.cut_back},
                           {"iterations", a.total_iterations},
-                          {"total_time", a.total_time},
-                          {"time_increment", a.time_increment}});
+                          {"total_time", number(a.total_time)},
+                          {"time_increment", number(a.time_increment)}});
     }
     data["ending"] = in.status->ending;
   }
@@ -47,16 +63,16 @@ nlohmann::json report_data(const ReportInputs& in) {
                             {"increment", r.increment},
                             {"attempt", r.attempt},
                             {"iteration", r.iteration},
-                            {"residual", r.residual_norm},
-                            {"correction", r.correction_norm},
-                            {"constraint_violation", r.constraint_violation}});
+                            {"residual", number(r.residual_norm)},
+                            {"correction", number(r.correction_norm)},
+                            {"constraint_violation", number(r.constraint_violation)}});
     }
   }
   data["iterations"] = iterations;
   if (in.golden != nullptr && in.comparison != nullptr) {
     nlohmann::json golden = table_json(*in.golden);
-    golden["rtol"] = in.compare_options.rtol;
-    golden["atol"] = in.compare_options.atol;
+    golden["rtol"] = number(in.compare_options.rtol);
+    golden["atol"] = number(in.compare_options.atol);
     nlohmann::json columns = nlohmann::json::array();
     for (const ColumnComparison& c : in.comparison->columns) {
       nlohmann::json column = {{"name", c.name},
@@ -64,11 +80,11 @@ nlohmann::json report_data(const ReportInputs& in) {
                                {"failed_rows", c.failed_rows},
                                {"compared_rows", c.compared_rows}};
       if (c.has_worst) {
-        column["worst"] = {{"total_time", c.total_time},
-                           {"result", c.result},
-                           {"golden", c.golden},
-                           {"difference", c.difference},
-                           {"allowed", c.allowed}};
+        column["worst"] = {{"total_time", number(c.total_time)},
+                           {"result", number(c.result)},
+                           {"golden", number(c.golden)},
+                           {"difference", number(c.difference)},
+                           {"allowed", number(c.allowed)}};
       }
       columns.push_back(column);
     }
@@ -78,6 +94,12 @@ nlohmann::json report_data(const ReportInputs& in) {
   }
   if (in.study_csv) data["study_csv"] = *in.study_csv;
   return data;
+}
+
+std::string report_data_text(const ReportInputs& inputs) {
+  // Job, path and column names come from file names and decks in any encoding; the bytes that
+  // are not UTF-8 become U+FFFD rather than make the writer throw.
+  return report_data(inputs).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 }  // namespace clinch

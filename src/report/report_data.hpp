@@ -1,7 +1,8 @@
 // The data of a `clinch report` page as one JSON document for report_page.py: the history table,
 // the increment attempts of the status file, the Newton iterations of the log, and the golden
 // table with the comparison of each of its columns (tolerance and worst deviation, computed by
-// the same code as `clinch compare`).
+// the same code as `clinch compare`). A study table is passed to report_page.py by its path on
+// the command line, which keeps a file name that is not UTF-8 exact.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -28,6 +29,11 @@ struct ReportInputs {
   int max_connectors = 0;  // connectors (and nodes) drawn, in history order
 };
 
+// Numbers that are not finite are the strings "nan", "inf" and "-inf".
 nlohmann::json report_data(const ReportInputs& inputs);
+
+// report_data() as JSON text, valid UTF-8 whatever the names hold: bytes that are not UTF-8 are
+// replaced by U+FFFD.
+std::string report_data_text(const ReportInputs& inputs);
 
 }  // namespace clinch

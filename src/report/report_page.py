@@ -9,7 +9,7 @@ norms, log scale) with cutbacks marked; per golden column, the result over the g
 with the tolerance band of `clinch compare` and the worst deviation marked; the work-precision
 plot of a study.
 
-Usage: report_page.py DATA.json PAGE.html [--quiet]
+Usage: report_page.py DATA.json PAGE.html [--quiet] [--study STUDY.csv]
 Exit 4 when matplotlib cannot be imported (clinch then tries another interpreter).
 """
 import html
@@ -31,6 +31,7 @@ except ImportError:
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import work_precision_plot  # noqa: E402
+from work_precision_plot import plain  # noqa: E402
 
 matplotlib.rcParams["svg.fonttype"] = "none"
 
@@ -76,7 +77,7 @@ class Column:
         if self.variable in ("CTF", "CEF", "CVF", "CRF", "CSF") and self.component >= 4:
             what = what.replace("force", "moment")
         part = f", component {self.component}" if self.component else ""
-        return f"{self.name}: {what}{self.derived}{part}{self.unit()}"
+        return plain(f"{self.name}: {what}{self.derived}{part}{self.unit()}")
 
 
 class Page:
@@ -138,7 +139,7 @@ def force_motion(page, history, where, columns):
                     label=f"{c.variable}{component} ({name})", gid=f"curve-{variable}")
         ax.set_xlabel(motion.label())
         ax.set_ylabel(force.label())
-        ax.set_title(f"connector {where}: force against motion, component {component}",
+        ax.set_title(plain(f"connector {where}: force against motion, component {component}"),
                      fontsize=10)
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=8)
@@ -161,21 +162,27 @@ def time_histories(page, history, where, columns, kind):
     for ax, (key, members) in zip(axes, families):
         for c in members:
             t, v = series(history, c)
-            ax.plot(t, v, label=c.name, gid=f"history-{c.name}")
+            ax.plot(t, v, label=plain(c.name), gid=f"history-{c.name}")
         for t_end in ends:
             ax.axvline(t_end, color="0.7", linewidth=0.8)
         variable = members[0].variable
-        ax.set_ylabel(f"{key}{members[0].unit()}", fontsize=9)
-        ax.set_title(MEANING.get(variable, variable), fontsize=9)
+        ax.set_ylabel(plain(f"{key}{members[0].unit()}"), fontsize=9)
+        ax.set_title(plain(MEANING.get(variable, variable)), fontsize=9)
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=7, loc="best")
     axes[-1].set_xlabel("total time")
     what = "connector" if kind == "connector" else "node"
-    axes[0].set_title(f"{what} {where}: {axes[0].get_title()}", fontsize=9)
+    axes[0].set_title(plain(f"{what} {where}: ") + axes[0].get_title(), fontsize=9)
     fig.tight_layout()
     page.figure(fig, f"history-{kind}", f"{what.capitalize()} {where}: "
                 + ", ".join(c.name for c in columns) + " against total time (grey lines: step "
                 "ends)", where=where, panels=len(families))
+
+
+def drawable(norm):
+    """The norm where a log scale can show it: zero norms (increments whose motions are all
+    prescribed) and NaN or infinite ones (a Newton iteration that diverged) are left out."""
+    return norm if 0.0 < norm < math.inf else math.nan
 
 
 def convergence(page, data):
@@ -198,8 +205,8 @@ def convergence(page, data):
         first = slot + 1
         for r in records or [None]:
             x.append(slot := slot + 1)
-            residual.append(r["residual"] if r and r["residual"] > 0.0 else math.nan)
-            correction.append(r["correction"] if r and r["correction"] > 0.0 else math.nan)
+            residual.append(drawable(r["residual"]) if r else math.nan)
+            correction.append(drawable(r["correction"]) if r else math.nan)
         spans.append((key, first, slot))
         # A gap between attempts: each attempt's iterations make their own line.
         x.append(slot + 0.5)
@@ -219,8 +226,8 @@ def convergence(page, data):
         ax.set_yscale("log")
         ax.set_ylabel("norm (log scale)")
     else:
-        ax.text(0.5, 0.5, "every norm is zero (all motions prescribed): nothing to draw on a "
-                "log scale", transform=ax.transAxes, ha="center", fontsize=8)
+        ax.text(0.5, 0.5, "no norm is positive and finite (zero: all motions prescribed): "
+                "nothing to draw on a log scale", transform=ax.transAxes, ha="center", fontsize=8)
         ax.set_ylabel("norm")
         ax.set_yticks([])
     ax.set_xlabel("Newton iteration (counted over the run; grey lines: a new increment attempt)")
@@ -230,7 +237,7 @@ def convergence(page, data):
     ax.legend(fontsize=8)
     fig.tight_layout()
     page.figure(fig, "convergence", "Residual and correction norms of every Newton iteration "
-                "(from the .log); zero norms are not drawn; red bands: attempts that were cut "
+                "(from the .log); zero and non-finite norms are not drawn; red bands: attempts that were cut "
                 "back (from the .sta)", attempts=len(spans), cutbacks=cutbacks)
 
 
@@ -258,10 +265,10 @@ def golden_overlays(page, history, golden, columns_by_name):
         gv = [row[gi] for row in golden["rows"]]
         fig = Figure(figsize=(6.4, 4.6))
         top, bottom = fig.subplots(2, 1, sharex=True, gridspec_kw={"height_ratios": [3, 2]})
-        label = column.label() if column else name
+        label = column.label() if column else plain(name)
         if column is None:
-            top.text(0.5, 0.5, f"{name}: no such column in the run", transform=top.transAxes,
-                     ha="center")
+            top.text(0.5, 0.5, plain(f"{name}: no such column in the run"),
+                     transform=top.transAxes, ha="center")
         else:
             t, v = series(history, column)
             top.plot(t, v, "-", color="C0", label="run", gid="result")
@@ -291,7 +298,7 @@ def golden_overlays(page, history, golden, columns_by_name):
             bottom.text(0.01, 0.97, text, transform=bottom.transAxes, va="top", fontsize=8,
                         color="C3", gid="worst-deviation-text",
                         bbox={"facecolor": "white", "alpha": 0.8, "edgecolor": "none"})
-        top.set_ylabel(name, fontsize=9)
+        top.set_ylabel(plain(name), fontsize=9)
         top.set_title(f"{label}: {comparison['verdict'].upper()} "
                       f"(rtol {rtol:g}, atol {atol:g})", fontsize=9)
         top.grid(True, alpha=0.3)
@@ -348,13 +355,41 @@ td,th{border:1px solid #ccc;padding:.2em .6em;text-align:left;font-size:.9em}
 tr.chosen{background:#e3f4e3}"""
 
 
+def number(value):
+    """A number of the page data: clinch writes NaN and infinities as "nan", "inf", "-inf"."""
+    return float(value) if isinstance(value, str) else value
+
+
+def read_data(path):
+    with open(path, encoding="utf-8") as f:
+        data = json.load(f)
+    tables = [data["history"]] + ([data["golden"]] if "golden" in data else [])
+    for table in tables:
+        table["rows"] = [[number(v) for v in row] for row in table["rows"]]
+    for record in data["iterations"]:
+        for key in ("residual", "correction", "constraint_violation"):
+            record[key] = number(record[key])
+    for comparison in data.get("golden", {}).get("comparison", []):
+        worst = comparison.get("worst")
+        if worst is not None:
+            for key in worst:
+                worst[key] = number(worst[key])
+    return data
+
+
 def main():
-    args = [a for a in sys.argv[1:] if a != "--quiet"]
+    args, study_csv, rest = [], None, sys.argv[1:]
+    while rest:
+        arg = rest.pop(0)
+        if arg == "--study" and rest:
+            # The path as given, not through the JSON text, which holds names only as UTF-8.
+            study_csv = rest.pop(0)
+        elif arg != "--quiet":
+            args.append(arg)
     if len(args) != 2:
         print(__doc__, file=sys.stderr)
         return 3
-    with open(args[0]) as f:
-        data = json.load(f)
+    data = read_data(args[0])
     history = data["history"]
     history["time"] = history["columns"].index("total_time")
     columns = [Column(n, i) for i, n in enumerate(history["columns"]) if n not in KEYS]
@@ -400,8 +435,8 @@ def main():
                  "atol + rtol&middot;max(|g|, largest |g| of the column), as "
                  "<code>clinch compare</code>.</p>")
         golden_overlays(page, history, golden, {c.name: c for c in columns})
-    if "study_csv" in data:
-        settings = work_precision_plot.read_settings(data["study_csv"])
+    if study_csv is not None:
+        settings = work_precision_plot.read_settings(study_csv)
         page.add(f"<h2>Work precision: {html.escape(data['study_csv'])}</h2>")
         page.figure(work_precision_plot.figure(settings), "work-precision",
                     "Estimated error of each setting of the study against its wall time",
@@ -409,7 +444,7 @@ def main():
         page.add(settings_table(settings))
     if page.progress:
         sys.stderr.write("\r" + " " * 50 + "\r")
-    with open(args[1], "w") as f:
+    with open(args[1], "w", encoding="utf-8") as f:
         f.write("<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\">"
                 f"<title>clinch report: {html.escape(data['job'])}</title>"
                 f"<style>{STYLE}</style></head><body>\n" + "\n".join(page.parts)

@@ -25,8 +25,17 @@ matplotlib.rcParams["svg.fonttype"] = "none"
 matplotlib.rcParams["svg.hashsalt"] = "clinch-study"
 
 
+def plain(text):
+    """`text` as matplotlib shows it literally: a pair of '$' would start mathematics (or fail to
+    parse), so every '$' is escaped; an escaped '$' never starts mathematics, and matplotlib
+    turns it back into '$' (outside mathematics no other character is special)."""
+    return str(text).replace("$", r"\$")
+
+
 def read_settings(path):
-    with open(path, newline="") as f:
+    # The study writes paths and column names as the bytes they are; those that are not UTF-8
+    # are shown as U+FFFD rather than stop the plot.
+    with open(path, newline="", encoding="utf-8", errors="replace") as f:
         return list(csv.DictReader(f))
 
 
@@ -84,7 +93,7 @@ def figure(settings):
     ax.set_xlabel("wall time of the run [s]")
     ax.set_ylabel("relative error, worst history column [-]")
     deck = os.path.basename(settings[0]["deck"]) if settings else ""
-    title = f"work precision: {deck}"
+    title = plain(f"work precision: {deck}")
     if failed:
         title += f" ({len(failed)} setting{'s' if len(failed) > 1 else ''} failed)"
     ax.set_title(title, fontsize=10)

@@ -2,17 +2,17 @@
 
 #include <fcntl.h>
 #include <fmt/format.h>
-#include <spawn.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstring>
 #include <filesystem>
 #include <thread>
-
-extern char** environ;
 
 namespace clinch {
 namespace {
@@ -25,7 +25,10 @@ struct Running {
   Clock::time_point start;
 };
 
-// Starts `clinch run --quiet` on one setting with stdout and stderr in <out_dir>/run.out.
+// Starts `clinch run --quiet` on one setting with stdout and stderr in <out_dir>/run.out. The
+// child stops (SIGTERM, which `clinch run` handles cleanly) when the study ends in any way, even
+// by SIGKILL, and runs in a process group of its own, so that a Ctrl-C on the terminal reaches it
+// once, forwarded by the study, rather than twice.
 std::optional<pid_t> spawn_run(const std::string& clinch, const LadderSetting& s,
                                std::string* error) {
   std::error_code ec;
@@ -35,24 +38,62 @@ std::optional<pid_t> spawn_run(const std::string& clinch, const LadderSetting& s
     return std::nullopt;
   }
   const std::string out = (std::filesystem::path(s.out_dir) / "run.out").string();
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, out.c_str(),
-                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
   std::vector<std::string> args = {clinch,    "run",   "--quiet", "--out",
                                    s.out_dir, "--job", s.job,     s.deck};
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
-  pid_t pid = 0;
-  const int rc = posix_spawn(&pid, clinch.c_str(), &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (rc != 0) {
-    *error = fmt::format("cannot start '{}': {}", clinch, std::strerror(rc));
+  const int fd = open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) {
+    *error = fmt::format("cannot write '{}': {}", out, std::strerror(errno));
+    return std::nullopt;
+  }
+  // The stop signals are blocked across fork: a signal forwarded to a child that has not yet
+  // reached exec must not run the study's handler in it (and be lost), but kill it.
+  sigset_t stop_signals, previous;
+  sigemptyset(&stop_signals);
+  sigaddset(&stop_signals, SIGINT);
+  sigaddset(&stop_signals, SIGTERM);
+  sigprocmask(SIG_BLOCK, &stop_signals, &previous);
+  const pid_t parent = getpid();
+  const pid_t pid = fork();
+  if (pid == 0) {
+    // Only async-signal-safe calls between fork and exec.
+    struct sigaction default_action {};
+    default_action.sa_handler = SIG_DFL;
+    sigemptyset(&default_action.sa_mask);
+    sigaction(SIGINT, &default_action, nullptr);
+    sigaction(SIGTERM, &default_action, nullptr);
+    prctl(PR_SET_PDEATHSIG, SIGTERM);
+    if (getppid() != parent) _exit(127);  // the study died before prctl took effect
+    setpgid(0, 0);
+    if (dup2(fd, STDOUT_FILENO) < 0 || dup2(fd, STDERR_FILENO) < 0) _exit(127);
+    // dup2 onto itself (a study started with stdout closed) keeps close-on-exec: cleared here.
+    fcntl(STDOUT_FILENO, F_SETFD, 0);
+    fcntl(STDERR_FILENO, F_SETFD, 0);
+    sigprocmask(SIG_SETMASK, &previous, nullptr);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  const int fork_error = errno;
+  sigprocmask(SIG_SETMASK, &previous, nullptr);
+  close(fd);
+  if (pid < 0) {
+    *error = fmt::format("cannot start '{}': {}", clinch, std::strerror(fork_error));
     return std::nullopt;
   }
   return pid;
+}
+
+std::string signal_name(int signal) {
+  switch (signal) {
+    case SIGINT:
+      return "SIGINT";
+    case SIGTERM:
+      return "SIGTERM";
+    default:
+      return fmt::format("signal {}", signal);
+  }
 }
 
 }  // namespace
@@ -88,7 +129,18 @@ std::vector<SettingOutcome> run_ladder(const std::vector<LadderSetting>& setting
     return std::nullopt;  // nothing measured yet: wait
   };
 
+  int stop_signal = 0;  // the signal that stopped the study, once forwarded
   while (next < settings.size() || !running.empty()) {
+    if (stop_signal == 0 && options.stop_signal && (stop_signal = options.stop_signal()) != 0) {
+      // Each running child gets the signal once and stops as `clinch run` does; the settings not
+      // started are not run.
+      for (const Running& r : running) kill(r.pid, stop_signal);
+      for (std::size_t k = next; k < settings.size(); ++k) {
+        outcomes[k].note = fmt::format("not run: the study was interrupted by {}",
+                                       signal_name(stop_signal));
+      }
+      next = settings.size();
+    }
     while (!budget_spent && next < settings.size() &&
            static_cast<int>(running.size()) < std::max(1, options.jobs)) {
       const std::optional<bool> start = may_start(next);

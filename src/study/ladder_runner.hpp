@@ -3,6 +3,7 @@
 // get from `clinch run` on the scaled deck, and a run that fails or crashes cannot take the study
 // down with it. With a time budget, a finer setting is started only when the cost observed so far
 // (each setting about `cost_ratio` times the previous one) says it can end within the budget.
+// A child never outlives the study: it is sent SIGTERM when the study ends, however it ends.
 #pragma once
 
 #include <functional>
@@ -35,6 +36,10 @@ struct LadderOptions {
   double cost_ratio = 2.0;
   // Called a few times a second while runs go on, and once when each ends.
   std::function<void(const std::vector<SettingOutcome>&)> on_progress;
+  // Asked as often: the number of a signal that stops the study, 0 while none. Once it is not 0,
+  // the signal is sent to every running child, which stops as `clinch run` does on it, no
+  // setting is started any more, and run_ladder returns when the children have ended.
+  std::function<int()> stop_signal;
 };
 
 std::vector<SettingOutcome> run_ladder(const std::vector<LadderSetting>& settings,

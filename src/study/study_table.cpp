@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <fstream>
 
+#include "src/output/csv_table.hpp"
+
 namespace clinch {
 namespace {
 
@@ -38,14 +40,6 @@ const char* order_text(OrderStatus status) {
       return "zero-column";
   }
   return "";
-}
-
-// CSV field: quoted when it holds a comma or a quote.
-std::string csv_field(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
 }
 
 bool write_file(const std::string& path, const std::string& text, std::string* error) {

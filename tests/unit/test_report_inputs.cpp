@@ -3,6 +3,7 @@
 // a golden comparison.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -90,6 +91,41 @@ TEST(ReportData, GoldenWorstDeviationAndAttempts) {
   EXPECT_DOUBLE_EQ(a["worst"]["allowed"], 0.2);
   EXPECT_EQ(data["iterations"].size(), 0u);
   EXPECT_FALSE(data.contains("study_csv"));
+}
+
+// A job or column name from a file name in Latin-1 (0xFF is never UTF-8): the data is still
+// written, as valid JSON, with U+FFFD where the byte was.
+TEST(ReportData, NamesThatAreNotUtf8AreReplaced) {
+  std::string error;
+  const auto history = parse_csv_table(
+      "r.csv", "step,increment,step_time,total_time,A@w\xff\n1,0,0,0,0\n", &error);
+  ASSERT_TRUE(history) << error;
+  ReportInputs inputs;
+  inputs.job = "weld\xff";
+  inputs.history = &*history;
+  const std::string text = report_data_text(inputs);
+  const nlohmann::json data = nlohmann::json::parse(text);
+  EXPECT_EQ(data["job"], "weld\xef\xbf\xbd");
+  EXPECT_EQ(data["history"]["columns"][4], "A@w\xef\xbf\xbd");
+}
+
+// JSON has no NaN or infinity (a diverged run writes them): they travel as strings that
+// report_page.py turns back into numbers.
+TEST(ReportData, NonFiniteNumbersAreStrings) {
+  std::string error;
+  const auto history = parse_csv_table(
+      "r.csv", "step,increment,step_time,total_time,A@1\n1,1,1,1,nan\n1,2,2,2,-inf\n", &error);
+  ASSERT_TRUE(history) << error;
+  ReportInputs inputs;
+  inputs.job = "r";
+  inputs.history = &*history;
+  const std::vector<IterationRecord> iterations = {{.residual_norm = INFINITY}};
+  inputs.iterations = &iterations;
+  const nlohmann::json data = nlohmann::json::parse(report_data_text(inputs));
+  EXPECT_EQ(data["history"]["rows"][0][4], "nan");
+  EXPECT_EQ(data["history"]["rows"][1][4], "-inf");
+  EXPECT_EQ(data["history"]["rows"][1][3], 2.0);
+  EXPECT_EQ(data["iterations"][0]["residual"], "inf");
 }
 
 }  // namespace
