@@ -208,7 +208,7 @@ int run_deck(const RunCommandOptions& options) {
   };
   Progress progress = Progress::for_stderr(options.quiet || !writer);
   HistoryRecorder history(columns, table, system);
-  RunOutputs outputs{history, status, log, progress};
+  RunOutputs outputs(history, status, log, progress);
   ConnectorStepProblem step_problem(model, system);
   const RunResult result = run_analysis(model, system, step_problem, solvers, outputs,
                                         RunOptions{options.check_tangent,

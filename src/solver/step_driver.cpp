@@ -38,31 +38,22 @@ class Driver {
     Eigen::VectorXd residual(problem_.size());
     if (const EvalStatus initial = problem_.evaluate(residual, nullptr); !initial.ok) {
       fail(initial.message, 1, 0);
-      out_.status.write_failed(result_.reason, result_.step, result_.increment, result_.time);
-      out_.log.error(fmt::format("analysis stopped: {}", result_.reason));
+      out_.stopped(result_.reason, result_.step, result_.increment, result_.time, true);
       return result_;
     }
-    out_.history.converged(1, 0, 0.0, 0.0, false);
+    out_.initial_state();
     if (!outputs_written(1, 0)) return stop();
     for (std::size_t s = 0; s < model_.history.steps.size(); ++s) {
       if (!run_step(s)) return stop();
     }
-    // Completion is claimed only when every output is whole and the history is on the disk, the
-    // COMPLETED line included.
-    out_.history.sync();
-    if (!outputs_written(result_.step, result_.increment)) return stop();
-    out_.status.write_completed();
-    out_.status.sync();
-    if (!outputs_written(result_.step, result_.increment)) return stop();
+    if (!out_.completed() && !outputs_written(result_.step, result_.increment)) return stop();
     result_.completed = true;
     return result_;
   }
 
  private:
   RunResult stop() {
-    out_.status.write_failed(result_.reason, result_.step, result_.increment, result_.time);
-    out_.log.error(fmt::format("analysis stopped: {} (step {}, increment {}, time {})",
-                               result_.reason, result_.step, result_.increment, result_.time));
+    out_.stopped(result_.reason, result_.step, result_.increment, result_.time, false);
     return result_;
   }
 
@@ -79,11 +70,9 @@ class Driver {
   // run stops there rather than go on with a history that has lost rows. While all is well it
   // records how far the run got, which a failed COMPLETED line reports.
   bool outputs_written(int step, int increment) {
-    for (const OutputFile* file : {&out_.history.file(), &out_.status.file(), &out_.log.file()}) {
-      if (file->failed()) {
-        result_.io_error = true;
-        return fail(file->error(), step, increment);
-      }
+    if (const OutputFile* file = out_.failed_file()) {
+      result_.io_error = true;
+      return fail(file->error(), step, increment);
     }
     result_.step = step;
     result_.increment = increment;
@@ -124,7 +113,7 @@ class Driver {
         record.correction_norm = n.correction_norm;
         record.largest_correction = std::max(n.largest_correction[0], n.largest_correction[1]);
         record.constraint_violation = n.constraint_violation;
-        out_.log.iteration(record);
+        out_.log().iteration(record);
       }
       iterations += std::max(0, static_cast<int>(report.iterations.size()) - 1);
       if (!report.converged() || !step_problem_.update_active_set()) return report;
@@ -152,8 +141,8 @@ class Driver {
         return fail(proposal.reason, step_number, increment);
       }
       if (proposal.cut_back) {
-        out_.log.warning(fmt::format("step {} increment {}: {}; cutting back to {}", step_number,
-                                     increment, last.outcome.reason, proposal.dt));
+        out_.log().warning(fmt::format("step {} increment {}: {}; cutting back to {}", step_number,
+                                       increment, last.outcome.reason, proposal.dt));
       }
       attempt_number = proposal.cut_back ? attempt_number + 1 : 1;
       if (!attempt_increment(step, step_number, increment, attempt_number, proposal.dt, last)) {
@@ -166,7 +155,7 @@ class Driver {
     }
     step_problem_.end_step(procedure.period, total_time_);
     for (const std::string& line : step_problem_.step_summary()) {
-      out_.log.info(fmt::format("step {}: {}", step_number, line));
+      out_.log().info(fmt::format("step {}: {}", step_number, line));
     }
     return true;
   }
@@ -187,16 +176,16 @@ class Driver {
     if (needs.line_search_iterations > 0 && !line_search_.given &&
         line_search_.max_iterations == 0) {
       line_search_.max_iterations = needs.line_search_iterations;
-      out_.log.info(
+      out_.log().info(
           fmt::format("step {}: line search on (N_ls = {}): {} and the deck does not "
                       "set *CONTROLS, PARAMETERS=LINE SEARCH",
                       step_number, needs.line_search_iterations, needs.line_search_reason));
     }
     for (const std::string& note : needs.notes) {
-      out_.log.info(fmt::format("step {}: {}", step_number, note));
+      out_.log().info(fmt::format("step {}: {}", step_number, note));
     }
     criteria_.start_step(step.controls);
-    out_.history.begin_step(static_cast<std::size_t>(step_number - 1));
+    out_.begin_step(static_cast<std::size_t>(step_number - 1));
     step_time_ = 0.0;
     return true;
   }
@@ -215,7 +204,7 @@ class Driver {
       step_problem_.begin_increment(new_time, total_time_ + dt, dt,
                                     extrapolate ? dt / previous_dt_ : 0.0);
       if (options_.check_tangent) {
-        out_.log.info(step_problem_.check_tangent(step_number, increment));
+        out_.log().info(step_problem_.check_tangent(step_number, increment));
       }
       int iterations = 0, changes = 0;
       const NewtonReport report =
@@ -231,7 +220,7 @@ class Driver {
       attempted.status_line = {step_number,           increment,  attempt_number,
                                !converged || smaller, iterations, iterations + changes,
                                total_time_ + dt,      new_time,   dt};
-      if (!converged || smaller) out_.status.write_attempt(attempted.status_line);
+      if (!converged || smaller) out_.attempt_ended(attempted.status_line);
       if (!outputs_written(step_number, increment)) return false;
       if (converged && !smaller && redo_after_failures(step_number, increment, attempted)) continue;
       attempted.outcome = outcome_of(report, attempted.request, smaller, iterations);
@@ -250,12 +239,12 @@ class Driver {
     const std::vector<std::string> failures = step_problem_.release_failed_components();
     if (failures.empty()) return false;
     for (const std::string& f : failures) {
-      out_.log.info(fmt::format("step {} increment {}: {}; the increment is solved again",
-                                step_number, increment, f));
+      out_.log().info(fmt::format("step {} increment {}: {}; the increment is solved again",
+                                  step_number, increment, f));
     }
     IncrementAttempt redone = attempted.status_line;
     redone.cut_back = true;
-    out_.status.write_attempt(redone);
+    out_.attempt_ended(redone);
     step_problem_.revert();
     return true;
   }
@@ -286,8 +275,8 @@ class Driver {
     return outcome;
   }
 
-  // A converged increment: commit, write its row and then its status line (a killed run's status
-  // file is never ahead of its history), engage locks and report the events.
+  // A converged increment: commit, tell the outputs (its row, then its status line:
+  // run_outputs.hpp), engage locks and report the events.
   bool accept_increment(int step_number, const StaticTimeStepper& stepper,
                         const Attempted& attempted) {
     const int increment = stepper.increments();
@@ -295,23 +284,20 @@ class Driver {
     step_problem_.commit();
     criteria_.accept_increment(attempted.last_iteration);
     for (const StepRequest::Warning& w : attempted.request.warnings) {
-      if (warned_.insert(w.element).second) out_.log.warning(w.message);
+      if (warned_.insert(w.element).second) out_.log().warning(w.message);
     }
     step_time_ = stepper.step_time();
     total_time_ += dt;
     ++result_.increments;
     previous_dt_ = dt;
-    out_.history.converged(step_number, increment, step_time_, total_time_, stepper.at_end());
-    if (!outputs_written(step_number, increment)) return false;
-    out_.status.write_attempt(attempted.status_line);
+    out_.increment_converged(attempted.status_line, stepper.at_end());
     if (!outputs_written(step_number, increment)) return false;
     // A lock engages at the converged state; its row shows the unlocked state
     // (behaviors.md §5.2, example E5).
     step_problem_.end_increment();
     for (const std::string& event : step_problem_.take_events()) {
-      out_.log.info(fmt::format("step {} increment {}: {}", step_number, increment, event));
+      out_.log().info(fmt::format("step {} increment {}: {}", step_number, increment, event));
     }
-    out_.progress.update(step_number, increment, total_time_);
     return true;
   }
 
@@ -353,10 +339,10 @@ class Driver {
     solver_ = solver.get();
     if (symmetric && step_problem_.has_multipliers()) why += "; the multipliers make it indefinite";
     if (const std::string choice = solver_->choice(); !choice.empty()) why += "; " + choice;
-    out_.log.info(fmt::format("step {}: {} on the {} ({} equations, {} stored entries): {}",
-                              step_number, solver_->name(),
-                              symmetric ? "upper triangle" : "full pattern", problem_.pattern().n,
-                              problem_.pattern().values.size(), why));
+    out_.log().info(fmt::format("step {}: {} on the {} ({} equations, {} stored entries): {}",
+                                step_number, solver_->name(),
+                                symmetric ? "upper triangle" : "full pattern", problem_.pattern().n,
+                                problem_.pattern().values.size(), why));
     return true;
   }
 

@@ -2,10 +2,9 @@
 // its time stepper proposes them (static_time_stepper.hpp: automatic incrementation with cutbacks
 // and growth, or DIRECT); calls Newton for each attempt, settles the active set of stops, passes
 // what the laws ask of the time step to the stepper, engages locks on converged increments, and
-// reports each attempt to the status file, each iteration to the log and each converged increment
-// to the history table. Each step assembles a symmetric tangent (CHOLMOD) or a full one (UMFPACK)
-// as its laws and *STEP, UNSYMM require. A failure stops the run with the reason, the step, the
-// increment and the time.
+// tells the outputs (run_outputs.hpp) of each attempt, iteration and converged increment. Each step
+// assembles a symmetric tangent (CHOLMOD) or a full one (UMFPACK) as its laws and *STEP, UNSYMM
+// require. A failure stops the run with the reason, the step, the increment and the time.
 #pragma once
 
 #include <functional>
@@ -14,21 +13,11 @@
 
 #include "src/linalg/linear_solver.hpp"
 #include "src/model/model.hpp"
-#include "src/output/history_recorder.hpp"
-#include "src/output/progress.hpp"
-#include "src/output/run_log.hpp"
-#include "src/output/status_file.hpp"
+#include "src/output/run_outputs.hpp"
 #include "src/solver/newton.hpp"
 #include "src/solver/step_problem.hpp"
 
 namespace clinch {
-
-struct RunOutputs {
-  HistoryRecorder& history;
-  StatusFile& status;
-  RunLog& log;
-  Progress& progress;
-};
 
 struct RunOptions {
   bool check_tangent = false;  // compare the tangent with finite differences each increment

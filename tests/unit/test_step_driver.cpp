@@ -64,7 +64,7 @@ DriverRun run_with_law(const std::string& deck_text, const Behavior& law, const 
   EXPECT_TRUE(log.open(dir / (job + ".log"), &error)) << error;
   Progress progress = Progress::for_stderr(true);
   HistoryRecorder history(columns, table, system);
-  RunOutputs outputs{history, status, log, progress};
+  RunOutputs outputs(history, status, log, progress);
   ConnectorStepProblem step_problem(deck.model, system);
   const SolverFactory solvers = [](bool symmetric) {
     return make_linear_solver(SolverChoice::Automatic, symmetric, true);

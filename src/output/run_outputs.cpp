@@ -1,0 +1,39 @@
+#include "src/output/run_outputs.hpp"
+
+#include <fmt/format.h>
+
+namespace clinch {
+
+void RunOutputs::increment_converged(const IncrementAttempt& attempt, bool last_of_step) {
+  history_.converged(attempt.step, attempt.increment, attempt.step_time, attempt.total_time,
+                     last_of_step);
+  if (failed_file() != nullptr) return;
+  status_.write_attempt(attempt);
+  if (failed_file() != nullptr) return;
+  progress_.update(attempt.step, attempt.increment, attempt.total_time);
+}
+
+bool RunOutputs::completed() {
+  history_.sync();
+  if (failed_file() != nullptr) return false;
+  status_.write_completed();
+  status_.sync();
+  return failed_file() == nullptr;
+}
+
+void RunOutputs::stopped(const std::string& reason, int step, int increment, double time,
+                         bool at_start) {
+  status_.write_failed(reason, step, increment, time);
+  log_.error(at_start ? fmt::format("analysis stopped: {}", reason)
+                      : fmt::format("analysis stopped: {} (step {}, increment {}, time {})", reason,
+                                    step, increment, time));
+}
+
+const OutputFile* RunOutputs::failed_file() const {
+  for (const OutputFile* file : {&history_.file(), &status_.file(), &log_.file()}) {
+    if (file->failed()) return file;
+  }
+  return nullptr;
+}
+
+}  // namespace clinch

@@ -1,0 +1,48 @@
+// The outputs of a run as observers of its increments: the history rows, the status file, the
+// log and the progress line. The step driver tells them what happened; they know in which order to
+// write it: a converged increment's row reaches the disk before its status line, so that a killed
+// run's status file is never ahead of its history, and completion is claimed only once every
+// output is whole and on the disk (cli-contract.md).
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include "src/output/history_recorder.hpp"
+#include "src/output/progress.hpp"
+#include "src/output/run_log.hpp"
+#include "src/output/status_file.hpp"
+
+namespace clinch {
+
+class RunOutputs {
+ public:
+  RunOutputs(HistoryRecorder& history, StatusFile& status, RunLog& log, Progress& progress)
+      : history_(history), status_(status), log_(log), progress_(progress) {}
+
+  RunLog& log() { return log_; }
+
+  void begin_step(std::size_t step) { history_.begin_step(step); }
+  // Row 0: the initial state, before any condition applies (output-variables.md §1.4).
+  void initial_state() { history_.converged(1, 0, 0.0, 0.0, false); }
+  // An attempt that failed, that a law abandoned, or that is solved again: its status line.
+  void attempt_ended(const IncrementAttempt& attempt) { status_.write_attempt(attempt); }
+  // A converged increment: its row (if due), then its status line, then the progress line.
+  void increment_converged(const IncrementAttempt& attempt, bool last_of_step);
+  // The history and the status file, COMPLETED line included, on the disk; false when some output
+  // could not be written.
+  bool completed();
+  // The FAILED line, and the log's line with where the run was (`at_start`: before any increment,
+  // where the reason says it all).
+  void stopped(const std::string& reason, int step, int increment, double time, bool at_start);
+  // The first output that could not be written, or null.
+  const OutputFile* failed_file() const;
+
+ private:
+  HistoryRecorder& history_;
+  StatusFile& status_;
+  RunLog& log_;
+  Progress& progress_;
+};
+
+}  // namespace clinch
