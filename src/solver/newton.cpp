@@ -37,6 +37,19 @@ bool finite(const Eigen::VectorXd& values, const char* what, NewtonReport& repor
   return false;
 }
 
+// Newton is back at a state it has visited: the last iteration's residual and correction norms
+// equal an earlier one's to round-off. It would cycle for good, as it does between stick and slip
+// across a stick band narrower than its steps.
+bool revisited(const std::vector<IterationNorms>& history) {
+  const auto same = [](double a, double b) { return std::abs(a - b) <= 1e-12 * std::abs(b); };
+  const IterationNorms& last = history.back();
+  if (!(last.residual_norm > 0 && last.correction_norm > 0)) return false;
+  return std::any_of(history.begin(), history.end() - 1, [&](const IterationNorms& earlier) {
+    return same(last.residual_norm, earlier.residual_norm) &&
+           same(last.correction_norm, earlier.correction_norm);
+  });
+}
+
 }  // namespace
 
 NewtonReport solve_increment(NonlinearProblem& problem, LinearSolver& solver,
@@ -61,8 +74,8 @@ NewtonReport solve_increment(NonlinearProblem& problem, LinearSolver& solver,
       report.outcome = NewtonOutcome::Converged;
       return report;
     }
-    if (iteration >= options.max_iterations || diverging(report.iterations,
-                                                         options.divergence_check_from)) {
+    if (iteration >= options.max_iterations ||
+        diverging(report.iterations, options.divergence_check_from)) {
       report.outcome = iteration >= options.max_iterations ? NewtonOutcome::TooManyIterations
                                                            : NewtonOutcome::Diverged;
       if (options.accept_unconverged) report.outcome = NewtonOutcome::Converged;
@@ -93,6 +106,7 @@ NewtonReport solve_increment(NonlinearProblem& problem, LinearSolver& solver,
       return report;
     }
     if (!finite(correction, "correction", report)) return report;
+    if (options.break_cycles && revisited(report.iterations)) correction *= 0.5;
     problem.apply_correction(correction);
     if (options.line_search.max_iterations > 0 && !predictor) {
       const EvalStatus searched = search_line(problem, correction, residual, options.line_search);

@@ -90,8 +90,8 @@ class Driver {
   // One attempt: Newton, then the stop active set (behaviors.md §5.1), re-solved until it settles.
   NewtonReport attempt(int step, int increment, int attempt_number, int& iterations, int& changes) {
     const TimeIncrementationControls& t = controls_->time;
-    const NewtonOptions options{t.ic, t.i0, accept_unconverged_, line_search_,
-                                options_.stop_requested};
+    const NewtonOptions options{
+        t.ic, t.i0, accept_unconverged_, line_search_, options_.stop_requested, fixed_increments_};
     iterations = 0;
     changes = 0;
     for (;;) {
@@ -166,6 +166,7 @@ class Driver {
     controls_ = &step.controls;
     // DIRECT=NO STOP accepts an increment that reaches the iteration limit (keywords.md §15).
     accept_unconverged_ = procedure.direct && procedure.no_stop;
+    fixed_increments_ = procedure.direct;
     step_problem_.begin_step(static_cast<std::size_t>(step_number - 1), step.nlgeom);
     if (!choose_storage(step, step_number)) return false;
     warned_.clear();
@@ -357,6 +358,7 @@ class Driver {
   ConvergenceCriteria criteria_;
   const Controls* controls_ = nullptr;
   bool accept_unconverged_ = false;
+  bool fixed_increments_ = false;  // DIRECT: Newton breaks its own cycles
   double total_time_ = 0.0;
   double step_time_ = 0.0;    // of the step, at the last converged increment
   double previous_dt_ = 0.0;  // the last converged increment (extrapolation)
