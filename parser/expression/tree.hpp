@@ -1,6 +1,7 @@
 // The syntax tree of a *PARAMETER expression, as the parser builds it and the evaluator walks it.
 // Nodes live in one vector and refer to each other by index; additive and multiplicative runs are
 // kept as one n-ary Chain node each, so that a long `1+1+...+1` does not make a deep tree.
+// Names are views into the expression text, which outlives the tree.
 #pragma once
 
 #include <cstdint>
