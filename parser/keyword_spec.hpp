@@ -1,7 +1,8 @@
 // Declarative description of a keyword: its class (supported, no effect, not supported), where it
 // may appear (input-syntax.md §8), its parameters and how its data lines are read. The generic
 // parameter checks (unknown, duplicate, abbreviated, missing, flag/value, enumerations:
-// input-syntax.md §2) run from this description before a handler sees the block.
+// input-syntax.md §2) run from this description before a handler sees the block
+// (parser/reader/keyword_checks.hpp).
 #pragma once
 
 #include <initializer_list>

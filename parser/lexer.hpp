@@ -1,7 +1,8 @@
 // The lexer: physical lines → keyword lines (with their parameters, continuations merged) and
 // data lines (raw text, split into fields on request). It knows the line kinds of
 // input-syntax.md §1.1, the keyword-line grammar of §2 and the field rules of §3.1. It does not
-// know any keyword: *INCLUDE splicing and INPUT= files are handled by the DeckReader above it.
+// know any keyword: *INCLUDE splicing and INPUT= files are handled by the deck reader above it
+// (parser/reader/).
 #pragma once
 
 #include <cstdint>

@@ -1,5 +1,6 @@
-// *PART, *ASSEMBLY, *INSTANCE and their ends (input-syntax.md §7.2). The DeckReader tracks the
-// structural position; these handlers create the parts and instances and read the placement.
+// *PART, *ASSEMBLY, *INSTANCE and their ends (input-syntax.md §7.2). The deck reader tracks the
+// structural position (parser/reader/deck_structure.hpp); these handlers create the parts and
+// instances and read the placement.
 #include <cmath>
 
 #include <fmt/format.h>
