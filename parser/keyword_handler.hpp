@@ -1,8 +1,8 @@
 // The handler of one keyword block. The deck reader's block dispatcher
 // (parser/reader/block_dispatcher.hpp) validates the keyword line against the KeywordSpec, then
 // calls begin(), data_line() for each data line (split into fields, with <name> substitution
-// done), and end(). One handler object per block; state between lines lives
-// in the handler. Handlers write plain data into the ModelBuilder and report through ctx.
+// done), and end(). One handler object per block; state between lines lives in the handler.
+// Handlers write plain data into the model (ctx.model()) and report through ctx.
 #pragma once
 
 #include <vector>

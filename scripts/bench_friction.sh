@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Connector-friction benchmarks (decks/bench/README.md):
+# Connector-friction benchmarks (docs/benchmarks.md):
 # 1. time per Newton iteration on a lattice of friction connectors
 #    (decks/bench/generate_friction_lattice.py: an n x n grid of sliders, each on the floor through a
 #    CARTESIAN connector with a stiff normal spring and CONTACT FORCE=1 friction, neighbours joined

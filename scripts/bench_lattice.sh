@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # clinch against CalculiX (Debian calculix-ccx 2.20) on the lattice decks of
-# decks/bench/generate_lattice.cpp (decks/bench/README.md): for each size and law, median wall time
+# decks/bench/generate_lattice.cpp (docs/benchmarks.md): for each size and law, median wall time
 # and peak RSS of 3 runs (1 run when a run takes longer than LATTICE_SLOW_S seconds), Newton
 # iterations, the reaction's relative error against the closed form, and the clinch/CalculiX
 # ratios; then clinch's time per Newton iteration against one factorization plus solve.

@@ -6,7 +6,7 @@
 # (analysis plan and connector system) and columns (history columns and the table's header). Each
 # size runs REPEAT times (default 3) after one unmeasured run of the largest deck, which has the
 # host back the memory the runs will touch (on a virtual machine the first touch of memory the
-# host took back costs several times the run, decks/bench/README.md). For each size: the
+# host took back costs several times the run, docs/benchmarks.md). For each size: the
 # medians of the three times and of their sum, the sum's ratio to the previous size's (10 for a
 # linear setup), the median whole run's wall time and peak RSS per connector (GNU time %M).
 # Usage: scripts/bench_setup.sh [sizes...]   (default: 10000 100000 1000000). CLINCH_BUILD_DIR

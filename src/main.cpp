@@ -23,12 +23,12 @@ int run_command_line(int argc, char** argv) {
   clinch::RunCommandOptions run_options;
   std::string solver = "auto";
   CLI::App* run = app.add_subcommand(
-      "run", "Run every step of a deck; writes <job>.history.csv, <job>.sta and <job>.log; exit "
-             "0 = completed, 1 = deck errors (nothing run), 2 = stopped early (also by SIGINT or "
-             "SIGTERM, which keep every converged increment), 3 = usage or I/O error (an output "
-             "that cannot be written stops the run)");
-  run->add_option("DECK", run_options.deck, "the deck (.inp), or - for standard input")
-      ->required();
+      "run",
+      "Run every step of a deck; writes <job>.history.csv, <job>.sta and <job>.log; exit "
+      "0 = completed, 1 = deck errors (nothing run), 2 = stopped early (also by SIGINT or "
+      "SIGTERM, which keep every converged increment), 3 = usage or I/O error (an output "
+      "that cannot be written stops the run)");
+  run->add_option("DECK", run_options.deck, "the deck (.inp), or - for standard input")->required();
   run->add_option("--out", run_options.out_dir, "output directory (created if missing)")
       ->capture_default_str();
   run->add_option("--job", run_options.job,
@@ -39,16 +39,20 @@ int run_command_line(int argc, char** argv) {
                 "compare the assembled tangent with finite differences of the residual at the "
                 "first iteration of each increment and log the worst entries (small decks)");
   run->add_option("--solver", solver,
-                  "linear solver: auto (CHOLMOD for SPD systems, UMFPACK otherwise), cholmod, "
-                  "umfpack, dense or petsc (CG with BoomerAMG for SPD systems, MUMPS otherwise)")
+                  "linear solver: auto (CHOLMOD for SPD systems, handing over to petsc when its "
+                  "factorization would cost 1e10 flops or more and to UMFPACK when the matrix "
+                  "proves indefinite; UMFPACK for the others; petsc under mpirun), cholmod "
+                  "(symmetric steps only), umfpack, dense (Cholesky or LU) or petsc (CG with "
+                  "BoomerAMG for SPD systems, MUMPS otherwise)")
       ->check(CLI::IsMember({"auto", "cholmod", "umfpack", "dense", "petsc"}))
       ->capture_default_str();
 
   std::string deck;
   std::string format = "text";
   CLI::App* check = app.add_subcommand(
-      "check", "Parse and validate a deck (syntax, parameters, references, connector rules, "
-               "steps) without solving; exit 0 = no errors, 1 = errors, 3 = usage or I/O error");
+      "check",
+      "Parse and validate a deck (syntax, parameters, references, connector rules, "
+      "steps) without solving; exit 0 = no errors, 1 = errors, 3 = usage or I/O error");
   check->add_option("DECK", deck, "the deck (.inp), or - for standard input")->required();
   check->add_option("--format", format, "diagnostic format: text (stderr) or json (stdout)")
       ->check(CLI::IsMember({"text", "json"}));
@@ -64,8 +68,8 @@ int run_command_line(int argc, char** argv) {
       ->required();
   compare->add_option("GOLDEN", compare_arguments.golden_path, "the reference history table (.csv)")
       ->required();
-  const CLI::Validator tolerance(
-      [](std::string& text) { return clinch::check_tolerance(text); }, "TOLERANCE");
+  const CLI::Validator tolerance([](std::string& text) { return clinch::check_tolerance(text); },
+                                 "TOLERANCE");
   compare->add_option("--rtol", compare_arguments.rtol, "relative tolerance")
       ->check(tolerance)
       ->capture_default_str();
@@ -114,8 +118,9 @@ int run_command_line(int argc, char** argv) {
                     "estimate only the history columns whose whole name matches this regular "
                     "expression (RE2 syntax; default: all but the status codes CSLST and "
                     "CSLIPST)");
-  study->add_flag("--no-plot", [&](std::int64_t) { study_options.plot = false; },
-                  "skip the work-precision plot (it needs python3 with matplotlib)");
+  study->add_flag(
+      "--no-plot", [&](std::int64_t) { study_options.plot = false; },
+      "skip the work-precision plot (it needs python3 with matplotlib)");
   study->add_flag("--quiet", study_options.quiet, "print nothing but warnings and errors");
 
   clinch::ReportOptions report_options;
@@ -131,17 +136,20 @@ int run_command_line(int argc, char** argv) {
   report->add_option("--job", report_options.job,
                      "job name (default: the only <job>.history.csv in RUN_DIR)");
   report->add_option("--golden", report_options.golden, "golden history table to overlay");
-  report->add_option("--rtol", report_options.rtol,
-                     "relative tolerance of the golden band (as `clinch compare`)")
+  report
+      ->add_option("--rtol", report_options.rtol,
+                   "relative tolerance of the golden band (as `clinch compare`)")
       ->check(tolerance)
       ->capture_default_str();
-  report->add_option("--atol", report_options.atol,
-                     "absolute tolerance of the golden band (as `clinch compare`)")
+  report
+      ->add_option("--atol", report_options.atol,
+                   "absolute tolerance of the golden band (as `clinch compare`)")
       ->check(tolerance)
       ->capture_default_str();
   report->add_option("--study", report_options.study, "a <job>.study.csv of `clinch study`");
-  report->add_option("--connectors", report_options.max_connectors,
-                     "draw the first N connectors and nodes of the history table")
+  report
+      ->add_option("--connectors", report_options.max_connectors,
+                   "draw the first N connectors and nodes of the history table")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
   report->add_option("--output,-o", report_options.output,
@@ -169,8 +177,8 @@ int run_command_line(int argc, char** argv) {
     return clinch::run_deck(run_options);
   }
   if (check->parsed()) {
-    return clinch::run_check(deck, format == "json" ? clinch::DiagnosticFormat::Json
-                                                    : clinch::DiagnosticFormat::Text);
+    return clinch::run_check(
+        deck, format == "json" ? clinch::DiagnosticFormat::Json : clinch::DiagnosticFormat::Text);
   }
   if (compare->parsed()) return clinch::run_compare(compare_arguments);
   if (study->parsed()) return clinch::run_study(study_options);

@@ -2,7 +2,7 @@
 // N×N×N grid of nodes (spacing h = 1, edge L = N − 1), each joined to its 13 forward neighbours by
 // a SPRINGA spring or an AXIAL CONN3D2 connector, clamped in x on x = 0, pulled to u1 = ε·L on
 // x = L, with rollers on the four side faces. Under these conditions the homogeneous stretch
-// u = (εx, 0, 0) is the exact solution (decks/bench/README.md), so the reaction on x = L has a
+// u = (εx, 0, 0) is the exact solution (docs/benchmarks.md), so the reaction on x = L has a
 // closed form, which --reference writes as JSON.
 // The irregular lattice (--jitter, --patch) moves every node by a seeded random fraction of the
 // spacing in each direction and pulls only a centred square patch of the face x = L (set PULL):
@@ -199,7 +199,7 @@ class DeckWriter {
     write_behavior(table);
     std::fprintf(file_, "*BOUNDARY\nXMIN, 1, 1\nYMIN, 2, 2\nYMAX, 2, 2\nZMIN, 3, 3\nZMAX, 3, 3\n");
     // Both laws under NLGEOM: CalculiX solves a SPRINGA step without it neither as small-strain
-    // nor as large-strain (decks/bench/README.md). Linear: one increment; nonlinear: automatic
+    // nor as large-strain (docs/benchmarks.md). Linear: one increment; nonlinear: automatic
     // increments from 0.1, with the minimum increment written out so both codes use the same.
     std::fprintf(file_, options_.nonlinear ? "*STEP, NLGEOM\n*STATIC\n0.1, 1.0, 1.e-5, 1.0\n"
                                            : "*STEP, NLGEOM\n*STATIC\n");

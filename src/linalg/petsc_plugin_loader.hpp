@@ -58,7 +58,6 @@ class UnavailableSolver final : public LinearSolver {
     return fail(message);
   }
   int failed_pivot() const override { return -1; }
-  const std::string& reason() const { return reason_; }
 
  private:
   LinearStatus fail(std::string* message) const {

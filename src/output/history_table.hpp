@@ -28,11 +28,9 @@ class HistoryTable {
   bool write_row(int step, int increment, double step_time, double total_time,
                  std::span<const double> values);
 
-  bool is_open() const { return file_.is_open(); }
   // The file underneath, which keeps the first write failure.
   const OutputFile& file() const { return file_; }
   bool sync() { return file_.sync(); }
-  const std::vector<std::string>& columns() const { return columns_; }
 
  private:
   OutputFile file_;

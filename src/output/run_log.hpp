@@ -47,7 +47,6 @@ class RunLog {
   // Logged only: iteration lines would drown the terminal.
   void iteration(const IterationRecord& record);
 
-  bool is_open() const { return file_.is_open(); }
   // The file underneath, which keeps the first write failure.
   const OutputFile& file() const { return file_; }
 

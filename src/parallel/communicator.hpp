@@ -2,7 +2,7 @@
 // the whole model and state; each evaluates its own share of the elements, and after every
 // evaluation the ranks exchange what they computed, so that each holds the state a serial run
 // would and takes the same decisions (convergence, cutbacks, active sets) without further
-// messages. A one-rank run uses the serial communicator, whose operations do nothing.
+// messages. A run on one process uses no communicator.
 #pragma once
 
 #include <cstddef>
@@ -17,7 +17,6 @@ namespace clinch {
 // shares whose sizes differ by at most one.
 struct ItemRange {
   std::size_t begin = 0, end = 0;
-  bool contains(std::size_t i) const { return i >= begin && i < end; }
 };
 ItemRange share_of(std::size_t count, int rank, int size);
 
@@ -43,9 +42,6 @@ class Communicator {
   // output rank 0 cannot write) while the others wait for it.
   [[noreturn]] virtual void abort(int code) = 0;
 };
-
-// One rank: every operation leaves its arguments as they are.
-std::unique_ptr<Communicator> make_serial_communicator();
 
 // The world of `mpirun` (MPI started through PETSc), from the plugin libclinch_petsc.so
 // (petsc_plugin_loader.hpp); a one-rank world when clinch runs without mpirun. Null, with `error`,

@@ -3,7 +3,7 @@
 // components) is integrated from the virgin state for a fixed set of trial motions that all yield,
 // with the consistent tangent, as the assembly asks for it. An elastic variant (trial motions
 // below yield) shows the cost of the yield check alone. Whole runs are the measure of speed
-// (decks/bench/README.md); these figures locate the update's share of them.
+// (docs/benchmarks.md); these figures locate the update's share of them.
 // scripts/bench_plastic.sh prints the medians of 5 repetitions and the ratios.
 #include <benchmark/benchmark.h>
 

@@ -65,7 +65,7 @@ TEST(ConvergenceCriteria, RoundOffCorrectionOfAFieldThatDoesNotMovePasses) {
   EXPECT_FALSE(criteria.converged(n, 2));
 }
 
-// A model with no force anywhere (a linkage turned by a connector motion alone, issue 18): every
+// A model with no force anywhere (a linkage turned by a connector motion alone): every
 // entry of q̃ is round-off, 1e-30, and so is the residual. Such a flux is at most ε·q̄₀ = 1e-7:
 // zero flux (§16 field 6), which takes the correction test and leaves q̄ at q̄₀. Before, the
 // round-off was taken for q̄ (it is far above 1e-12 of itself) and Rₙ failed at every iteration.

@@ -1,5 +1,5 @@
 // The closed-form reaction of the lattice benchmark (decks/bench/generate_lattice.cpp,
-// decks/bench/README.md), checked on tiny lattices by summing every spring's nodal forces under
+// docs/benchmarks.md), checked on tiny lattices by summing every spring's nodal forces under
 // the homogeneous stretch u = (εx, 0, 0): the stretch must be an equilibrium state under the
 // benchmark's supports, the reaction must equal the plane-crossing formula, and no rigid mode may
 // be left.

@@ -1,4 +1,4 @@
-"""Runs a deck whose forces cancel at the nodes (issue 18: a bolt preloaded by a connector load, a
+"""Runs a deck whose forces cancel at the nodes (a bolt preloaded by a connector load, a
 mechanism driven by a connector motion, a frame whose reactions cancel) and the same deck with a
 small real load elsewhere: an extra AXIAL spring, away from the model, pulled by a *Cload of 1.
 Both must complete with the default controls, in the same number of increments, and the deck in
