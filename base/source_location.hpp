@@ -9,7 +9,7 @@ namespace clinch {
 // 1-based line and byte column (a TAB counts as one column, input-syntax.md §1). file indexes
 // the SourceManager's file table; kNoFile marks "no location" (run-time or command-line faults).
 // A location may have an extent on its line: `length` columns from `column`, so that a
-// diagnostic can underline the whole field at fault (ARCHITECTURE.md principle 6); 0 means a
+// diagnostic can underline the whole field at fault (ARCHITECTURE.md principle 7); 0 means a
 // point (the caret only). Two locations are equal when they denote the same span.
 struct SourceLoc {
   static constexpr std::uint32_t kNoFile = 0xffffffffu;

@@ -1,4 +1,4 @@
-// The analysis plan (ARCHITECTURE.md principle 7): what a run needs from the model, built once.
+// The analysis plan (ARCHITECTURE.md principle 9): what a run needs from the model, built once.
 // Active DOFs and their equations, one record per connector and spring with its kinematics, law
 // stack and equations, one multiplier per connector component that can ever be constrained
 // (connection constraints, RIGID elasticity, stops, locks, connector motions), and the size of

@@ -1,4 +1,4 @@
-// The state of a run (ARCHITECTURE.md principle 2): the solution (nodal values and connector
+// The state of a run (ARCHITECTURE.md principle 3): the solution (nodal values and connector
 // multipliers), the nodal rotations of NLGEOM, the laws' history, the stop and lock active sets,
 // each in a trial and a converged copy, and what the last evaluation computed for every
 // connector. commit() keeps the trial state once an increment has converged, revert() drops it

@@ -1,4 +1,4 @@
-// One connector element as one pipeline (ARCHITECTURE.md principle 3, behaviors.md §1.3):
+// One connector element as one pipeline (ARCHITECTURE.md principle 4, behaviors.md §1.3):
 // kinematics (connection-types.md) → its constraint forces from the multipliers → the law stack
 // (elastic-plastic, damage, friction; each law may read the constraint forces) → the constraint
 // equations of constrained and RIGID components, stops, locks and connector motions. It produces

@@ -218,7 +218,7 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
   if (predicting_ && tangent) residual += predictor_;
   for (int eq : conditions_.prescribed()) {
     // Newton's row of a prescribed DOF is Δu = target − u. A reaction that overflows takes the
-    // row's place, so that Newton stops on it rather than report it (principle 7).
+    // row's place, so that Newton stops on it rather than report it (principle 8).
     residual[eq] =
         std::isfinite(internal_[eq]) ? state_.x[eq] - conditions_.target(eq) : internal_[eq];
     if (tangent) {
@@ -231,7 +231,7 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
 
 // An overflow in a law or in the kinematics fails the evaluation, which the step driver treats as
 // a failed attempt; the element's forces, outputs and trial history are checked, so that none of
-// them reaches a converged row (ARCHITECTURE.md principle 7). The stiffness is left to Newton: a
+// them reaches a converged row (ARCHITECTURE.md principle 8). The stiffness is left to Newton: a
 // non-finite one makes the correction non-finite, which Newton reports at its DOF.
 bool ConnectorSystem::connector_finite(std::size_t c, const LocalSystem& local) const {
   const ConnectorRecord& r = plan_.connectors[c];

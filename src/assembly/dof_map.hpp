@@ -1,4 +1,4 @@
-// Equation numbers of the analysis (ARCHITECTURE.md principle 7): only the DOFs some element uses
+// Equation numbers of the analysis (ARCHITECTURE.md principle 9): only the DOFs some element uses
 // get an equation (a translational-only model has 3 per node, a CONN2D2 model u1, u2, ur3), node
 // by node; Lagrange multipliers of connector constraints follow the nodal equations.
 #pragma once

@@ -72,7 +72,7 @@ struct BehaviorOutput {
 enum class ForceKind { Elastic, Viscous, Friction };
 
 // A force–motion law in component space. `integrate` is const and never touches history_old, so
-// one instance serves every element that shares the behaviour (ARCHITECTURE.md principle 2).
+// one instance serves every element that shares the behaviour (ARCHITECTURE.md principle 3).
 class Behavior {
  public:
   virtual ~Behavior() = default;

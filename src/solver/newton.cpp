@@ -23,7 +23,7 @@ bool diverging(const std::vector<IterationNorms>& history, int check_from) {
 
 // A NaN passes every "r > tolerance" test and an overflow can pass "r ≤ ε·q̄" against an infinite
 // flux, so a value that is not finite ends the attempt before the convergence tests see it
-// (ARCHITECTURE.md principle 7). Returns false and fills `report` for the entry to blame: the
+// (ARCHITECTURE.md principle 8). Returns false and fills `report` for the entry to blame: the
 // first overflow, else the first NaN (often 0·∞ in the substitutions, far from the overflow).
 bool finite(const Eigen::VectorXd& values, const char* what, NewtonReport& report) {
   if (values.allFinite()) return true;

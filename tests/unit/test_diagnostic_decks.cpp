@@ -119,7 +119,7 @@ GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(DiagnosticDeck);
 TEST(DiagnosticDecks, ThereAreAtLeastForty) { EXPECT_GE(diagnostic_decks().size(), 40u); }
 
 // A field error underlines the whole field, clang-style: the caret at its first column and '~'
-// under the rest (ARCHITECTURE.md principle 6); the JSON gives the last column as end_column.
+// under the rest (ARCHITECTURE.md principle 7); the JSON gives the last column as end_column.
 TEST(DiagnosticRender, FieldErrorUnderlinesTheWholeField) {
   SourceManager sources;
   DiagnosticSink sink;

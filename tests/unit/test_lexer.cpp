@@ -61,7 +61,7 @@ TEST(Lexer, FieldsAreTrimmedAndLocated) {
 }
 
 // A field's location spans its written text, trimmed, quotes included; an empty field is a
-// point (ARCHITECTURE.md principle 6).
+// point (ARCHITECTURE.md principle 7).
 TEST(Lexer, FieldsSpanTheirText) {
   DiagnosticSink sink;
   auto f = split("  12 ,  Set 1, \"a, b\" , ,x", sink);

@@ -1,4 +1,4 @@
-// Newton stops on a residual or a correction that is not finite (ARCHITECTURE.md principle 7)
+// Newton stops on a residual or a correction that is not finite (ARCHITECTURE.md principle 8)
 // instead of letting it through the convergence tests, which a NaN passes. Two uncoupled
 // springs, R = k∘x − f, solved by the dense backend: the report names the equation and the
 // state is left as the last finite iterate, for the step driver to revert and cut back.

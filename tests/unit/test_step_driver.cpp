@@ -168,7 +168,7 @@ TEST(StepDriver, AStopAskedFromOutsideEndsTheRunWithEveryConvergedIncrement) {
   }
 }
 
-// A force that overflows beyond U1 = 0.05 fails the attempt (ARCHITECTURE.md principle 7): the
+// A force that overflows beyond U1 = 0.05 fails the attempt (ARCHITECTURE.md principle 8): the
 // driver cuts back until it can cut back no further, then stops naming the element; every row of
 // the history holds a finite U1 no further than the limit.
 TEST(StepDriver, ANonFiniteForceCutsBackAndNeverReachesTheHistory) {
