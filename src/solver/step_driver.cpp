@@ -332,23 +332,19 @@ class Driver {
     if (!choose_storage(step, step_number)) return false;
     conditions_.begin_step(static_cast<std::size_t>(step_number - 1), system_);
     warned_.clear();
-    // A stick–slip switch can send Newton back and forth across the narrow stick band (slip
-    // tangents on both sides); a line search stops the cycle. Steps with friction get one unless
-    // the deck sets PARAMETERS=LINE SEARCH itself (docs/decisions.md "Friction").
+    // The laws' line search, unless the deck sets PARAMETERS=LINE SEARCH itself.
+    const ProcedureNeeds& needs = plan_.procedure_needs;
     line_search_ = step.controls.line_search;
-    if (plan_.friction && !line_search_.given && line_search_.max_iterations == 0) {
-      line_search_.max_iterations = kFrictionLineSearch;
-      out_.log.info(
-          fmt::format("step {}: line search on (N_ls = {}): the step has friction and "
-                      "the deck does not set *CONTROLS, PARAMETERS=LINE SEARCH",
-                      step_number, kFrictionLineSearch));
+    if (needs.line_search_iterations > 0 && !line_search_.given &&
+        line_search_.max_iterations == 0) {
+      line_search_.max_iterations = needs.line_search_iterations;
+      out_.log.info(fmt::format(
+          "step {}: line search on (N_ls = {}): {} and the deck does not set *CONTROLS, "
+          "PARAMETERS=LINE SEARCH",
+          step_number, needs.line_search_iterations, needs.line_search_reason));
     }
-    if (plan_.rate_dependent_friction) {
-      out_.log.info(
-          fmt::format("step {}: the friction is rate dependent; in a *STATIC step the "
-                      "slip rate is the slip of an increment over its step time "
-                      "(friction.md §3.3)",
-                      step_number));
+    for (const std::string& note : needs.notes) {
+      out_.log.info(fmt::format("step {}: {}", step_number, note));
     }
     criteria_.start_step(step.controls);
     out_.columns.begin_step(static_cast<std::size_t>(step_number - 1));
@@ -532,10 +528,8 @@ class Driver {
   double previous_dt_ = 0.0;  // the last converged increment (extrapolation)
   std::vector<double> values_;
   RunResult result_;
-  std::set<std::size_t> warned_;
-  static constexpr int kFrictionLineSearch = 5;
-  LineSearchControls line_search_;  // this step's, with clinch's choice for friction  // elements
-                                    // whose law warning this step's log already has
+  std::set<std::size_t> warned_;    // elements whose law warning this step's log already has
+  LineSearchControls line_search_;  // this step's, with what the laws ask for
 };
 
 }  // namespace
