@@ -6,8 +6,8 @@
 #include <stdexcept>
 
 #include "base/diagnostic.hpp"
-#include "src/behavior/elastic/elastic_behavior.hpp"
 #include "src/behavior/connector_laws.hpp"
+#include "src/behavior/elastic/elastic_behavior.hpp"
 #include "src/model/orientation_triad.hpp"
 
 namespace clinch {
@@ -22,7 +22,6 @@ Matrix3 to_matrix(const Triad& t) {
   for (int k = 0; k < 3; ++k) m.col(k) = to_vector(t[static_cast<std::size_t>(k)]);
   return m;
 }
-
 
 // Components a *CONNECTOR MOTION of any step (or model data) prescribes, per element; the
 // targets as validation resolved them.
@@ -53,8 +52,9 @@ class PlanBuilder {
     length_tolerance_ = geometry_tolerance(model_.nodes);
     // NLGEOM stays on once set (keywords.md §13): the steps' flags are the effective ones.
     const auto& steps = model_.history.steps;
-    plan_.small_displacement = steps.empty() || std::any_of(steps.begin(), steps.end(),
-                                                       [](const Step& s) { return !s.nlgeom; });
+    plan_.small_displacement =
+        steps.empty() ||
+        std::any_of(steps.begin(), steps.end(), [](const Step& s) { return !s.nlgeom; });
     section_laws_.assign(model_.sections.connector_sections.size(), {});
     section_laws_built_.assign(model_.sections.connector_sections.size(), false);
     section_stops_.assign(model_.sections.connector_sections.size(), nullptr);
@@ -73,8 +73,9 @@ class PlanBuilder {
     plan_.springs.reserve(model_.elements.size() - connectors);
     for (std::size_t e = 0; e < model_.elements.size(); ++e) {
       const Element& element = model_.elements[e];
-      const bool ok = is_connector(element.type) ? add_connector(static_cast<std::int32_t>(e), error)
-                                                 : add_spring(static_cast<std::int32_t>(e), error);
+      const bool ok = is_connector(element.type)
+                          ? add_connector(static_cast<std::int32_t>(e), error)
+                          : add_spring(static_cast<std::int32_t>(e), error);
       if (!ok) return false;
     }
     return true;
@@ -90,19 +91,14 @@ class PlanBuilder {
       if (section.behavior_index >= 0) {
         const ConnectorBehavior& b =
             model_.behaviors.behaviors[static_cast<std::size_t>(section.behavior_index)];
-        plan_.friction |= !b.frictions.empty();
-        for (const FrictionDefinition& f : b.frictions) {
-          plan_.rate_dependent_friction |= f.law.exponential_decay ||
-                                           f.law.variable == FrictionLaw::Variable::SlipRate;
-        }
         DamageControls controls;
         if (section.controls_index >= 0) {
           const SectionControls& c =
               model_.sections.controls[static_cast<std::size_t>(section.controls_index)];
           controls = {c.element_deletion, c.max_degradation, c.viscosity};
         }
-        for (auto& law :
-             make_connector_laws(b, section.available, section.constrained, controls)) {
+        for (auto& law : make_connector_laws(b, section.available, section.constrained, controls)) {
+          plan_.procedure_needs.merge(law->procedure_needs());
           section_laws_[index].push_back(law.get());
           plan_.behaviors.push_back(std::move(law));
         }
@@ -137,7 +133,8 @@ class PlanBuilder {
   bool add_connector(std::int32_t e, std::string* error) {
     const Element& element = model_.elements[static_cast<std::size_t>(e)];
     const std::int32_t s = model_.sections.section_of_element[static_cast<std::size_t>(e)];
-    const ConnectorSection& section = model_.sections.connector_sections[static_cast<std::size_t>(s)];
+    const ConnectorSection& section =
+        model_.sections.connector_sections[static_cast<std::size_t>(s)];
     const ConnectorBehavior* behavior =
         section.behavior_index >= 0
             ? &model_.behaviors.behaviors[static_cast<std::size_t>(section.behavior_index)]
@@ -205,9 +202,8 @@ class PlanBuilder {
       }
       // §5.3: RELEASE=ALL frees every available component, never a constrained one.
       for (const ConnectorFailure& failure : behavior->failures) {
-        const ComponentMask releases = failure.released == 0
-                                           ? r.available
-                                           : (component_bit(failure.released) & r.available);
+        const ComponentMask releases =
+            failure.released == 0 ? r.available : (component_bit(failure.released) & r.available);
         r.failures.push_back({failure.component, releases, failure.bounds});
       }
     }
@@ -222,7 +218,8 @@ class PlanBuilder {
       if (!has_component(multiplied, i)) continue;
       r.multiplier_components[static_cast<std::size_t>(r.multiplier_count++)] =
           static_cast<std::int8_t>(i);
-      r.local.equation[static_cast<std::size_t>(r.local.count++)] = plan_.dofs.add_multiplier(i >= 4);
+      r.local.equation[static_cast<std::size_t>(r.local.count++)] =
+          plan_.dofs.add_multiplier(i >= 4);
       plan_.has_multipliers = true;
     }
     plan_.connector_of_element[static_cast<std::size_t>(e)] =
@@ -264,7 +261,8 @@ class PlanBuilder {
       first_dof = r.rotational ? 4 : 1;
     }
     for (int c = 0; c < 6; ++c) {
-      const int eq = plan_.dofs.equation(r.nodes[static_cast<std::size_t>(c / 3)], first_dof + c % 3);
+      const int eq =
+          plan_.dofs.equation(r.nodes[static_cast<std::size_t>(c / 3)], first_dof + c % 3);
       if (eq < 0) continue;
       r.columns[static_cast<std::size_t>(r.column_count++)] = static_cast<std::int8_t>(c);
       r.local.equation[static_cast<std::size_t>(r.local.count++)] = eq;

@@ -1,14 +1,15 @@
 // The analysis plan (ARCHITECTURE.md principle 9): what a run needs from the model, built once.
 // Active DOFs and their equations, one record per connector and spring with its kinematics, law
 // stack and equations, one multiplier per connector component that can ever be constrained
-// (connection constraints, RIGID elasticity, stops, locks, connector motions), and the size of
-// the laws' history. Nothing here changes during the analysis (assembly_pattern.hpp says where
-// each element's entries go).
+// (connection constraints, RIGID elasticity, stops, locks, connector motions), the size of the
+// laws' history and what the laws ask of the procedure. Nothing here changes during the analysis
+// (assembly_pattern.hpp says where each element's entries go).
 #pragma once
 
 #include <array>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,10 @@ struct LocalEquations {
 struct LawSlot {
   const Behavior* law = nullptr;
   std::size_t history = 0;
+  // The law's part of a history array of the analysis state (trial or converged).
+  std::span<const double> history_in(std::span<const double> histories) const {
+    return histories.subspan(history, law->history_size());
+  }
 };
 struct LawStack {
   // elastic-plastic, damage, damping, five friction definitions
@@ -73,7 +78,7 @@ struct ConnectorRecord {
   std::size_t kinematics = 0;  // into AnalysisPlan::kinematics
   LawStack laws;
   ComponentMask available = 0, constrained = 0, rigid = 0;
-  Vector6 reference = Vector6::Zero();  // ref_i: u = p − ref (behaviors.md §3)
+  Vector6 reference = Vector6::Zero();    // ref_i: u = p − ref (behaviors.md §3)
   const ConnectorStops* stops = nullptr;  // into AnalysisPlan::stop_tables; null: no stops
   std::vector<ConnectorLockRule> locks;
   std::vector<ConnectorReleaseRule> failures;
@@ -116,14 +121,12 @@ struct AnalysisPlan {
   bool small_displacement = true;
   DofMap dofs;
   std::vector<ConnectorKinematics> kinematics;
-  // Some connector has friction; and friction that depends on the slip rate (friction.md §3.3:
-  // the log says so).
-  bool friction = false;
-  bool rate_dependent_friction = false;
-  std::vector<std::unique_ptr<Behavior>> behaviors;  // the laws of each section's behaviour
+  // What the laws of the model ask of the procedure, merged (procedure_needs.hpp).
+  ProcedureNeeds procedure_needs;
+  std::vector<std::unique_ptr<Behavior>> behaviors;          // the laws of each section's behaviour
   std::vector<std::unique_ptr<ConnectorStops>> stop_tables;  // one per section that has stops
   std::vector<ConnectorRecord> connectors;
-  std::vector<std::int32_t> connector_of_element;  // global element → connector record (−1)
+  std::vector<std::int32_t> connector_of_element;     // global element → connector record (−1)
   std::vector<std::optional<SpringLaw>> spring_laws;  // per *SPRING (empty when invalid)
   std::vector<SpringRecord> springs;
   std::vector<std::int32_t> spring_of_element;

@@ -58,10 +58,7 @@ std::string ConnectorElements::label(std::size_t c) const {
 
 bool is_deleted(const ConnectorRecord& r, const AnalysisState& state) {
   for (const LawSlot& slot : r.laws) {
-    if (slot.law->deletes_element(std::span<const double>(state.history_n.data() + slot.history,
-                                                          slot.law->history_size()))) {
-      return true;
-    }
+    if (slot.law->deletes_element(slot.history_in(state.history_n))) return true;
   }
   return false;
 }
@@ -164,21 +161,21 @@ EvalStatus ConnectorElements::evaluate(std::size_t c, const ElementContext& cont
     const std::size_t size = slot.law->history_size();
     BehaviorOutput out;
     out.history_new = std::span<double>(state.history.data() + slot.history, size);
-    const BehaviorInput in{motion_old,
-                           increment,
-                           context.time,
-                           context.dt,
-                           std::span<const double>(state.history_n.data() + slot.history, size),
-                           request,
-                           first ? nullptr : &law_force,
-                           first ? nullptr : &stiffness,
-                           first || !r.laws.needs_connector_forces ? nullptr : &force_stiffness,
-                           r.laws.needs_connector_forces ? &reaction : nullptr,
-                           below ? std::span<const double>(state.history.data() + below->history,
-                                                           below->law->history_size())
-                                 : std::span<const double>(),
-                           below ? below->law->history_layout()
-                                 : std::span<const HistoryVariable>()};
+    const BehaviorInput in{
+        motion_old,
+        increment,
+        context.time,
+        context.dt,
+        std::span<const double>(state.history_n.data() + slot.history, size),
+        request,
+        first ? nullptr : &law_force,
+        first ? nullptr : &stiffness,
+        first || !r.laws.needs_connector_forces ? nullptr : &force_stiffness,
+        r.laws.needs_connector_forces ? &reaction : nullptr,
+        below ? std::span<const double>(state.history.data() + below->history,
+                                        below->law->history_size())
+              : std::span<const double>(),
+        below ? below->law->history_layout() : std::span<const HistoryVariable>()};
     const IntegrationStatus status = slot.law->integrate(in, out);
     if (status == IntegrationStatus::Failure) {
       return {false, fmt::format("connector element {}: {}", label(c), out.message)};

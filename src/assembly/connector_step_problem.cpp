@@ -17,22 +17,6 @@ void ConnectorStepProblem::end_step(double period, double total_time) {
   conditions_.end_step(period, total_time);
 }
 
-ProcedureNeeds ConnectorStepProblem::procedure_needs() const {
-  ProcedureNeeds needs;
-  // A stick–slip switch can send Newton back and forth across the narrow stick band (slip
-  // tangents on both sides); a line search stops the cycle (docs/decisions.md "Friction").
-  if (system_.plan().friction) {
-    needs.line_search_iterations = 5;
-    needs.line_search_reason = "the step has friction";
-  }
-  if (system_.plan().rate_dependent_friction) {
-    needs.notes.emplace_back(
-        "the friction is rate dependent; in a *STATIC step the slip rate is "
-        "the slip of an increment over its step time (friction.md §3.3)");
-  }
-  return needs;
-}
-
 void ConnectorStepProblem::begin_increment(double step_time, double total_time, double dt,
                                            double extrapolate_scale) {
   system_.set_time(total_time, dt);

@@ -18,7 +18,7 @@ class ConnectorStepProblem final : public StepProblem {
   bool laws_symmetric() const override { return system_.plan().laws_symmetric(); }
   bool has_multipliers() const override { return system_.plan().has_multipliers; }
   void use_storage(bool symmetric) override { system_.use_storage(symmetric); }
-  ProcedureNeeds procedure_needs() const override;
+  ProcedureNeeds procedure_needs() const override { return system_.plan().procedure_needs; }
 
   void begin_increment(double step_time, double total_time, double dt,
                        double extrapolate_scale) override;

@@ -444,25 +444,35 @@ std::vector<std::string> ConnectorSystem::release_failed_components() {
   return events;
 }
 
-// The energy dissipated by the viscous regularisation of damage (*SECTION CONTROLS, VISCOSITY)
-// over the connectors that have it, so that an analyst can judge the viscosity against the
-// energy of the model.
+// What the laws' converged history adds up to over the connectors (Behavior::step_total), one
+// line per quantity in the order the laws first report it.
 std::vector<std::string> ConnectorSystem::step_summary() const {
-  double energy = 0;
-  std::size_t count = 0;
+  struct Sum {
+    StepTotal total;
+    std::size_t count = 0;
+  };
+  std::vector<Sum> sums;
   for (const ConnectorRecord& r : plan_.connectors) {
     for (const LawSlot& slot : r.laws) {
-      const int k = history_slot(slot.law->history_layout(), "regularisation energy", 0);
-      if (k < 0) continue;
-      energy += state_.history_n[slot.history + static_cast<std::size_t>(k)];
-      ++count;
+      const std::optional<StepTotal> total =
+          slot.law->step_total(slot.history_in(state_.history_n));
+      if (!total) continue;
+      auto sum = std::find_if(sums.begin(), sums.end(),
+                              [&](const Sum& s) { return s.total.what == total->what; });
+      if (sum == sums.end()) {
+        sums.push_back({*total, 1});
+      } else {
+        sum->total.value += total->value;
+        ++sum->count;
+      }
     }
   }
-  if (count == 0) return {};
-  return {
-      fmt::format("energy dissipated by the viscous regularisation of damage so far: {:.6g} "
-                  "({} connectors with VISCOSITY)",
-                  energy, count)};
+  std::vector<std::string> lines;
+  for (const Sum& sum : sums) {
+    lines.push_back(fmt::format("{}: {:.6g} ({} {})", sum.total.what, sum.total.value, sum.count,
+                                sum.total.holders));
+  }
+  return lines;
 }
 
 // behaviors.md §7.4: a node that a deleted connector leaves without stiffness makes the system
@@ -472,12 +482,11 @@ std::string ConnectorSystem::failure_note(int failed_equation) const {
   const std::int32_t node = failed_equation >= 0 && failed_equation < plan_.dofs.equations()
                                 ? plan_.dofs.node_of(failed_equation)
                                 : -1;
-  const auto trial_damage = [&](std::size_t c) {
-    for (const LawSlot& slot : plan_.connectors[c].laws) {
-      const int k = history_slot(slot.law->history_layout(), "CDMG", 0);
-      if (k >= 0) return state_.history[slot.history + static_cast<std::size_t>(k)];
-    }
-    return 0.0;
+  const auto fully_damaged = [&](std::size_t c) {
+    const LawStack& laws = plan_.connectors[c].laws;
+    return std::any_of(laws.begin(), laws.end(), [&](const LawSlot& slot) {
+      return slot.law->damage(slot.history_in(state_.history)) >= 1.0;
+    });
   };
   for (std::size_t c = 0; node >= 0 && c < plan_.connectors.size(); ++c) {
     const ConnectorRecord& r = plan_.connectors[c];
@@ -489,7 +498,7 @@ std::string ConnectorSystem::failure_note(int failed_equation) const {
       return fmt::format("after connector element {} failed (*CONNECTOR FAILURE)",
                          elements_.label(c));
     }
-    if (trial_damage(c) >= 1.0) {
+    if (fully_damaged(c)) {
       return fmt::format("connector element {} fully damaged (d=1)", elements_.label(c));
     }
   }
@@ -497,13 +506,11 @@ std::string ConnectorSystem::failure_note(int failed_equation) const {
   std::size_t softening = plan_.connectors.size();
   for (std::size_t c = 0; c < plan_.connectors.size(); ++c) {
     for (const LawSlot& slot : plan_.connectors[c].laws) {
-      const int k = history_slot(slot.law->history_layout(), "CDMG", 0);
-      if (k < 0) continue;
-      const std::size_t at = slot.history + static_cast<std::size_t>(k);
-      const double grew = state_.history[at] - state_.history_n[at];
+      const double trial = slot.law->damage(slot.history_in(state_.history));
+      const double grew = trial - slot.law->damage(slot.history_in(state_.history_n));
       if (grew > growth) {
         growth = grew;
-        largest = state_.history[at];
+        largest = trial;
         softening = c;
       }
     }
@@ -545,9 +552,7 @@ ConnectorOutput ConnectorSystem::connector_output(std::size_t connector) const {
   }
   std::size_t l = 0;
   for (const LawSlot& slot : r.laws) {
-    out.laws[l++] = {
-        slot.law->history_layout(),
-        std::span<const double>(state_.history.data() + slot.history, slot.law->history_size())};
+    out.laws[l++] = {slot.law->history_layout(), slot.history_in(state_.history)};
   }
   return out;
 }

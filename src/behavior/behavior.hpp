@@ -8,11 +8,13 @@
 #pragma once
 
 #include <limits>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 
 #include "base/small_types.hpp"
+#include "base/procedure_needs.hpp"
 #include "src/model/section_model.hpp"
 
 namespace clinch {
@@ -68,6 +70,14 @@ struct BehaviorOutput {
   std::string warning;  // a doubt about a valid result, for the run log (once per element and step)
 };
 
+// A quantity a law accumulates in its history that the run log reports after each step, summed
+// over the connectors whose law holds it: "{what}: {sum} ({count} {holders})".
+struct StepTotal {
+  std::string_view what;     // "energy dissipated by the viscous regularisation of damage so far"
+  std::string_view holders;  // "connectors with VISCOSITY"
+  double value = 0;
+};
+
 // The connector force a law's force is reported as (output-variables.md §2): CEF, CVF or CSF.
 enum class ForceKind { Elastic, Viscous, Friction };
 
@@ -87,6 +97,16 @@ class Behavior {
   // True when the committed `history` says the element is deleted (damage, behaviors.md §7.4):
   // it then contributes no force, no stiffness and no constraint rows.
   virtual bool deletes_element(std::span<const double> /*history*/) const { return false; }
+  // The damage `history` holds: the largest overall damage of the components (the scalar CDMG,
+  // output-variables.md §2), which names a softening connector when Newton fails; 0 for a law
+  // that does not damage.
+  virtual double damage(std::span<const double> /*history*/) const { return 0.0; }
+  // What `history` adds to the run log's summary of a step; none by default.
+  virtual std::optional<StepTotal> step_total(std::span<const double> /*history*/) const {
+    return std::nullopt;
+  }
+  // What the law asks of the procedure (a line search, notes for the log); nothing by default.
+  virtual ProcedureNeeds procedure_needs() const { return {}; }
   virtual IntegrationStatus integrate(const BehaviorInput& in, BehaviorOutput& out) const = 0;
 
   std::size_t history_size() const { return history_layout().size(); }

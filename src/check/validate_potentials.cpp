@@ -5,6 +5,8 @@
 // against every section that uses the behaviour, placement (potential-missing), predefined
 // friction per connection type, and unused derived components. Runs after validate_sections,
 // which fills ConnectorSection::behavior_index, available and constrained.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -15,13 +17,12 @@
 #include <unordered_map>
 #include <vector>
 
-#include <fmt/format.h>
-
 #include "base/diagnostic.hpp"
 #include "base/suggest.hpp"
+#include "src/check/validate.hpp"
+#include "src/model/default_stick_stiffness.hpp"
 #include "src/model/model.hpp"
 #include "src/model/potential_queries.hpp"
-#include "src/check/validate.hpp"
 
 namespace clinch {
 namespace {
@@ -61,8 +62,8 @@ std::string format_number(double v) { return fmt::format("{}", v); }
 // A section that uses the behaviour being checked.
 struct SectionUse {
   const ConnectorSection* section = nullptr;
-  bool two_d = false;     // CONN2D2 elements: components 3, 4, 5 do not exist
-  std::string type;       // "SLOT", "CARTESIAN, CARDAN"
+  bool two_d = false;  // CONN2D2 elements: components 3, 4, 5 do not exist
+  std::string type;    // "SLOT", "CARTESIAN, CARDAN"
 };
 
 enum class PredefinedSupport { Supported, Unsupported, Unavailable };
@@ -73,9 +74,11 @@ enum class PredefinedSupport { Supported, Unsupported, Unavailable };
 PredefinedSupport predefined_support(const ConnectorSection& section, ComponentMask* j) {
   std::vector<std::string> keys;
   for (const std::string& n : section.type_names) keys.push_back(type_key(n));
-  auto has = [&](std::string_view k) { return std::find(keys.begin(), keys.end(), k) != keys.end(); };
-  for (std::string_view assembled : {"CYLINDRICAL", "TRANSLATOR", "HINGE", "PLANAR", "UJOINT",
-                                     "SLIPRING"}) {
+  auto has = [&](std::string_view k) {
+    return std::find(keys.begin(), keys.end(), k) != keys.end();
+  };
+  for (std::string_view assembled :
+       {"CYLINDRICAL", "TRANSLATOR", "HINGE", "PLANAR", "UJOINT", "SLIPRING"}) {
     if (has(assembled)) return PredefinedSupport::Unsupported;
   }
   if (has("JOIN") && (has("REVOLUTE") || has("UNIVERSAL"))) return PredefinedSupport::Unsupported;
@@ -134,11 +137,14 @@ class BehaviorChecker {
       std::vector<const DerivedComponentTerm*> list;
       for (std::int32_t i : indices) list.push_back(&term(i));
       const DerivedType type = classify_terms(list);
-      for (std::int32_t i : indices) b_.derived_terms[static_cast<std::size_t>(i)].component_type = type;
+      for (std::int32_t i : indices)
+        b_.derived_terms[static_cast<std::size_t>(i)].component_type = type;
     }
   }
 
-  DerivedComponentTerm& term(std::int32_t i) { return b_.derived_terms[static_cast<std::size_t>(i)]; }
+  DerivedComponentTerm& term(std::int32_t i) {
+    return b_.derived_terms[static_cast<std::size_t>(i)];
+  }
 
   const std::vector<std::int32_t>* terms_of(const std::string& key) const {
     auto it = terms_.find(key);
@@ -242,12 +248,11 @@ class BehaviorChecker {
                                 "available for connection type {} (available: {}); a derived "
                                 "component used in a potential may list only available "
                                 "components",
-                                t.name.display, k, s.type,
-                                component_list(s.section->available)));
+                                t.name.display, k, s.type, component_list(s.section->available)));
           d.notes.push_back({use_loc, use_note});
-          d.notes.push_back({s.section->behavior.loc,
-                             fmt::format("connection type {} comes from this *CONNECTOR SECTION",
-                                         s.type)});
+          d.notes.push_back(
+              {s.section->behavior.loc,
+               fmt::format("connection type {} comes from this *CONNECTOR SECTION", s.type)});
         }
       }
     }
@@ -281,9 +286,8 @@ class BehaviorChecker {
         if (!names.empty()) names += ", ";
         names += term(i).name.display;
       }
-      d.notes.push_back(
-          {SourceLoc{},
-           fmt::format("derived components defined in behavior '{}': {}", b_.name.display, names)});
+      d.notes.push_back({SourceLoc{}, fmt::format("derived components defined in behavior '{}': {}",
+                                                  b_.name.display, names)});
     }
   }
 
@@ -312,17 +316,24 @@ class BehaviorChecker {
     }
     if (c.first_term < 0) return;
     switch (term(c.first_term).component_type) {
-      case DerivedType::Sum: c.type = ContributionType::Sum; c.type_known = true; break;
+      case DerivedType::Sum:
+        c.type = ContributionType::Sum;
+        c.type_known = true;
+        break;
       case DerivedType::Macauley:
-      case DerivedType::Norm: c.type = ContributionType::Norm; c.type_known = true; break;
-      case DerivedType::Mixed: break;
+      case DerivedType::Norm:
+        c.type = ContributionType::Norm;
+        c.type_known = true;
+        break;
+      case DerivedType::Mixed:
+        break;
     }
   }
 
   std::string describe_contribution(const PotentialContribution& c) {
-    const std::string source =
-        c.derived ? fmt::format("derived component '{}'", c.derived_name.display)
-                  : fmt::format("component {}", c.component);
+    const std::string source = c.derived
+                                   ? fmt::format("derived component '{}'", c.derived_name.display)
+                                   : fmt::format("component {}", c.component);
     if (c.function != PotentialFunction::None) {
       return fmt::format("H={} on {}", potential_function_name(c.function), source);
     }
@@ -371,9 +382,9 @@ class BehaviorChecker {
               DiagCode::potential_unavailable_component, c.source_loc,
               fmt::format("component {} is not available for connection type {} (available: {})",
                           c.component, s.type, component_list(s.section->available)));
-          d.notes.push_back({s.section->behavior.loc,
-                             fmt::format("connection type {} comes from this *CONNECTOR SECTION",
-                                         s.type)});
+          d.notes.push_back(
+              {s.section->behavior.loc,
+               fmt::format("connection type {} comes from this *CONNECTOR SECTION", s.type)});
           break;
         }
       } else if (c.derived && c.first_term >= 0) {
@@ -407,8 +418,8 @@ class BehaviorChecker {
             DiagCode::potential_mixed_type, c.loc,
             fmt::format("contribution {} of the potential of {} is {} ({}), but contribution {} "
                         "is {}; a plasticity or friction potential cannot mix them",
-                        i + 1, user, type_word(c.type), describe_contribution(c),
-                        first_known + 1, type_word(ref.type)));
+                        i + 1, user, type_word(c.type), describe_contribution(c), first_known + 1,
+                        type_word(ref.type)));
         d.notes.push_back({ref.loc, fmt::format("contribution {} ({}) is here", first_known + 1,
                                                 type_word(ref.type))});
       }
@@ -474,16 +485,19 @@ class BehaviorChecker {
       std::string why;
       switch (owner.kind) {
         case PotentialOwner::Kind::Plasticity:
-          why = "*CONNECTOR PLASTICITY without COMPONENT= (coupled plasticity) needs a "
-                "*CONNECTOR POTENTIAL after it";
+          why =
+              "*CONNECTOR PLASTICITY without COMPONENT= (coupled plasticity) needs a "
+              "*CONNECTOR POTENTIAL after it";
           break;
         case PotentialOwner::Kind::Friction:
-          why = "*CONNECTOR FRICTION without COMPONENT= or PREDEFINED (coupled friction) needs a "
-                "*CONNECTOR POTENTIAL after it";
+          why =
+              "*CONNECTOR FRICTION without COMPONENT= or PREDEFINED (coupled friction) needs a "
+              "*CONNECTOR POTENTIAL after it";
           break;
         case PotentialOwner::Kind::DamageInitiation:
-          why = "*CONNECTOR DAMAGE INITIATION without COMPONENT= needs a *CONNECTOR POTENTIAL "
-                "after it";
+          why =
+              "*CONNECTOR DAMAGE INITIATION without COMPONENT= needs a *CONNECTOR POTENTIAL "
+              "after it";
           break;
         case PotentialOwner::Kind::DamageEvolution:
           why = "*CONNECTOR DAMAGE EVOLUTION needs a *CONNECTOR POTENTIAL after it";
@@ -507,20 +521,21 @@ class BehaviorChecker {
       for (const SectionUse& s : sections_) {
         if (has_component(s.section->available, f.component)) continue;
         // behaviors.md §1.1: at the BEHAVIOR= value of the section, note at the option.
-        Diagnostic& d = sink_.report(
-            DiagCode::component_not_available, s.section->behavior.loc,
-            fmt::format("component {} of connector behavior '{}' is not available for "
-                        "connection type {} (available: {})",
-                        f.component, b_.name.display, s.type,
-                        component_list(s.section->available)));
-        d.notes.push_back({f.component_loc,
-                           fmt::format("*CONNECTOR FRICTION, COMPONENT={} of behavior '{}' is "
-                                       "here",
-                                       f.component, b_.name.display)});
+        Diagnostic& d =
+            sink_.report(DiagCode::component_not_available, s.section->behavior.loc,
+                         fmt::format("component {} of connector behavior '{}' is not available for "
+                                     "connection type {} (available: {})",
+                                     f.component, b_.name.display, s.type,
+                                     component_list(s.section->available)));
+        d.notes.push_back(
+            {f.component_loc, fmt::format("*CONNECTOR FRICTION, COMPONENT={} of behavior '{}' is "
+                                          "here",
+                                          f.component, b_.name.display)});
       }
     } else if (f.owner >= 0 && static_cast<std::size_t>(f.owner) < b_.potential_owners.size()) {
       const PotentialOwner& owner = b_.potential_owners[static_cast<std::size_t>(f.owner)];
-      if (owner.potential >= 0 && static_cast<std::size_t>(owner.potential) < b_.potentials.size()) {
+      if (owner.potential >= 0 &&
+          static_cast<std::size_t>(owner.potential) < b_.potentials.size()) {
         j = potential_components(b_.potentials[static_cast<std::size_t>(owner.potential)]);
       }
     }
@@ -536,12 +551,13 @@ class BehaviorChecker {
             fmt::format("contact force component {} of connector behavior '{}' is neither "
                         "available nor constrained for connection type {} (available: {}; "
                         "constrained: {})",
-                        f.contact_component, b_.name.display, s.type, component_list(s.section->available),
+                        f.contact_component, b_.name.display, s.type,
+                        component_list(s.section->available),
                         component_list(s.section->constrained)));
-        d.notes.push_back({f.contact_loc,
-                           fmt::format("*CONNECTOR FRICTION, CONTACT FORCE={} of behavior '{}' is "
-                                       "here",
-                                       f.contact_component, b_.name.display)});
+        d.notes.push_back(
+            {f.contact_loc, fmt::format("*CONNECTOR FRICTION, CONTACT FORCE={} of behavior '{}' is "
+                                        "here",
+                                        f.contact_component, b_.name.display)});
       }
     } else if (f.contact == FrictionDefinition::Contact::Derived) {
       const auto* indices = terms_of(f.contact_name.key);
@@ -581,7 +597,7 @@ class BehaviorChecker {
                    "*CONNECTOR FRICTION has no *FRICTION law; add *FRICTION with the friction "
                    "coefficient");
     }
-    if (!f.stick_stiffness && !f.stick_stiffness_loc.valid()) default_stick_stiffness(f, j);
+    if (!f.stick_stiffness && !f.stick_stiffness_loc.valid()) report_default_stick_stiffness(f, j);
     // A connector's law stack holds the elastic-plastic law and at most kMaxFrictions friction
     // laws (src/assembly/analysis_plan.hpp).
     if (index == kMaxFrictions) {
@@ -615,49 +631,21 @@ class BehaviorChecker {
                              fmt::format("connection type {} has no predefined friction; use "
                                          "COMPONENT= or a *CONNECTOR POTENTIAL",
                                          s.type));
-      d.notes.push_back({s.section->behavior.loc,
-                         fmt::format("connection type {} comes from this *CONNECTOR SECTION",
-                                     s.type)});
+      d.notes.push_back(
+          {s.section->behavior.loc,
+           fmt::format("connection type {} comes from this *CONNECTOR SECTION", s.type)});
     }
   }
 
-  // Linear elastic stiffness of each component from the behaviour's *CONNECTOR ELASTICITY
-  // options: an uncoupled linear one, or the diagonal of a coupled one (behaviors.md §4).
-  std::array<double, 6> linear_stiffness() const {
-    std::array<double, 6> k{};
-    for (const ConnectorElasticity& e : b_.elasticities) {
-      if (!e.valid) continue;
-      if (e.kind == ConnectorElasticity::Kind::Linear && e.component >= 1 && e.component <= 6) {
-        k[static_cast<std::size_t>(e.component - 1)] = e.stiffness;
-      } else if (e.kind == ConnectorElasticity::Kind::Coupled) {
-        for (std::size_t i = 0; i < 6; ++i) k[i] = e.coupled[i][i];
-      }
-    }
-    return k;
-  }
-
-  // friction.md §5 (a clinch rule, always announced so that golden comparisons can pin it):
-  // k_j = 1000·K_ref,j, with K_ref,j the linear elastic stiffness of j, or else the largest one
-  // of the same kind (translational 1–3, rotational 4–6); 1.0e6 when there is none.
-  void default_stick_stiffness(FrictionDefinition& f, ComponentMask j) {
-    const std::array<double, 6> k = linear_stiffness();
-    double largest[2] = {0.0, 0.0};
-    for (std::size_t i = 0; i < 6; ++i) largest[i / 3] = std::max(largest[i / 3], k[i]);
-    bool fallback = false;
-    for (std::size_t i = 0; i < 6; ++i) {
-      const double ref = k[i] > 0.0 ? k[i] : largest[i / 3];
-      if (ref > 0.0) {
-        f.default_stick_stiffness[i] = 1000.0 * ref;
-      } else {
-        f.default_stick_stiffness[i] = 1.0e6;
-        if (has_component(j, static_cast<int>(i) + 1)) fallback = true;
-      }
-    }
+  // friction.md §5: the warning names the stick stiffness the run will use.
+  void report_default_stick_stiffness(const FrictionDefinition& f, ComponentMask j) {
+    const DefaultStickStiffness stiffness = default_stick_stiffness(b_);
+    const bool fallback = (stiffness.fallback & j) != 0;
     // Name the value per component; components that share a value are listed together.
     std::vector<std::pair<double, std::string>> groups;
     for (int c = 1; c <= 6; ++c) {
       if (!has_component(j, c)) continue;
-      const double value = f.default_stick_stiffness[static_cast<std::size_t>(c - 1)];
+      const double value = stiffness.value[static_cast<std::size_t>(c - 1)];
       auto it = std::find_if(groups.begin(), groups.end(),
                              [&](const auto& g) { return g.first == value; });
       if (it == groups.end()) {
@@ -685,9 +673,9 @@ class BehaviorChecker {
       bool referenced = false;
       for (std::int32_t t : terms_[term(i).name.key]) referenced = referenced || term(t).referenced;
       if (referenced) continue;
-      sink_.report(DiagCode::defined_but_unused, term(i).loc,
-                   fmt::format("derived component '{}' is defined but never used",
-                               term(i).name.display));
+      sink_.report(
+          DiagCode::defined_but_unused, term(i).loc,
+          fmt::format("derived component '{}' is defined but never used", term(i).name.display));
     }
   }
 

@@ -363,9 +363,8 @@ class Driver {
   double step_time_ = 0.0;    // of the step, at the last converged increment
   double previous_dt_ = 0.0;  // the last converged increment (extrapolation)
   RunResult result_;
-  std::set<std::size_t> warned_;
-  LineSearchControls line_search_;  // this step's, with clinch's choice for friction  // elements
-                                    // whose law warning this step's log already has
+  std::set<std::size_t> warned_;    // elements whose law warning this step's log already has
+  LineSearchControls line_search_;  // this step's, with what the laws ask for
 };
 
 }  // namespace

@@ -8,18 +8,11 @@
 #include <string>
 #include <vector>
 
+#include "base/procedure_needs.hpp"
 #include "src/solver/newton.hpp"
 #include "src/solver/nonlinear_problem.hpp"
 
 namespace clinch {
-
-// What the laws of the model ask of every step's procedure: a line search of so many iterations
-// unless the deck sets one (0: none), and why; notes for the step's log.
-struct ProcedureNeeds {
-  int line_search_iterations = 0;
-  std::string line_search_reason;
-  std::vector<std::string> notes;
-};
 
 class StepProblem {
  public:
@@ -36,6 +29,7 @@ class StepProblem {
   // Stores the tangent as an upper triangle (symmetric) or in full from the next evaluation on;
   // NonlinearProblem::pattern() is then that storage's.
   virtual void use_storage(bool symmetric) = 0;
+  // What the laws of the model ask of every step's procedure (a line search, notes for the log).
   virtual ProcedureNeeds procedure_needs() const = 0;
 
   // ---- an increment ----

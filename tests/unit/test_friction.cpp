@@ -7,13 +7,14 @@
 #include <string>
 #include <vector>
 
-#include "parser/deck_reader.hpp"
-#include "tests/unit/checked_deck.hpp"
 #include "base/diagnostic.hpp"
+#include "parser/deck_reader.hpp"
 #include "parser/source_manager.hpp"
+#include "src/check/validate.hpp"
+#include "src/model/default_stick_stiffness.hpp"
 #include "src/model/model.hpp"
 #include "src/model/potential_queries.hpp"
-#include "src/check/validate.hpp"
+#include "tests/unit/checked_deck.hpp"
 
 namespace clinch {
 namespace {
@@ -24,8 +25,8 @@ struct Deck : CheckedDeck {
 
 std::unique_ptr<Deck> read(const std::string& body) {
   auto deck = std::make_unique<Deck>();
-  read_deck_text("t.inp", "*CONNECTOR BEHAVIOR, NAME=FRIC\n" + body, deck->sources,
-                 deck->model, deck->sink);
+  read_deck_text("t.inp", "*CONNECTOR BEHAVIOR, NAME=FRIC\n" + body, deck->sources, deck->model,
+                 deck->sink);
   return deck;
 }
 
@@ -36,7 +37,8 @@ void expect_at(const Diagnostic* d, std::uint32_t line, std::uint32_t column,
   EXPECT_EQ(d->loc.column, column) << d->message << "\n" << dump;
 }
 
-// --- the three forms ------------------------------------------------------------------------------
+// --- the three forms
+// ------------------------------------------------------------------------------
 
 TEST(ConnectorFriction, PredefinedForm) {
   auto deck = read("*CONNECTOR FRICTION, PREDEFINED, STICK STIFFNESS=1.0e4\n*FRICTION\n0.3\n");
@@ -82,9 +84,9 @@ TEST(ConnectorFriction, UncoupledFormWithContactComponentAndInternalForce) {
 TEST(ConnectorFriction, CoupledFormWithDerivedContactForce) {
   auto deck = read(
       "*CONNECTOR FRICTION, CONTACT FORCE=PRESS, STICK STIFFNESS=1.0e5\n"  // 2
-      "*CONNECTOR POTENTIAL\n2\n3\n"                                        // 3
-      "*FRICTION, TAUMAX=50.0\n0.2\n"                                       // 6
-      "*CONNECTOR DERIVED COMPONENT, NAME=PRESS\n1\n1.0\n");                // 8
+      "*CONNECTOR POTENTIAL\n2\n3\n"                                       // 3
+      "*FRICTION, TAUMAX=50.0\n0.2\n"                                      // 6
+      "*CONNECTOR DERIVED COMPONENT, NAME=PRESS\n1\n1.0\n");               // 8
   const ConnectorBehavior& b = deck->behavior();
   const FrictionDefinition& f = b.frictions.at(0);
   EXPECT_EQ(f.contact, FrictionDefinition::Contact::Derived);
@@ -122,17 +124,20 @@ TEST(ConnectorFriction, PotentialNotAllowedAfterPredefined) {
   EXPECT_NE(d->message.find("PREDEFINED"), std::string::npos);
 }
 
-// --- keyword-line checks ----------------------------------------------------------------------------
+// --- keyword-line checks
+// ----------------------------------------------------------------------------
 
 TEST(ConnectorFriction, ExclusiveAtTheParameter) {
-  auto deck = read("*CONNECTOR FRICTION, PREDEFINED, COMPONENT=1, STICK STIFFNESS=1.\n"
-                   "*FRICTION\n0.1\n");
+  auto deck = read(
+      "*CONNECTOR FRICTION, PREDEFINED, COMPONENT=1, STICK STIFFNESS=1.\n"
+      "*FRICTION\n0.1\n");
   expect_at(deck->first(DiagCode::friction_exclusive), 2, 34, deck->dump());
 }
 
 TEST(ConnectorFriction, StickStiffnessAtTheValue) {
-  auto deck = read("*CONNECTOR FRICTION, COMPONENT=1, STICK STIFFNESS=-5.0\n10.\n"
-                   "*FRICTION\n0.1\n");
+  auto deck = read(
+      "*CONNECTOR FRICTION, COMPONENT=1, STICK STIFFNESS=-5.0\n10.\n"
+      "*FRICTION\n0.1\n");
   const Diagnostic* d = deck->first(DiagCode::friction_stick_stiffness);
   expect_at(d, 2, 51, deck->dump());
   EXPECT_EQ(deck->first(DiagCode::friction_default_stick_stiffness), nullptr);
@@ -156,8 +161,9 @@ TEST(ConnectorFriction, ComponentOutOfRangeAtTheValue) {
 }
 
 TEST(ConnectorFriction, IndependentComponentsUnsupported) {
-  auto deck = read("*CONNECTOR FRICTION, COMPONENT=1, INDEPENDENT COMPONENTS=POSITION, "
-                   "STICK STIFFNESS=1.\n1\n10., 0.\n*FRICTION\n0.1\n");
+  auto deck = read(
+      "*CONNECTOR FRICTION, COMPONENT=1, INDEPENDENT COMPONENTS=POSITION, "
+      "STICK STIFFNESS=1.\n1\n10., 0.\n*FRICTION\n0.1\n");
   expect_at(deck->first(DiagCode::unsupported_option), 2, 35, deck->dump());
 }
 
@@ -168,26 +174,29 @@ TEST(ConnectorFriction, DefaultStickStiffnessNamesTheValue) {
   const Diagnostic* d = deck->first(DiagCode::friction_default_stick_stiffness);
   expect_at(d, 4, 1, deck->dump());
   EXPECT_EQ(d->message, "STICK STIFFNESS omitted; using 2e+06 for component 1");
-  EXPECT_DOUBLE_EQ(deck->behavior().frictions.at(0).default_stick_stiffness[0], 2.0e6);
+  EXPECT_DOUBLE_EQ(default_stick_stiffness(deck->behavior()).value[0], 2.0e6);
 
   auto bare = read("*CONNECTOR FRICTION, COMPONENT=2\n10.\n*FRICTION\n0.1\n");
   const Diagnostic* e = bare->first(DiagCode::friction_default_stick_stiffness);
   ASSERT_NE(e, nullptr) << bare->dump();
-  EXPECT_EQ(e->message, "STICK STIFFNESS omitted; using 1e+06 for component 2 (no connector "
-                        "elasticity to scale from)");
+  EXPECT_EQ(e->message,
+            "STICK STIFFNESS omitted; using 1e+06 for component 2 (no connector "
+            "elasticity to scale from)");
 }
 
 TEST(ConnectorFriction, ExplicitOnlyParametersWarn) {
-  auto deck = read("*CONNECTOR FRICTION, COMPONENT=1, STICK STIFFNESS=1., RTOL=0.1\n10.\n"
-                   "*FRICTION\n0.1\n");
+  auto deck = read(
+      "*CONNECTOR FRICTION, COMPONENT=1, STICK STIFFNESS=1., RTOL=0.1\n10.\n"
+      "*FRICTION\n0.1\n");
   expect_at(deck->first(DiagCode::explicit_only_parameter), 2, 55, deck->dump());
 }
 
 // --- internal contact force ---------------------------------------------------------------------
 
 TEST(ConnectorFriction, InternalForceTable) {
-  auto deck = read("*CONNECTOR FRICTION, COMPONENT=1, STICK STIFFNESS=1.\n"
-                   "10., 0.\n20., 0.5\n15., 0.5\n-1.\n*FRICTION\n0.1\n");
+  auto deck = read(
+      "*CONNECTOR FRICTION, COMPONENT=1, STICK STIFFNESS=1.\n"
+      "10., 0.\n20., 0.5\n15., 0.5\n-1.\n*FRICTION\n0.1\n");
   const Diagnostic* d = deck->first(DiagCode::table_not_increasing);
   expect_at(d, 5, 6, deck->dump());
   expect_at(deck->first(DiagCode::friction_negative_internal), 6, 1, deck->dump());
@@ -199,16 +208,18 @@ TEST(ConnectorFriction, ZeroContactWarning) {
 }
 
 TEST(ConnectorFriction, TemperatureColumnOfInternalForce) {
-  auto deck = read("*CONNECTOR FRICTION, COMPONENT=1, STICK STIFFNESS=1.\n"
-                   "10., 0., 20.\n12., 1., 30.\n*FRICTION\n0.1\n");
+  auto deck = read(
+      "*CONNECTOR FRICTION, COMPONENT=1, STICK STIFFNESS=1.\n"
+      "10., 0., 20.\n12., 1., 30.\n*FRICTION\n0.1\n");
   expect_at(deck->first(DiagCode::unsupported_dependencies), 4, 10, deck->dump());
 }
 
 // --- *FRICTION ----------------------------------------------------------------------------------
 
 TEST(FrictionLaw, TabularInSlipRate) {
-  auto deck = read("*CONNECTOR FRICTION, COMPONENT=1, STICK STIFFNESS=1.\n10.\n"
-                   "*FRICTION\n0.3, 0.0\n0.2, 1.0\n0.1, 2.0\n");
+  auto deck = read(
+      "*CONNECTOR FRICTION, COMPONENT=1, STICK STIFFNESS=1.\n10.\n"
+      "*FRICTION\n0.3, 0.0\n0.2, 1.0\n0.1, 2.0\n");
   const FrictionLaw& law = deck->behavior().frictions.at(0).law;
   EXPECT_EQ(law.variable, FrictionLaw::Variable::SlipRate);
   EXPECT_EQ(law.mu, std::vector<double>({0.3, 0.2, 0.1}));
@@ -217,32 +228,38 @@ TEST(FrictionLaw, TabularInSlipRate) {
 }
 
 TEST(FrictionLaw, TableChecks) {
-  auto both = read("*CONNECTOR FRICTION, COMPONENT=1, STICK STIFFNESS=1.\n10.\n"
-                   "*FRICTION\n0.3, 0.0, 0.0\n0.2, 1.0, 5.0\n");
+  auto both = read(
+      "*CONNECTOR FRICTION, COMPONENT=1, STICK STIFFNESS=1.\n10.\n"
+      "*FRICTION\n0.3, 0.0, 0.0\n0.2, 1.0, 5.0\n");
   expect_at(both->first(DiagCode::unsupported_dependencies), 4, 1, both->dump());
-  auto falling = read("*CONNECTOR FRICTION, COMPONENT=1, STICK STIFFNESS=1.\n10.\n"
-                      "*FRICTION\n0.3, , 10.\n0.2, , 5.0\n");
+  auto falling = read(
+      "*CONNECTOR FRICTION, COMPONENT=1, STICK STIFFNESS=1.\n10.\n"
+      "*FRICTION\n0.3, , 10.\n0.2, , 5.0\n");
   expect_at(falling->first(DiagCode::table_not_increasing), 6, 8, falling->dump());
-  auto negative = read("*CONNECTOR FRICTION, COMPONENT=1, STICK STIFFNESS=1.\n10.\n"
-                       "*FRICTION\n-0.3\n");
+  auto negative = read(
+      "*CONNECTOR FRICTION, COMPONENT=1, STICK STIFFNESS=1.\n10.\n"
+      "*FRICTION\n-0.3\n");
   expect_at(negative->first(DiagCode::friction_negative_mu), 5, 1, negative->dump());
 }
 
 TEST(FrictionLaw, ExponentialDecayChecks) {
-  auto deck = read("*CONNECTOR FRICTION, COMPONENT=1, STICK STIFFNESS=1.\n10.\n"
-                   "*FRICTION, EXPONENTIAL DECAY\n0.2, 0.4, -1.0\n");
+  auto deck = read(
+      "*CONNECTOR FRICTION, COMPONENT=1, STICK STIFFNESS=1.\n10.\n"
+      "*FRICTION, EXPONENTIAL DECAY\n0.2, 0.4, -1.0\n");
   expect_at(deck->first(DiagCode::friction_negative_mu), 5, 11, deck->dump());
   expect_at(deck->first(DiagCode::friction_decay_increasing), 5, 1, deck->dump());
-  auto missing = read("*CONNECTOR FRICTION, COMPONENT=1, STICK STIFFNESS=1.\n10.\n"
-                      "*FRICTION, EXPONENTIAL DECAY\n0.4, 0.2\n");
+  auto missing = read(
+      "*CONNECTOR FRICTION, COMPONENT=1, STICK STIFFNESS=1.\n10.\n"
+      "*FRICTION, EXPONENTIAL DECAY\n0.4, 0.2\n");
   expect_at(missing->first(DiagCode::missing_field), 5, 9, missing->dump());
 }
 
 TEST(FrictionLaw, MissingAndDuplicateLaw) {
   auto missing = read("*CONNECTOR FRICTION, COMPONENT=1, STICK STIFFNESS=1.\n10.\n");
   expect_at(missing->first(DiagCode::friction_missing_law), 2, 1, missing->dump());
-  auto twice = read("*CONNECTOR FRICTION, COMPONENT=1, STICK STIFFNESS=1.\n10.\n"
-                    "*FRICTION\n0.1\n*FRICTION\n0.2\n");
+  auto twice = read(
+      "*CONNECTOR FRICTION, COMPONENT=1, STICK STIFFNESS=1.\n10.\n"
+      "*FRICTION\n0.1\n*FRICTION\n0.2\n");
   const Diagnostic* d = twice->first(DiagCode::friction_law_duplicate);
   expect_at(d, 6, 1, twice->dump());
   ASSERT_EQ(d->notes.size(), 1u);
@@ -256,11 +273,13 @@ TEST(FrictionLaw, NoDataLine) {
 }
 
 TEST(FrictionLaw, IgnoredAndRejectedParameters) {
-  auto deck = read("*CONNECTOR FRICTION, COMPONENT=1, STICK STIFFNESS=1.\n10.\n"
-                   "*FRICTION, SLIP TOLERANCE=0.005\n0.1\n");
+  auto deck = read(
+      "*CONNECTOR FRICTION, COMPONENT=1, STICK STIFFNESS=1.\n10.\n"
+      "*FRICTION, SLIP TOLERANCE=0.005\n0.1\n");
   expect_at(deck->first(DiagCode::friction_option_ignored), 4, 12, deck->dump());
-  auto aniso = read("*CONNECTOR FRICTION, COMPONENT=1, STICK STIFFNESS=1.\n10.\n"
-                    "*FRICTION, ANISOTROPIC\n0.1, 0.2\n");
+  auto aniso = read(
+      "*CONNECTOR FRICTION, COMPONENT=1, STICK STIFFNESS=1.\n10.\n"
+      "*FRICTION, ANISOTROPIC\n0.1, 0.2\n");
   const Diagnostic* d = aniso->first(DiagCode::unsupported_option);
   expect_at(d, 4, 12, aniso->dump());
   EXPECT_NE(d->message.find("use a *CONNECTOR POTENTIAL for directional friction"),
@@ -318,8 +337,7 @@ FrictionDefinition& add_friction(Model& model) {
 }
 
 TEST(FrictionTypes, ComponentNotAvailableAtTheSectionBehaviorValue) {
-  Model model = model_with_section({"SLOT"}, component_bit(1),
-                                   component_bit(2) | component_bit(3));
+  Model model = model_with_section({"SLOT"}, component_bit(1), component_bit(2) | component_bit(3));
   FrictionDefinition& f = add_friction(model);
   f.component = 2;
   f.component_loc = SourceLoc{0, 10, 22};
@@ -331,8 +349,9 @@ TEST(FrictionTypes, ComponentNotAvailableAtTheSectionBehaviorValue) {
   EXPECT_EQ(d.code, DiagCode::component_not_available);
   EXPECT_EQ(d.loc.line, 30u);
   EXPECT_EQ(d.loc.column, 40u);
-  EXPECT_EQ(d.message, "component 2 of connector behavior 'FRIC' is not available for "
-                       "connection type SLOT (available: 1)");
+  EXPECT_EQ(d.message,
+            "component 2 of connector behavior 'FRIC' is not available for "
+            "connection type SLOT (available: 1)");
   ASSERT_EQ(d.notes.size(), 1u);
   EXPECT_EQ(d.notes[0].loc.column, 22u);
 }
@@ -345,7 +364,8 @@ TEST(FrictionTypes, PredefinedPerConnectionType) {
   };
   const std::vector<Case> cases = {
       {{"SLOT"}, DiagCode::unknown_keyword, component_bit(1)},
-      {{"SLIDE-PLANE"}, DiagCode::unknown_keyword,
+      {{"SLIDE-PLANE"},
+       DiagCode::unknown_keyword,
        static_cast<ComponentMask>(component_bit(2) | component_bit(3))},
       {{"SLOT", "CARDAN"}, DiagCode::unknown_keyword, component_bit(1)},
       {{"SLOT", "REVOLUTE"}, DiagCode::unsupported_option, 0},
@@ -388,8 +408,8 @@ TEST(FrictionTypes, PredefinedUnavailableMessage) {
 }
 
 TEST(FrictionTypes, ContactForceNameUndefinedSuggestsTheDefinition) {
-  Model model = model_with_section({"SLIDE-PLANE"}, component_bit(2) | component_bit(3),
-                                   component_bit(1));
+  Model model =
+      model_with_section({"SLIDE-PLANE"}, component_bit(2) | component_bit(3), component_bit(1));
   ConnectorBehavior& b = model.behaviors.behaviors[0];
   DerivedComponentTerm t;
   t.name = Name{"PRESS", "PRESS", SourceLoc{0, 47, 36}};
@@ -420,8 +440,7 @@ TEST(FrictionTypes, ContactForceNameUndefinedSuggestsTheDefinition) {
 }
 
 TEST(FrictionTypes, ContactForceMayListConstrainedComponents) {
-  Model model = model_with_section({"SLOT"}, component_bit(1),
-                                   component_bit(2) | component_bit(3));
+  Model model = model_with_section({"SLOT"}, component_bit(1), component_bit(2) | component_bit(3));
   ConnectorBehavior& b = model.behaviors.behaviors[0];
   DerivedComponentTerm t;
   t.name = Name{"N", "N", SourceLoc{0, 47, 36}};

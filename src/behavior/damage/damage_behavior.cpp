@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstring>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "src/behavior/damage/damage_degradation.hpp"
@@ -65,6 +66,14 @@ class DamageBehavior final : public Behavior {
   bool needs_connector_forces() const override { return force_criterion_; }
   bool deletes_element(std::span<const double> history) const override {
     return history[deleted_] != 0;
+  }
+  double damage(std::span<const double> history) const override { return history[damage_]; }
+  // The energy the viscous regularisation dissipated, so that an analyst can judge the
+  // VISCOSITY against the energy of the model.
+  std::optional<StepTotal> step_total(std::span<const double> history) const override {
+    if (controls_.viscosity <= 0) return std::nullopt;
+    return StepTotal{"energy dissipated by the viscous regularisation of damage so far",
+                     "connectors with VISCOSITY", history[regularisation_]};
   }
 
   IntegrationStatus integrate(const BehaviorInput& in, BehaviorOutput& out) const override {

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <string>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -16,12 +16,16 @@
 #include "src/behavior/plastic/multi_surface_return.hpp"
 #include "src/behavior/plastic/uncoupled_return_mapping.hpp"
 #include "src/behavior/potential/connector_potential.hpp"
+#include "src/model/default_stick_stiffness.hpp"
 
 namespace clinch {
 namespace {
 
 // §4.1 step 3: an exact tie (trial on the surface) sticks.
 constexpr double kStickTolerance = 1e-12;
+// A stick–slip switch can send Newton back and forth across the narrow stick band (slip tangents
+// on both sides); a line search stops the cycle (docs/decisions.md "Friction").
+constexpr int kLineSearchIterations = 5;
 
 class FrictionBehavior final : public Behavior {
  public:
@@ -63,6 +67,15 @@ class FrictionBehavior final : public Behavior {
   bool tangent_is_symmetric() const override { return !contact_.present(); }
   bool needs_connector_forces() const override { return contact_.present(); }
   ForceKind force_kind() const override { return ForceKind::Friction; }
+  ProcedureNeeds procedure_needs() const override {
+    ProcedureNeeds needs{kLineSearchIterations, "the step has friction", {}};
+    if (capacity_.coefficient.depends_on_rate()) {
+      needs.notes.push_back(
+          "the friction is rate dependent; in a *STATIC step the slip rate is the slip of an "
+          "increment over its step time (friction.md §3.3)");
+    }
+    return needs;
+  }
 
   IntegrationStatus integrate(const BehaviorInput& in, BehaviorOutput& out) const override;
 
@@ -111,8 +124,8 @@ class FrictionBehavior final : public Behavior {
 // §4.1 step 4, closed form: with P = |f_J| and K_s = k·I the return is radial, and
 // |f_tr| − kΔλ − F_lim(γ_n + Δλ) = 0 is the scalar equation of the uncoupled plastic return.
 IntegrationStatus FrictionBehavior::radial_slip(const Vector6& trial,
-                                                const FrictionCapacity& capacity,
-                                                double slip_old, bool want_tangent, Slip& slip,
+                                                const FrictionCapacity& capacity, double slip_old,
+                                                bool want_tangent, Slip& slip,
                                                 std::string& message) const {
   int first = 0;
   while (!has_component(components_, first + 1)) ++first;
@@ -129,8 +142,9 @@ IntegrationStatus FrictionBehavior::radial_slip(const Vector6& trial,
     return IntegrationStatus::Failure;
   }
   if (!(r.tangent_denominator > 0)) {
-    message = name_ + ": friction softening exceeds stick stiffness; increase STICK STIFFNESS "
-                      "or the time increment";
+    message = name_ +
+              ": friction softening exceeds stick stiffness; increase STICK STIFFNESS "
+              "or the time increment";
     return IntegrationStatus::Failure;
   }
   const Vector6 e = trial / size;
@@ -144,8 +158,8 @@ IntegrationStatus FrictionBehavior::radial_slip(const Vector6& trial,
     const double h = r.tangent_denominator - k;
     const Matrix6 radial = e * e.transpose();
     const Matrix6 on_j = mask_vector(components_).asDiagonal();
-    slip.tangent = (k * h / r.tangent_denominator) * radial +
-                   (magnitude * k / size) * (on_j - radial);
+    slip.tangent =
+        (k * h / r.tangent_denominator) * radial + (magnitude * k / size) * (on_j - radial);
     slip.sensitivity = (k / r.tangent_denominator) * e;
   }
   return IntegrationStatus::Success;
@@ -156,7 +170,8 @@ IntegrationStatus FrictionBehavior::integrate(const BehaviorInput& in, BehaviorO
   const Vector6 u = in.motion_old + in.increment;
   const auto old_value = [&](int slot) { return in.history_old[static_cast<std::size_t>(slot)]; };
   Vector6 slip_old = Vector6::Zero();
-  for (int s = 0; s < count_; ++s) slip_old[layout_[static_cast<std::size_t>(s)].component - 1] = old_value(s);
+  for (int s = 0; s < count_; ++s)
+    slip_old[layout_[static_cast<std::size_t>(s)].component - 1] = old_value(s);
   const double gamma_old = old_value(count_);
 
   // §2.2: the contact measure on the connector force without this definition's own friction:
@@ -171,7 +186,8 @@ IntegrationStatus FrictionBehavior::integrate(const BehaviorInput& in, BehaviorO
   if (n == 0) contact_gradient.setZero();
   const FrictionCapacity capacity(capacity_, contact, gamma_old, in.dt);
 
-  const Vector6 trial = stiffness_.cwiseProduct(u - slip_old).cwiseProduct(mask_vector(components_));
+  const Vector6 trial =
+      stiffness_.cwiseProduct(u - slip_old).cwiseProduct(mask_vector(components_));
   const double size = measure(trial);
   const YieldSample stick_capacity = capacity.at(gamma_old);
 
@@ -180,8 +196,8 @@ IntegrationStatus FrictionBehavior::integrate(const BehaviorInput& in, BehaviorO
   // of the motion is slip, and the tangent is 0 (the stick range has zero width). A capacity below
   // the stick test's resolution of the trial, 1e-12·P(f_tr) (step 3), counts as none: a contact
   // force that is a constraint reaction of round-off size gives such a capacity.
-  const bool no_capacity = stick_capacity.slope <= 0 &&
-                           stick_capacity.value <= kStickTolerance * size;
+  const bool no_capacity =
+      stick_capacity.slope <= 0 && stick_capacity.value <= kStickTolerance * size;
   // §6: CSLIPST = 1 when the increment slips, which without capacity is any motion at all.
   bool slipping = no_capacity ? size > 0
                               : size - stick_capacity.value >
@@ -191,7 +207,8 @@ IntegrationStatus FrictionBehavior::integrate(const BehaviorInput& in, BehaviorO
   if (no_capacity) {
     slip_new = u.cwiseProduct(mask_vector(components_));
     double mean = 0;
-    for (int s = 0; s < count_; ++s) mean += stiffness_[layout_[static_cast<std::size_t>(s)].component - 1];
+    for (int s = 0; s < count_; ++s)
+      mean += stiffness_[layout_[static_cast<std::size_t>(s)].component - 1];
     gamma = gamma_old + size / (mean / count_);
   } else if (!slipping) {
     slip.force = trial;
@@ -258,7 +275,8 @@ IntegrationStatus FrictionBehavior::integrate(const BehaviorInput& in, BehaviorO
   return IntegrationStatus::Success;
 }
 
-const Potential* friction_potential(const ConnectorBehavior& behavior, const FrictionDefinition& f) {
+const Potential* friction_potential(const ConnectorBehavior& behavior,
+                                    const FrictionDefinition& f) {
   if (f.owner < 0) return nullptr;
   const PotentialOwner& owner = behavior.potential_owners[static_cast<std::size_t>(f.owner)];
   return owner.potential >= 0 ? &behavior.potentials[static_cast<std::size_t>(owner.potential)]
@@ -274,9 +292,11 @@ std::unique_ptr<Behavior> make_friction_behavior(const ConnectorBehavior& behavi
   const auto components = static_cast<ComponentMask>(f.friction_components & available);
   if (components == 0) return nullptr;
   Vector6 stiffness = Vector6::Ones();
-  for (int i = 0; i < 6; ++i) {
-    stiffness[i] = f.stick_stiffness ? *f.stick_stiffness
-                                     : f.default_stick_stiffness[static_cast<std::size_t>(i)];
+  if (f.stick_stiffness) {
+    stiffness.setConstant(*f.stick_stiffness);
+  } else {
+    const DefaultStickStiffness defaults = default_stick_stiffness(behavior);
+    for (int i = 0; i < 6; ++i) stiffness[i] = defaults.value[static_cast<std::size_t>(i)];
   }
   std::optional<ConnectorPotential> potential;
   if (!f.predefined && f.component == 0) {

@@ -1,0 +1,23 @@
+// The stick stiffness of a *CONNECTOR FRICTION that omits STICK STIFFNESS (friction.md §5, a
+// clinch rule): the friction law uses it, and validation reports it with the warning
+// friction-default-stick-stiffness so that golden comparisons can pin it.
+#pragma once
+
+#include <array>
+
+#include "src/model/behavior_model.hpp"
+#include "src/model/section_model.hpp"
+
+namespace clinch {
+
+struct DefaultStickStiffness {
+  std::array<double, 6> value{};  // k_j of components 1…6
+  ComponentMask fallback = 0;     // components without an elasticity to scale from (1.0e6)
+};
+
+// k_j = 1000·K_ref,j, with K_ref,j the linear elastic stiffness of j in `behavior` (the diagonal
+// of a coupled one), or else the largest one of the same kind (translational 1–3, rotational
+// 4–6); 1.0e6 when there is none.
+DefaultStickStiffness default_stick_stiffness(const ConnectorBehavior& behavior);
+
+}  // namespace clinch
