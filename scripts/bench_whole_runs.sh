@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Whole-run wall time of two clinch binaries, before against after, on three runs:
-#   lattice     `clinch run` of the nonlinear SPRINGA lattice with N = 30 (generate_lattice, as in
-#               scripts/bench_lattice.sh; 327 236 springs, 75 600 free DOFs)
+#   lattice     `clinch run` of the nonlinear SPRINGA lattice, by default with N = 30
+#               (generate_lattice, as in scripts/bench_lattice.sh; 327 236 springs, 75 600 free
+#               DOFs)
 #   spot_welds  `clinch run` of 2000 spot welds loaded past first yield in 20 fixed increments
 #               (decks/bench/generate_spot_welds.py; 24 000 DOFs)
 #   check_1e6   `clinch check` of the 10^6-connector deck of generate_connector_deck
@@ -14,8 +15,9 @@
 # compared: the largest difference over the column's largest |value|.
 # Usage: scripts/bench_whole_runs.sh BEFORE_CLINCH AFTER_CLINCH
 # Environment: CLINCH_BUILD_DIR (default build) for generate_lattice and generate_connector_deck,
-# WHOLE_RUNS (5 per binary), WHOLE_CASES (default "lattice spot_welds check_1e6"),
-# WHOLE_KEEP=DIR to keep decks and outputs.
+# WHOLE_RUNS (5 per binary), WHOLE_CASES (default "lattice spot_welds check_1e6"), WHOLE_LATTICE
+# (generate_lattice's size and shape, default "--n 30"; e.g. "--n 20 --jitter 0.2 --patch 0.5
+# --seed 1" for the irregular lattice), WHOLE_KEEP=DIR to keep decks and outputs.
 set -euo pipefail
 if (($# != 2)); then
   echo "usage: $0 BEFORE_CLINCH AFTER_CLINCH" >&2
@@ -48,7 +50,9 @@ median() { sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
 prepare() {
   case $1 in
     lattice)
-      "$bin/generate_lattice" --n 30 --element springa --law nonlinear --out "$dir/lattice.inp" ;;
+      # shellcheck disable=SC2086
+      "$bin/generate_lattice" ${WHOLE_LATTICE:---n 30} --element springa --law nonlinear \
+        --out "$dir/lattice.inp" ;;
     spot_welds)
       python3 decks/bench/generate_spot_welds.py --welds 2000 --increments 20 \
         --out "$dir/spot_welds.inp" ;;
