@@ -8,7 +8,7 @@
 #include <set>
 
 #include "src/solver/convergence_criteria.hpp"
-#include "src/solver/static_time_stepper.hpp"
+#include "src/solver/time_stepper.hpp"
 
 namespace clinch {
 namespace {
@@ -130,8 +130,8 @@ class Driver {
     const StaticProcedure procedure = step.procedure.value_or(StaticProcedure{});
     const int step_number = static_cast<int>(s) + 1;
     if (!begin_step(step, procedure, step_number)) return false;
-    StaticTimeStepper stepper(
-        StaticTimeSettings::of(procedure, step.max_increments, step.controls.time));
+    const std::unique_ptr<TimeStepper> time_stepper = time_stepper_for(step);
+    TimeStepper& stepper = *time_stepper;
     Attempted last;
     const int cutbacks_before = result_.cutbacks;
     int attempt_number = 0;
@@ -278,8 +278,7 @@ class Driver {
 
   // A converged increment: commit, tell the outputs (its row, then its status line:
   // run_outputs.hpp), engage locks and report the events.
-  bool accept_increment(int step_number, const StaticTimeStepper& stepper,
-                        const Attempted& attempted) {
+  bool accept_increment(int step_number, const TimeStepper& stepper, const Attempted& attempted) {
     const int increment = stepper.increments();
     const double dt = attempted.status_line.time_increment;
     step_problem_.commit();
