@@ -7,23 +7,15 @@
 
 #include <cmath>
 
-#include "src/linalg/linear_solver.hpp"
 #include "src/solver/newton.hpp"
+#include "tests/unit/one_unknown_newton.hpp"
 
 namespace clinch {
 namespace {
 
-class ArctanProblem final : public NonlinearProblem {
+class ArctanProblem final : public OneUnknownProblem {
  public:
-  explicit ArctanProblem(double x) : x_(x), x0_(x) {
-    pattern_.n = 1;
-    pattern_.col_ptr = {0, 1};
-    pattern_.row_idx = {0};
-    pattern_.values = {0.0};
-    pattern_.symmetric_upper = true;
-  }
-  int size() const override { return 1; }
-  const SparseMatrix& pattern() const override { return pattern_; }
+  explicit ArctanProblem(double x) : x_(x), x0_(x) {}
   EvalStatus evaluate(Eigen::VectorXd& residual, SparseMatrix* tangent) override {
     residual.resize(1);
     residual[0] = std::atan(x_) - std::atan(kRoot);
@@ -45,22 +37,12 @@ class ArctanProblem final : public NonlinearProblem {
 
  private:
   double x_, x0_;
-  SparseMatrix pattern_;
 };
 
 NewtonReport solve(ArctanProblem& p, const LineSearchControls& line_search) {
-  Controls controls;
-  controls.translation.residual = 1e-12;
-  controls.translation.correction = 1e-12;
-  ConvergenceCriteria criteria(controls);
-  auto solver = make_linear_solver(SolverChoice::Dense, true, false);
-  std::string message;
-  EXPECT_EQ(solver->analyze(p.pattern(), &message), LinearStatus::Ok) << message;
   NewtonOptions options;
-  options.max_iterations = 30;
-  options.divergence_check_from = 30;
   options.line_search = line_search;
-  return solve_increment(p, *solver, criteria, options);
+  return solve_one_unknown(p, options);
 }
 
 TEST(LineSearch, FullNewtonStepsDivergeOnTheFlatTail) {

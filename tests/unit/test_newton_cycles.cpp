@@ -7,25 +7,16 @@
 
 #include <cmath>
 
-#include "src/linalg/linear_solver.hpp"
 #include "src/solver/newton.hpp"
+#include "tests/unit/one_unknown_newton.hpp"
 
 namespace clinch {
 namespace {
 
 constexpr double kRoot = -1.7692923542386314;  // x³ − 2x + 2 = 0 (Cardano), to 17 digits
 
-class CyclingCubic final : public NonlinearProblem {
+class CyclingCubic final : public OneUnknownProblem {
  public:
-  CyclingCubic() {
-    pattern_.n = 1;
-    pattern_.col_ptr = {0, 1};
-    pattern_.row_idx = {0};
-    pattern_.values = {0.0};
-    pattern_.symmetric_upper = true;
-  }
-  int size() const override { return 1; }
-  const SparseMatrix& pattern() const override { return pattern_; }
   EvalStatus evaluate(Eigen::VectorXd& residual, SparseMatrix* tangent) override {
     residual.resize(1);
     residual[0] = x_ * x_ * x_ - 2.0 * x_ + 2.0;
@@ -38,28 +29,19 @@ class CyclingCubic final : public NonlinearProblem {
     norms.largest_residual[0] = norms.residual_norm = std::abs(residual[0]);
     norms.flux[0] = 1.0;  // q̄ = 1: the residual test is |R| ≤ Rₙ
     norms.largest_increment[0] = std::abs(x_);
-    if (correction) norms.largest_correction[0] = norms.correction_norm = std::abs((*correction)[0]);
+    if (correction)
+      norms.largest_correction[0] = norms.correction_norm = std::abs((*correction)[0]);
   }
   double x() const { return x_; }
 
  private:
   double x_ = 0.0;
-  SparseMatrix pattern_;
 };
 
 NewtonReport solve(CyclingCubic& p, bool break_cycles) {
-  Controls controls;
-  controls.translation.residual = 1e-12;
-  controls.translation.correction = 1e-12;
-  ConvergenceCriteria criteria(controls);
-  auto solver = make_linear_solver(SolverChoice::Dense, true, false);
-  std::string message;
-  EXPECT_EQ(solver->analyze(p.pattern(), &message), LinearStatus::Ok) << message;
   NewtonOptions options;
-  options.max_iterations = 30;
-  options.divergence_check_from = 30;
   options.break_cycles = break_cycles;
-  return solve_increment(p, *solver, criteria, options);
+  return solve_one_unknown(p, options);
 }
 
 TEST(NewtonCycles, FullStepsCycleForGood) {
