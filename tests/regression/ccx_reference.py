@@ -42,6 +42,10 @@ def matches(value, printed):
 
 def main():
     clinch, deck, reference = sys.argv[1:4]
+    # The decks live beside the repository, not in it: without them the test is skipped (77).
+    if not os.path.exists(deck):
+        print(f"skipped: {deck} is not there")
+        return 77
     job = os.path.splitext(os.path.basename(deck))[0]
     with tempfile.TemporaryDirectory() as out:
         run = subprocess.run([clinch, "run", deck, "--out", out, "--quiet"], capture_output=True,
