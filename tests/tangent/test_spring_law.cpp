@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "tests/support/external_decks.hpp"
 #include "base/jacobian_check.hpp"
 #include "parser/deck_reader.hpp"
 #include "src/behavior/elastic/spring_law.hpp"
@@ -62,6 +63,7 @@ void expect_fd_tangent(const SpringLaw& law, double delta, double k_s) {
 }
 
 TEST(SpringLaw, CcxSpring2ReproducesTheReferenceForce) {
+  CLINCH_SKIP_WITHOUT_EXTERNAL_DECKS();
   const SpringProperty spring = read_ccx_spring2();
   ASSERT_TRUE(spring.valid);
   ASSERT_TRUE(spring.nonlinear);
@@ -78,6 +80,7 @@ TEST(SpringLaw, CcxSpring2ReproducesTheReferenceForce) {
 }
 
 TEST(SpringLaw, FiniteDifferenceTangentInsideSegments) {
+  CLINCH_SKIP_WITHOUT_EXTERNAL_DECKS();
   const SpringLaw law(read_ccx_spring2());
   // Points away from the breakpoints 0, 1 and 20; k_s = 10, the largest slope of the table.
   for (double delta : {0.3, 0.9, 1.2111, 7.0, 19.5}) expect_fd_tangent(law, delta, 10.0);
@@ -86,6 +89,7 @@ TEST(SpringLaw, FiniteDifferenceTangentInsideSegments) {
 }
 
 TEST(SpringLaw, ConstantForceAndZeroTangentOutsideTheTable) {
+  CLINCH_SKIP_WITHOUT_EXTERNAL_DECKS();
   const SpringLaw law(read_ccx_spring2());
   const SpringResponse below = law.evaluate(-0.5);
   EXPECT_EQ(below.force, 0.0);

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/external_decks.hpp"
 #include "parser/deck_reader.hpp"
 #include "parser/diagnostic_render.hpp"
 
@@ -48,9 +49,7 @@ std::string listing(const Checked& c) {
 class ExternalDecks : public ::testing::Test {
  protected:
   void SetUp() override {
-    if (!std::filesystem::is_directory(std::string(CLINCH_SHARED_DIR) + "/external-decks")) {
-      GTEST_SKIP() << "no external decks beside the repository";
-    }
+    CLINCH_SKIP_WITHOUT_EXTERNAL_DECKS();
   }
 };
 

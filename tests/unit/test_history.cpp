@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "tests/support/external_decks.hpp"
 #include "parser/deck_reader.hpp"
 #include "parser/diagnostic_render.hpp"
 #include "src/model/output_variables.hpp"
@@ -67,6 +68,7 @@ const std::string kSpringModel =
     "1, 1, 3\n";
 
 TEST(History, CalculixSpringDecksCheckWithoutErrors) {
+  CLINCH_SKIP_WITHOUT_EXTERNAL_DECKS();
   for (const char* name :
        {"ccx-spring1.inp", "ccx-spring2.inp", "ccx-spring6.inp", "ccx-spring7.inp"}) {
     auto r = read_external(name);
@@ -91,6 +93,7 @@ TEST(History, CalculixSpringDecksCheckWithoutErrors) {
 }
 
 TEST(History, CalculixSpringDecksGiveOnlyTheWarningsTheSpecDemands) {
+  CLINCH_SKIP_WITHOUT_EXTERNAL_DECKS();
   // spring1/spring2: SPRINGA uses DOFs 1–3 of both nodes; nothing to warn about.
   EXPECT_EQ(read_external("ccx-spring1.inp")->sink.diagnostics().size(), 0u);
   EXPECT_EQ(read_external("ccx-spring2.inp")->sink.diagnostics().size(), 0u);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/external_decks.hpp"
 #include "parser/deck_reader.hpp"
 #include "tests/unit/checked_deck.hpp"
 #include "base/diagnostic.hpp"
@@ -569,6 +570,7 @@ TEST(Spring, CalculixDecksWithoutBlankLine) {
 }
 
 TEST(Spring, ExternalCalculixDecksAreClean) {
+  CLINCH_SKIP_WITHOUT_EXTERNAL_DECKS();
   for (const char* name :
        {"ccx-spring1.inp", "ccx-spring2.inp", "ccx-spring6.inp", "ccx-spring7.inp"}) {
     SCOPED_TRACE(name);
@@ -602,6 +604,7 @@ TEST(SectionControls, DefaultsAndReference) {
 // The adapy fragment: instance-qualified nodes of instances that the fragment does not define.
 
 TEST(ExternalFragment, AdapyBushingFragmentReportsUndefinedInstances) {
+  CLINCH_SKIP_WITHOUT_EXTERNAL_DECKS();
   std::ifstream in(std::string(CLINCH_SHARED_DIR) +
                    "/external-decks/adapy-conn-bushing-fragment.inp");
   ASSERT_TRUE(in.good());
