@@ -1,7 +1,7 @@
 // *AMPLITUDE (keywords.md §8): a model-wide named time function, in model or history data.
 // The data are read as (time, value) pairs, or as equally spaced values, checked (E0803) and
 // stored after SCALEX/SCALEY/SHIFTX/SHIFTY. Whether anything uses it (W0501) and undefined
-// references (E0507) are decided in validate_history.
+// references (E0507) are decided in resolve_history.
 #include <fmt/format.h>
 
 #include "parser/keywords/history_keywords.hpp"
