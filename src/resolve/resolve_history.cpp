@@ -25,7 +25,6 @@
 namespace clinch {
 namespace {
 
-
 // "DOF 4", "DOFs 2, 3" for messages.
 std::string dof_list(DofMask mask) {
   std::string list;
@@ -247,8 +246,7 @@ class HistoryValidator {
         if (!(dofs & active & (1u << (d - 1)))) continue;
         in_force.insert(node, d, bc.loc);
         SourceLoc previous;
-        if (seen.insert(node, d, bc.loc, &previous) || duplicate_reported ||
-            previous == bc.loc) {
+        if (seen.insert(node, d, bc.loc, &previous) || duplicate_reported || previous == bc.loc) {
           continue;
         }
         duplicate_reported = true;
