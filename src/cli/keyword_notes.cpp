@@ -9,6 +9,7 @@ constexpr KeywordRefusal kFieldDependence{
     "field-variable-dependent data is not implemented"};
 constexpr KeywordRefusal kTemperatureDependence{
     "rows for more than one temperature", "temperature-dependent data is not implemented"};
+constexpr KeywordRefusal kExplicitOnly{"REGULARIZE, RTOL", "Abaqus/Explicit only"};
 
 }  // namespace
 
@@ -58,7 +59,9 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
        "Gives an element set its connection type(s), orientations and connector behaviour.",
        "Line 1: one assembled or basic connection type, or a translational and a rotational "
        "basic type (`Hinge,`; `Cartesian, Cardan`). Line 2 (optional): the orientation at node a "
-       "and at node b. ELIMINATION has no effect (Abaqus/Explicit only)."},
+       "and at node b.",
+       {},
+       {{"ELIMINATION", "Abaqus/Explicit only"}}},
       {"SPRING", "Properties of SPRINGA, SPRING1 and SPRING2 elements.",
        "Line 1: the degrees of freedom (SPRING1: `dof`; SPRING2: `dof1, dof2`; SPRINGA: blank). "
        "Then the stiffness, or with NONLINEAR rows of `force, relative displacement`.",
@@ -77,7 +80,8 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
        "Opens a named connector behaviour; the options that follow (elasticity, damping, stops, "
        "plasticity, friction, damage, ...) belong to it.",
        "",
-       {}},
+       {},
+       {{"INTEGRATION, REGULARIZE, RTOL", "Abaqus/Explicit only"}}},
       {"CONNECTOR CONSTITUTIVE REFERENCE",
        "The reference positions from which elastic and plastic motions are measured.",
        "One line: the reference values of components 1 to 6 (lengths, then angles in degrees; "
@@ -92,7 +96,8 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
         {"UNSYMM", "unsymmetric damping matrices are not implemented"},
         {"FREQUENCY DEPENDENCE=ON", "for frequency-domain procedures, which clinch does not run"},
         kFieldDependence,
-        kTemperatureDependence}},
+        kTemperatureDependence},
+       {{"TYPE=STRUCTURAL", "it acts only in steady-state dynamics"}, kExplicitOnly}},
       {"CONNECTOR ELASTICITY",
        "Elasticity of connector components: linear, nonlinear (tabulated), coupled or RIGID.",
        "Linear: the stiffness. NONLINEAR: rows of `force, relative motion`. Coupled (no "
@@ -102,7 +107,8 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
         {"INDEPENDENT COMPONENTS", "elasticity against another component's motion is not implemented"},
         {"FREQUENCY DEPENDENCE=ON", "for frequency-domain procedures, which clinch does not run"},
         kFieldDependence,
-        kTemperatureDependence}},
+        kTemperatureDependence},
+       {kExplicitOnly}},
       {"CONNECTOR STOP", "Limits a component's motion to a range (a one-sided contact).",
        "One line: `lower, upper`, the limits of the component's position (radians for "
        "rotations); a blank field is no limit."},
@@ -140,7 +146,8 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
          "`clinch run` cannot run it; `clinch check` refuses it too, so that check passes only "
          "what run accepts"},
         kFieldDependence,
-        kTemperatureDependence}},
+        kTemperatureDependence},
+       {{"RATE FILTER FACTOR, RATE INTERPOLATION, REGULARIZE, RTOL", "Abaqus/Explicit only"}}},
       {"CONNECTOR DAMAGE EVOLUTION",
        "How damage grows after initiation: by motion (linear, exponential or tabular softening) "
        "or by dissipated energy.",
@@ -178,11 +185,13 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
         {"ANISOTROPIC", "use a *CONNECTOR POTENTIAL for directional friction"},
         {"EXPONENTIAL DECAY with TEST DATA", "give mu_s, mu_k and d_c"},
         {"*FRICTION outside a *CONNECTOR BEHAVIOR", "surface contact is not implemented"},
-        kTemperatureDependence}},
+        kTemperatureDependence},
+       {kExplicitOnly}},
       {"STEP", "Opens a step; NLGEOM chooses finite rotations, INC the increment limit.",
        "Optional: a description line.",
        {{"PERTURBATION, SOLVER, MONOTONIC, INCF", "not implemented"},
-        {"EXTRAPOLATION=PARABOLIC", "use LINEAR or NO"}}},
+        {"EXTRAPOLATION=PARABOLIC", "use LINEAR or NO"}},
+       {{"CONVERT SDI", "it has no effect in clinch"}}},
       {"END STEP", "Closes the step.", ""},
       {"STATIC",
        "A static procedure with automatic incrementation (cutbacks) or fixed increments "
@@ -214,12 +223,16 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
        "TABULAR and SMOOTH STEP: pairs `time, value`, four per line. EQUALLY SPACED: values "
        "(FIXED INTERVAL= the spacing, BEGIN= the first time).",
        {{"DEFINITION=PERIODIC, MODULATED, DECAY, SOLUTION DEPENDENT, BUBBLE, USER, ACTUATOR",
-         "not implemented"}}},
+         "not implemented"}},
+       {{"SMOOTH", "it smooths time derivatives, which a static analysis does not use"},
+        {"FIXED INTERVAL, BEGIN without DEFINITION=EQUALLY SPACED", "they belong to that form"}}},
       {"OUTPUT",
        "Opens an output request: HISTORY requests go to <job>.history.csv; FIELD requests are "
        "read and have no output.",
        "",
-       {{"TIME POINTS", "output at listed times is not implemented"}}},
+       {{"TIME POINTS", "output at listed times is not implemented"}},
+       {{"FILTER, MODE LIST, SENSITIVITY, DIAGNOSTICS", "they have no effect in clinch"},
+        {"a FIELD request", "clinch writes history output only"}}},
       {"ELEMENT OUTPUT", "The element (connector, spring) variables of a history request.",
        "Output identifiers (CTF, CU, CUE, CUP, CSF, CDMG, ...)."},
       {"NODE OUTPUT", "The nodal variables of a history request.",

@@ -156,6 +156,12 @@ void print_text_details(std::ostream& out, const KeywordSpec& spec) {
     out << "Connection types:\n";
     print_connection_types(out, "  ", "");
   }
+  if (notes != nullptr && !notes->ignored.empty()) {
+    out << "Read and ignored (warning):\n";
+    for (const KeywordRefusal& ignored : notes->ignored) {
+      out << fmt::format("  {}: {}\n", ignored.what, ignored.why);
+    }
+  }
   if (notes != nullptr && !notes->refused.empty()) {
     out << "Refused (error unsupported-option, E0210):\n";
     for (const KeywordRefusal& refusal : notes->refused) {
@@ -240,6 +246,13 @@ void print_markdown_details(std::ostream& out, const KeywordSpec& spec) {
   if (spec.name == "CONNECTOR SECTION") {
     out << "Connection types:\n\n";
     print_connection_types(out, "- ", "`");
+    out << "\n";
+  }
+  if (notes != nullptr && !notes->ignored.empty()) {
+    out << "Read and ignored (warning):\n\n";
+    for (const KeywordRefusal& ignored : notes->ignored) {
+      out << fmt::format("- {}: {}\n", markdown_prose(ignored.what), markdown_prose(ignored.why));
+    }
     out << "\n";
   }
   if (notes != nullptr && !notes->refused.empty()) {

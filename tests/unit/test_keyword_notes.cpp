@@ -27,11 +27,13 @@ TEST(KeywordNotes, EveryNoteNamesASupportedKeyword) {
   }
 }
 
-TEST(KeywordNotes, RefusalsSayWhy) {
+TEST(KeywordNotes, RefusedAndIgnoredOptionsSayWhy) {
   for (const KeywordNotes& notes : all_keyword_notes()) {
-    for (const KeywordRefusal& refusal : notes.refused) {
-      EXPECT_FALSE(refusal.what.empty()) << "*" << notes.name;
-      EXPECT_FALSE(refusal.why.empty()) << "*" << notes.name << ": " << refusal.what;
+    for (const auto* list : {&notes.refused, &notes.ignored}) {
+      for (const KeywordRefusal& option : *list) {
+        EXPECT_FALSE(option.what.empty()) << "*" << notes.name;
+        EXPECT_FALSE(option.why.empty()) << "*" << notes.name << ": " << option.what;
+      }
     }
   }
 }
