@@ -169,8 +169,8 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
       {"CONNECTOR FRICTION",
        "Friction on a component, through a *CONNECTOR POTENTIAL, or predefined for the "
        "connection type (SLOT, SLIDE-PLANE), with its contact force.",
-       "PREDEFINED: the type's geometric data. Otherwise (optional) an internal contact force "
-       "table: rows of `force, motion`.",
+       "Optional: the internal contact force as rows of `F_int, accumulated slip` (one row: "
+       "a constant force). PREDEFINED SLOT and SLIDE-PLANE take no geometric data.",
        {{"PREDEFINED on other connection types",
          "use COMPONENT= or a *CONNECTOR POTENTIAL with CONTACT FORCE="},
         {"INDEPENDENT COMPONENTS", "not implemented"},
