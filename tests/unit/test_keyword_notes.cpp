@@ -3,7 +3,13 @@
 // does not have (a renamed or removed keyword would otherwise leave a stale page).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <string>
+#include <vector>
+
 #include "base/fold_name.hpp"
+#include "parser/deck_reader.hpp"
+#include "tests/unit/checked_deck.hpp"
 #include "parser/keyword_registry.hpp"
 #include "src/cli/keyword_notes.hpp"
 
@@ -35,6 +41,44 @@ TEST(KeywordNotes, RefusedAndIgnoredOptionsSayWhy) {
         EXPECT_FALSE(option.why.empty()) << "*" << notes.name << ": " << option.what;
       }
     }
+  }
+}
+
+// The amplitude definitions the notes call refused are those the reader refuses, and no others: a
+// definition that becomes supported (or refused) must change the notes, hence docs/keywords.md.
+TEST(KeywordNotes, RefusedAmplitudeDefinitionsAreTheOnesTheReaderRefuses) {
+  const KeywordNotes* notes = find_keyword_notes("AMPLITUDE");
+  ASSERT_NE(notes, nullptr);
+  std::vector<std::string> listed;
+  for (const KeywordRefusal& refusal : notes->refused) {
+    constexpr std::string_view kPrefix = "DEFINITION=";
+    if (refusal.what.substr(0, kPrefix.size()) != kPrefix) continue;
+    std::string_view rest = refusal.what.substr(kPrefix.size());
+    while (!rest.empty()) {
+      const std::size_t comma = rest.find(", ");
+      listed.emplace_back(rest.substr(0, comma));
+      rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 2);
+    }
+  }
+  const KeywordSpec* spec = KeywordRegistry::instance().find("AMPLITUDE");
+  ASSERT_NE(spec, nullptr);
+  const auto definition = std::find_if(spec->params.begin(), spec->params.end(),
+                                       [](const ParamSpec& p) { return p.name == "DEFINITION"; });
+  ASSERT_NE(definition, spec->params.end());
+  for (std::string_view value : definition->values) {
+    CheckedDeck deck;
+    read_deck_text("deck.inp",
+                   "*AMPLITUDE, NAME=A, DEFINITION=" + std::string(value) +
+                       "\n0., 0., 1., 1.\n*NODE\n1, 0., 0., 0.\n*STEP\n*STATIC\n*END STEP\n",
+                   deck.sources, deck.model, deck.sink);
+    bool refused = false;
+    for (const Diagnostic* d : deck.with(DiagCode::unsupported_option)) {
+      if (d->loc.line == 1) refused = true;
+    }
+    const bool in_notes = std::find(listed.begin(), listed.end(), value) != listed.end();
+    EXPECT_EQ(refused, in_notes) << "DEFINITION=" << value << (refused ? " is" : " is not")
+                                 << " refused by the reader:\n"
+                                 << deck.dump();
   }
 }
 
