@@ -171,11 +171,11 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
        "connection type (SLOT, SLIDE-PLANE), with its contact force.",
        "Optional: the internal contact force as rows of `F_int, accumulated slip` (one row: "
        "a constant force). PREDEFINED SLOT and SLIDE-PLANE take no geometric data.",
-       {{"PREDEFINED on other connection types",
-         "use COMPONENT= or a *CONNECTOR POTENTIAL with CONTACT FORCE="},
+       {{"PREDEFINED on a connection type other than SLOT, SLIDE-PLANE",
+         "not implemented for the others (or the type has no predefined friction); use "
+         "COMPONENT= or a *CONNECTOR POTENTIAL with CONTACT FORCE="},
         {"INDEPENDENT COMPONENTS", "not implemented"},
-        {"more than the supported number of *CONNECTOR FRICTION in one behaviour",
-         "combine them into one"},
+        {"more than five *CONNECTOR FRICTION in one behaviour", "combine them"},
         {"temperature-dependent internal contact force", "temperature-dependent data is not implemented"}}},
       {"FRICTION",
        "The friction coefficient of the preceding *CONNECTOR FRICTION: constant, tabulated "

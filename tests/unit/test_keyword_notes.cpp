@@ -9,6 +9,7 @@
 
 #include "base/fold_name.hpp"
 #include "parser/deck_reader.hpp"
+#include "src/model/connection_types.hpp"
 #include "tests/unit/checked_deck.hpp"
 #include "parser/keyword_registry.hpp"
 #include "src/cli/keyword_notes.hpp"
@@ -79,6 +80,43 @@ TEST(KeywordNotes, RefusedAmplitudeDefinitionsAreTheOnesTheReaderRefuses) {
     EXPECT_EQ(refused, in_notes) << "DEFINITION=" << value << (refused ? " is" : " is not")
                                  << " refused by the reader:\n"
                                  << deck.dump();
+  }
+}
+
+// The connection types the notes say take PREDEFINED friction are those the check accepts it on.
+TEST(KeywordNotes, PredefinedFrictionTypesAreTheOnesTheCheckAccepts) {
+  const KeywordNotes* notes = find_keyword_notes("CONNECTOR FRICTION");
+  ASSERT_NE(notes, nullptr);
+  std::vector<std::string> listed;
+  for (const KeywordRefusal& refusal : notes->refused) {
+    constexpr std::string_view kMarker = "PREDEFINED on a connection type other than ";
+    if (refusal.what.substr(0, kMarker.size()) != kMarker) continue;
+    std::string_view rest = refusal.what.substr(kMarker.size());
+    while (!rest.empty()) {
+      const std::size_t comma = rest.find(", ");
+      listed.emplace_back(rest.substr(0, comma));
+      rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 2);
+    }
+  }
+  ASSERT_FALSE(listed.empty());
+  for (const ConnectionTypeInfo& type : connection_types()) {
+    if (type.support != V1Support::Supported) continue;
+    CheckedDeck deck;
+    read_deck_text("deck.inp",
+                   "*NODE\n1, 0., 0., 0.\n2, 0., 0., 0.\n*ELEMENT, TYPE=CONN3D2, ELSET=C\n"
+                   "1, 1, 2\n*ORIENTATION, NAME=O\n1., 0., 0., 0., 1., 0.\n"
+                   "*CONNECTOR SECTION, ELSET=C, BEHAVIOR=B\n" +
+                       std::string(type.name) +
+                       ",\nO, O\n*CONNECTOR BEHAVIOR, NAME=B\n"
+                       "*CONNECTOR FRICTION, PREDEFINED, STICK STIFFNESS=1000.\n*FRICTION\n0.3\n"
+                       "*BOUNDARY\n1, 1, 6\n*STEP\n*STATIC\n*END STEP\n",
+                   deck.sources, deck.model, deck.sink);
+    const bool accepted = deck.with(DiagCode::unsupported_option).empty() &&
+                          deck.with(DiagCode::friction_predefined_unavailable).empty();
+    const bool in_notes = std::find(listed.begin(), listed.end(), type.name) != listed.end();
+    EXPECT_EQ(accepted, in_notes) << type.name << (accepted ? " takes" : " does not take")
+                                  << " predefined friction:\n"
+                                  << deck.dump();
   }
 }
 
