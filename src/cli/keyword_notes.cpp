@@ -168,7 +168,7 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
        "function (ABS, MACAULEY or NONE), shift, sign`; blank fields take their defaults."},
       {"CONNECTOR FRICTION",
        "Friction on a component, through a *CONNECTOR POTENTIAL, or predefined for the "
-       "connection type (SLOT, SLIDE-PLANE), with its contact force.",
+       "connection type (see Refused for the types), with its contact force.",
        "Optional: the internal contact force as rows of `F_int, accumulated slip` (one row: "
        "a constant force). PREDEFINED SLOT and SLIDE-PLANE take no geometric data.",
        {{"PREDEFINED on a connection type other than SLOT, SLIDE-PLANE",
