@@ -218,8 +218,7 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
       {"CONNECTOR LOAD", "Applies a force or moment on a connector component.",
        "`element or set, component, magnitude`."},
       {"AMPLITUDE",
-       "A time variation for loads and prescribed motions (TABULAR, EQUALLY SPACED, SMOOTH "
-       "STEP).",
+       "A time variation for loads and prescribed motions (the definitions not refused below).",
        "TABULAR and SMOOTH STEP: pairs `time, value`, four per line. EQUALLY SPACED: values "
        "(FIXED INTERVAL= the spacing, BEGIN= the first time).",
        {{"DEFINITION=PERIODIC, MODULATED, DECAY, SOLUTION DEPENDENT, BUBBLE, USER, ACTUATOR",
