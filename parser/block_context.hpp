@@ -31,6 +31,7 @@ struct ReaderPosition {
   std::int32_t step = -1;       // index of the open (or last) step
   bool in_behavior = false;     // a *CONNECTOR BEHAVIOR block is open (its sub-options follow)
   SourceLoc behavior_loc;       // keyword line of the open (or last) *CONNECTOR BEHAVIOR block
+  bool in_material = false;     // a *MATERIAL block is open (its sub-options follow)
 };
 
 class BlockContext {

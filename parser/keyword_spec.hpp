@@ -65,6 +65,9 @@ struct KeywordSpec {
   // A sub-option of *CONNECTOR BEHAVIOR (behaviors.md §2): valid only inside an open behaviour
   // block; any other keyword (except *PARAMETER and *INCLUDE) closes the block.
   bool behavior_suboption = false;
+  // A sub-option of *MATERIAL (*ELASTIC, *DENSITY, ...): valid only right after the *MATERIAL
+  // line or another of its sub-options.
+  bool material_suboption = false;
   // Outside a behaviour block this keyword means something clinch does not support (*FRICTION
   // of surface contact): E0202 instead of E0608.
   bool unsupported_outside_behavior = false;

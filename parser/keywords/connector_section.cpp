@@ -10,15 +10,12 @@
 #include "parser/block_context.hpp"
 #include "parser/expression.hpp"
 #include "parser/keyword_handler.hpp"
+#include "parser/keywords/geometry_common.hpp"
 #include "parser/keywords/keyword_families.hpp"
 #include "src/model/connection_types.hpp"
 #include "src/model/orientation_triad.hpp"
 
 namespace clinch {
-namespace {
-
-// The ELSET= value as an element-set reference in the current scope (a set name, possibly
-// instance-qualified at assembly level; a bare label is not a set).
 std::optional<TargetRef> elset_param(BlockContext& ctx) {
   const Field* field = ctx.params().value("ELSET");
   if (!field) return std::nullopt;
@@ -30,6 +27,8 @@ std::optional<TargetRef> elset_param(BlockContext& ctx) {
   }
   return ref;
 }
+
+namespace {
 
 // ---------------------------------------------------------------------------------------------
 // *ORIENTATION (keywords.md §6)

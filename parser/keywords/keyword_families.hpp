@@ -16,6 +16,9 @@ std::vector<KeywordSpec> general_keyword_specs();
 std::vector<KeywordSpec> geometry_keyword_specs();
 // *ORIENTATION, *CONNECTOR SECTION, *SPRING, *SECTION CONTROLS.
 std::vector<KeywordSpec> section_keyword_specs();
+// The sections of held elements, *MATERIAL and its sub-options, *SURFACE, *DISPLAY BODY
+// (structure.cpp).
+std::vector<KeywordSpec> structure_keyword_specs();
 // *CONNECTOR BEHAVIOR and its sub-options except derived components, potentials and friction.
 std::vector<KeywordSpec> behavior_keyword_specs();
 // *CONNECTOR DERIVED COMPONENT, *CONNECTOR POTENTIAL, *CONNECTOR FRICTION, *FRICTION.

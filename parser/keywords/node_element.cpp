@@ -7,6 +7,7 @@
 #include "parser/block_context.hpp"
 #include "parser/keyword_handler.hpp"
 #include "parser/keywords/geometry_common.hpp"
+#include "src/model/element_library.hpp"
 
 namespace clinch {
 namespace {
@@ -82,27 +83,20 @@ class NodeHandler : public KeywordHandler {
   bool normal_warned_ = false;
 };
 
-struct ElementTypeInfo {
-  std::string_view name;
-  ElementType type;
-  int nodes;
-};
-constexpr ElementTypeInfo kElementTypes[] = {
-    {"CONN3D2", ElementType::Conn3D2, 2}, {"CONN2D2", ElementType::Conn2D2, 2},
-    {"SPRINGA", ElementType::SpringA, 2}, {"SPRING1", ElementType::Spring1, 1},
-    {"SPRING2", ElementType::Spring2, 2}, {"DASHPOTA", ElementType::DashpotA, 2},
-    {"DASHPOT1", ElementType::Dashpot1, 1}, {"DASHPOT2", ElementType::Dashpot2, 2},
-};
-
-// Element types other codes know that clinch does not (E0210 rather than E0208).
-// Abaqus and CalculiX element families (beams B21-B33, shells, solids, trusses, membranes, rigid,
-// cohesive, gasket, heat transfer, acoustic, infinite, fluid, user elements).
+// Element types other codes know that clinch does not (E0210 rather than E0208): the families of
+// the Abaqus and CalculiX libraries beyond element_library.hpp (cohesive, gasket, heat transfer,
+// acoustic, infinite, fluid, user elements, and other variants of the listed families).
 constexpr std::string_view kKnownUnsupportedPrefixes[] = {
     "C3D", "C2D", "CPE", "CPS", "CAX", "CGAX", "CCL", "S3", "S4", "S8", "S9", "SAX", "STRI",
     "SC", "SFM", "B2", "B3", "PIPE", "ELBOW", "FRAME", "T2D", "T3D", "TAX", "M3D", "MAX", "MGAX",
     "MASS", "ROTARYI", "HEATCAP", "GAP", "ITS", "ISL", "DASHPOT", "SPRING", "CONN", "JOINT",
     "DCOUP", "KCOUP", "R3D", "R2D", "RAX", "RB", "COH", "GK", "DC", "DS", "AC", "CIN", "ACIN",
     "F2D", "F3D", "FAX", "FC3D", "WARP", "PSI", "EMC", "Q3D", "U", "VU"};
+
+// An element line holds at most 16 entries; an element with more nodes goes on over the
+// following lines, each full line ending with a comma (Abaqus Analysis User's Guide, "Element
+// definition"; Abaqus/CAE writes a C3D20 as 16 fields and a line of 5).
+constexpr std::size_t kEntriesPerLine = 16;
 
 class ElementHandler : public KeywordHandler {
  public:
@@ -113,17 +107,17 @@ class ElementHandler : public KeywordHandler {
     const Field* type = ctx.params().value("TYPE");
     if (!type) return;
     std::string folded = fold_name(type->text);
-    for (const ElementTypeInfo& info : kElementTypes) {
-      if (folded == info.name) info_ = &info;
-    }
+    info_ = find_element_type(folded);
     if (!info_) {
       bool known = false;
       for (std::string_view prefix : kKnownUnsupportedPrefixes) {
         if (folded.rfind(prefix, 0) == 0) known = true;
       }
       ctx.report(known ? DiagCode::unsupported_option : DiagCode::invalid_value, *type,
-                 fmt::format("element type '{}' is {} (supported: CONN3D2, CONN2D2, SPRINGA, "
-                             "SPRING1, SPRING2, DASHPOTA, DASHPOT1, DASHPOT2)",
+                 fmt::format("element type '{}' is {} (analysed: CONN3D2, CONN2D2, SPRINGA, "
+                             "SPRING1, SPRING2, DASHPOTA, DASHPOT1, DASHPOT2; read as nodes: "
+                             "the solids, shells, membranes, rigid elements, beams, trusses, "
+                             "planar continua and point masses of docs/keywords.md)",
                              type->text, known ? "not supported by clinch" : "unknown"));
       // The set still exists, as a failed definition: references to it stay silent (§10: a
       // diagnostic that follows only from an earlier error is not reported).
@@ -135,10 +129,24 @@ class ElementHandler : public KeywordHandler {
     if (const Field* elset = ctx.params().value("ELSET")) {
       if (auto name = ctx.name(*elset, "ELSET")) set_ = &define_set(*part_, true, *name);
     }
+    if (info_->type == ElementType::Held) {
+      ElementBlock block;
+      block.type = std::string(info_->name);
+      block.family = static_cast<std::uint8_t>(info_->family);
+      block.nodes_per_element = info_->nodes;
+      block.keyword_loc = ctx.keyword().loc;
+      block.type_loc = type->loc;
+      block.first_element = static_cast<std::int32_t>(part_->elements.size());
+      part_->element_blocks.push_back(std::move(block));
+    }
   }
 
   void data_line(BlockContext& ctx, const DataLine& line, std::vector<Field>& fields) override {
     if (!info_ || line.blank || fields.empty()) return;
+    if (info_->type == ElementType::Held) {
+      held_line(ctx, line, fields);
+      return;
+    }
     const int max_fields = 1 + info_->nodes;
     if (static_cast<int>(fields.size()) > max_fields) {
       ctx.check_field_count(line, fields, max_fields,
@@ -207,7 +215,103 @@ class ElementHandler : public KeywordHandler {
     if (set_) set_->members.push_back(index);
   }
 
+  void end(BlockContext& ctx) override {
+    if (!pending_.empty()) {
+      ctx.missing(pending_end_, fmt::format("node {} of {} element {} (the element's line ends "
+                                            "with a comma but no line follows)",
+                                            pending_.size(), info_->name, pending_[0].text));
+    }
+  }
+
  private:
+  // A line of a held element, or the continuation of one (kEntriesPerLine).
+  void held_line(BlockContext& ctx, const DataLine& line, std::vector<Field>& fields) {
+    const std::size_t needed = 1 + static_cast<std::size_t>(info_->nodes);
+    const bool continues = line.text.find_last_not_of(" \t") != std::string_view::npos &&
+                           line.text[line.text.find_last_not_of(" \t")] == ',';
+    for (Field& f : fields) pending_.push_back(std::move(f));
+    if (pending_.size() < needed && (continues || fields.size() == kEntriesPerLine)) {
+      pending_end_ = BlockContext::end_of_line(line);
+      return;
+    }
+    std::vector<Field> element_fields = std::move(pending_);
+    pending_.clear();
+    if (element_fields.size() > needed) {
+      ctx.report(DiagCode::too_many_fields, element_fields[needed],
+                 fmt::format("{} element has {} nodes; this line gives {} (expected: label, "
+                             "then {} node labels)",
+                             info_->name, info_->nodes, element_fields.size() - 1, info_->nodes));
+      return;
+    }
+    add_held_element(ctx, line, element_fields);
+  }
+
+  void add_held_element(BlockContext& ctx, const DataLine& line, const std::vector<Field>& fields) {
+    const std::size_t needed = 1 + static_cast<std::size_t>(info_->nodes);
+    if (fields[0].empty()) {
+      ctx.missing(fields[0].loc, "element label");
+      return;
+    }
+    auto label = ctx.integer(fields[0], "element label");
+    if (!label) return;
+    if (*label < 1 || *label > 2147483647) {
+      ctx.report(DiagCode::value_out_of_range, fields[0],
+                 fmt::format("element label {} is out of range (1-2147483647)", *label));
+      return;
+    }
+    if (fields.size() < needed) {
+      ctx.report(DiagCode::missing_field, BlockContext::end_of_line(line),
+                 fmt::format("{} element {} has {} nodes; {} given (a line that goes on to "
+                             "the next ends with a comma)",
+                             info_->name, *label, info_->nodes, fields.size() - 1));
+      return;
+    }
+    ElementBlock& block = part_->element_blocks.back();
+    std::vector<std::int32_t> nodes(static_cast<std::size_t>(info_->nodes));
+    std::vector<ElementBlock::QualifiedNode> qualified;
+    const auto base = static_cast<std::int32_t>(block.nodes.size());
+    for (std::size_t k = 1; k < needed; ++k) {
+      if (fields[k].empty()) {
+        ctx.missing(fields[k].loc, fmt::format("node {}", k));
+        return;
+      }
+      auto ref = ctx.label_ref(fields[k], "node");
+      if (!ref) return;
+      if (!ref->instance_key.empty()) {
+        if (part_index_ != 0) {
+          ctx.report(DiagCode::expected_integer, fields[k],
+                     "instance-qualified node labels are allowed only at assembly level");
+          return;
+        }
+        qualified.push_back({base + static_cast<std::int32_t>(k - 1), ref->instance_key,
+                             ref->instance_display, ref->label});
+        nodes[k - 1] = kGround;
+      } else {
+        nodes[k - 1] = ref->label;  // a label until resolve_geometry resolves it
+      }
+    }
+    Element element;
+    element.label = static_cast<std::int32_t>(*label);
+    element.type = ElementType::Held;
+    element.line = fields[0].loc.line;
+    element.file = fields[0].loc.file;
+    element.keyword_line = ctx.keyword().loc.line;
+    const auto index = static_cast<std::int32_t>(part_->elements.size());
+    const std::int32_t existing = part_->element_index.insert(element.label, index);
+    if (existing != LabelIndex::kMissing) {
+      ctx.report(DiagCode::duplicate_element, fields[0],
+                 fmt::format("element {} is already defined", element.label))
+          .notes.push_back({part_->elements[existing].loc(), "previous definition is here"});
+      return;
+    }
+    part_->elements.push_back(element);
+    block.nodes.insert(block.nodes.end(), nodes.begin(), nodes.end());
+    for (std::size_t k = 1; k < needed; ++k) block.node_locs.push_back(fields[k].loc);
+    for (auto& q : qualified) block.qualified.push_back(std::move(q));
+    ++block.count;
+    if (set_) set_->members.push_back(index);
+  }
+
   // Ground and same-node rules (keywords.md §3).
   bool check_ends(BlockContext& ctx, const DataLine& line, const std::vector<Field>& fields,
                   const Element& element) {
@@ -249,6 +353,8 @@ class ElementHandler : public KeywordHandler {
   std::int32_t part_index_ = 0;
   const ElementTypeInfo* info_ = nullptr;
   Set* set_ = nullptr;
+  std::vector<Field> pending_;  // fields of a held element whose line goes on
+  SourceLoc pending_end_;
 };
 
 }  // namespace

@@ -19,6 +19,9 @@ void BlockDispatcher::open(KeywordLine line) {
   if (!spec || (!spec->behavior_suboption && spec->level != KeywordLevel::Anywhere)) {
     structure_.leave_behavior();
   }
+  if (!spec || (!spec->material_suboption && spec->level != KeywordLevel::Anywhere)) {
+    structure_.leave_material();
+  }
   // A block that is refused as a whole still uses the parameters it names: they are not
   // reported unused (input-syntax.md §6.4 item 6, §10 "follows only from an earlier error").
   for (const KeywordParam& p : kl.params) {

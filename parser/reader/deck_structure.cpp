@@ -29,6 +29,10 @@ bool DeckStructure::check_level(const KeywordSpec& spec, const KeywordLine& line
                     "sub-options)",
                     kw));
   }
+  if (spec.material_suboption && !p.in_material) {
+    return wrong_level(
+        fmt::format("'{}' must follow *MATERIAL (it is one of its sub-options)", kw));
+  }
   if (p.in_instance && spec.name != "END INSTANCE" && spec.level != KeywordLevel::Anywhere) {
     sink_.report(DiagCode::unsupported_keyword, line.loc,
                  fmt::format("'{}' inside *INSTANCE: definitions inside an instance are not "
@@ -91,6 +95,8 @@ bool DeckStructure::enter(const KeywordSpec& spec, const KeywordLine& line,
   if (n == "CONNECTOR BEHAVIOR") {
     p.in_behavior = true;
     p.behavior_loc = line.loc;
+  } else if (n == "MATERIAL") {
+    p.in_material = true;
   } else if (n == "STEP") {
     if (p.in_step) {
       sink_.report(DiagCode::missing_end_step, open_step_loc_,

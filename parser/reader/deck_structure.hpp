@@ -25,6 +25,8 @@ class DeckStructure {
 
   // Any keyword that is not a behaviour sub-option closes the behaviour block.
   void leave_behavior() { position_.in_behavior = false; }
+  // Any keyword that is not a material sub-option closes the material block.
+  void leave_material() { position_.in_material = false; }
 
   // Checks where a keyword stands (input-syntax.md §7.1, §8); false when the block is skipped.
   bool check_level(const KeywordSpec& spec, const KeywordLine& line);

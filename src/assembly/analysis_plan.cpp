@@ -73,6 +73,9 @@ class PlanBuilder {
     plan_.springs.reserve(model_.elements.size() - connectors);
     for (std::size_t e = 0; e < model_.elements.size(); ++e) {
       const Element& element = model_.elements[e];
+      // Held elements carry no formulation: only MASS and ROTARYI reach a run, and a static step
+      // ignores them (check_held_elements).
+      if (element.type == ElementType::Held) continue;
       const bool ok = is_connector(element.type)
                           ? add_connector(static_cast<std::int32_t>(e), error)
                           : add_spring(static_cast<std::int32_t>(e), error);

@@ -11,6 +11,10 @@ struct Model;
 // Behaviour rules of behaviors.md (attachment, duplicates, components available).
 void check_behaviors(const Model& model, DiagnosticSink& sink);
 
+// One decision per block of held elements (solids, shells, beams, masses, ...): refused while
+// deformable, noted when inertia only (held_elements.cpp).
+void check_held_elements(const Model& model, DiagnosticSink& sink);
+
 void check_model(const Model& model, DiagnosticSink& sink);
 
 // Errors for what `clinch run` cannot run yet although check_model accepts it (FORCE damage

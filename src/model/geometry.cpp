@@ -30,8 +30,20 @@ const char* element_type_name(ElementType type) {
       return "DASHPOT1";
     case ElementType::Dashpot2:
       return "DASHPOT2";
+    case ElementType::Held:
+      return "held";
   }
   return "?";
+}
+
+const ElementBlock* Part::block_of(std::int32_t e) const {
+  // Blocks are in order of first_element and do not overlap.
+  auto it = std::upper_bound(
+      element_blocks.begin(), element_blocks.end(), e,
+      [](std::int32_t index, const ElementBlock& block) { return index < block.first_element; });
+  if (it == element_blocks.begin()) return nullptr;
+  --it;
+  return e < it->first_element + it->count ? &*it : nullptr;
 }
 
 double length_of(const Vec3& x) { return std::hypot(x[0], x[1], x[2]); }

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <unordered_map>
 
@@ -20,14 +21,17 @@ using Vec3 = std::array<double, 3>;
 using Mat3 = std::array<std::array<double, 3>, 3>;
 
 enum class ElementType : std::uint8_t {
-  Conn3D2, Conn2D2, SpringA, Spring1, Spring2, DashpotA, Dashpot1, Dashpot2
+  Conn3D2, Conn2D2, SpringA, Spring1, Spring2, DashpotA, Dashpot1, Dashpot2,
+  Held  // any other type: its nodes are kept in an ElementBlock, it has no formulation
 };
 const char* element_type_name(ElementType type);
 inline bool is_connector(ElementType t) {
   return t == ElementType::Conn3D2 || t == ElementType::Conn2D2;
 }
 // Springs and dashpots: discrete elements with one force and one relative motion (S11, E11).
-inline bool is_spring_or_dashpot(ElementType t) { return !is_connector(t); }
+inline bool is_spring_or_dashpot(ElementType t) {
+  return !is_connector(t) && t != ElementType::Held;
+}
 inline bool is_dashpot(ElementType t) {
   return t == ElementType::DashpotA || t == ElementType::Dashpot1 || t == ElementType::Dashpot2;
 }
@@ -109,6 +113,39 @@ struct SetOperation {
   std::vector<LabelItem> labels;
 };
 
+// One *ELEMENT block of a type clinch holds as nodes only (solids, shells, beams, rigid elements,
+// masses, ...: src/model/element_library.hpp). Its elements are also in Part::elements (type Held,
+// no nodes there) at indices first_element … first_element + count − 1, in order; their nodes are
+// here, nodes_per_element per element.
+struct ElementBlock {
+  // What the block is made of for an analysis. None: left deformable, which clinch cannot run
+  // (src/check/deformable_elements.cpp); RigidOnly: carried by a rigid body, only its nodes count.
+  enum class Formulation : std::uint8_t { None, RigidOnly };
+  std::string type;  // canonical type name, e.g. "C3D8R"
+  std::uint8_t family = 0;  // ElementFamily (element_library.hpp)
+  int nodes_per_element = 0;
+  SourceLoc keyword_loc;  // the *ELEMENT line
+  SourceLoc type_loc;     // the TYPE= value
+  std::int32_t first_element = 0;
+  std::int32_t count = 0;
+  // Node labels while reading; part-local node indices (root part: global) after resolve,
+  // kGround where a label is not defined (reported) or waits for an instance qualifier.
+  std::vector<std::int32_t> nodes;
+  std::vector<SourceLoc> node_locs;  // the field of each node (diagnostics)
+  struct QualifiedNode {  // an "Inst.label" field (root part only)
+    std::int32_t position;  // into nodes
+    std::string instance_key, instance_display;
+    std::int32_t label;
+  };
+  std::vector<QualifiedNode> qualified;
+  Formulation formulation = Formulation::None;
+  // The nodes of element `k` of the block (0 ≤ k < count).
+  std::span<const std::int32_t> element_nodes(std::int32_t k) const {
+    return {nodes.data() + static_cast<std::size_t>(k) * nodes_per_element,
+            static_cast<std::size_t>(nodes_per_element)};
+  }
+};
+
 struct Part {
   Name name;  // empty for the root part
   SourceLoc loc;
@@ -119,6 +156,9 @@ struct Part {
   std::unordered_map<std::string, Set> node_sets;                 // key → set
   std::unordered_map<std::string, Set> element_sets;
   std::vector<SetOperation> set_operations;
+  std::vector<ElementBlock> element_blocks;  // blocks of held elements, in deck order
+  // The block holding element `e` (part-local index), or nullptr for analysed elements.
+  const ElementBlock* block_of(std::int32_t e) const;
   // Node fields of element lines that are instance-qualified (root part only): resolved once
   // instances are placed.
   struct QualifiedNode {

@@ -10,6 +10,7 @@
 #include "src/model/geometry.hpp"
 #include "src/model/history_model.hpp"
 #include "src/model/section_model.hpp"
+#include "src/model/structure_model.hpp"
 
 namespace clinch {
 
@@ -30,6 +31,7 @@ struct Model {
   std::string heading;  // first *HEADING data line
 
   SectionModel sections;
+  StructureModel structure;  // sections, materials, surfaces of held elements
   BehaviorModel behaviors;
   HistoryModel history;
 

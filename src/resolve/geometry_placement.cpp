@@ -13,6 +13,24 @@
 namespace clinch {
 namespace {
 
+// The nodes of held element `e` of `part` as members of a node set: part-local indices shifted
+// by `offset`; an element of a root-part set is a global index (it may be an instance's).
+void append_held_nodes(const Model& model, const Part* part, std::int32_t e, std::int32_t offset,
+                       std::vector<std::int32_t>& members) {
+  std::int32_t local = e;
+  if (part == &model.parts[0]) {
+    const Instance& instance = model.instances[model.elements[e].instance];
+    part = &model.parts[instance.part];
+    local = e - instance.element_offset;
+    offset = instance.node_offset;
+  }
+  const ElementBlock* block = part->block_of(local);
+  if (!block) return;
+  for (std::int32_t n : block->element_nodes(local - block->first_element)) {
+    if (n != kGround) members.push_back(n + offset);
+  }
+}
+
 void replay_set_operations(Model& model, std::int32_t part_index, DiagnosticSink& sink) {
   Part& part = model.parts[part_index];
   for (const SetOperation& op : part.set_operations) {
@@ -93,6 +111,10 @@ void replay_set_operations(Model& model, std::int32_t part_index, DiagnosticSink
           // are global already once the arrays are built, so use the local element.
           // Root-part sets are replayed once the global arrays exist; the others use the part.
           const Element& element = part_index == 0 ? model.elements[e] : part.elements[e];
+          if (element.type == ElementType::Held) {
+            append_held_nodes(model, source_part, e, offset, target.members);
+            continue;
+          }
           for (std::int32_t n : element.nodes) {
             if (n != kGround) target.members.push_back(n + offset);
           }
@@ -113,6 +135,41 @@ void replay_set_operations(Model& model, std::int32_t part_index, DiagnosticSink
       set.members.erase(std::unique(set.members.begin(), set.members.end()), set.members.end());
     }
   }
+}
+
+// The node labels of a block of held elements → part-local indices (root part: global), as for
+// the nodes of a connector.
+void resolve_block_nodes(const Model& model, const Part& part, std::int32_t part_index,
+                         ElementBlock& block, DiagnosticSink& sink) {
+  for (std::size_t k = 0; k < block.nodes.size(); ++k) {
+    std::int32_t& node = block.nodes[k];
+    if (node == kGround) continue;  // qualified: below
+    const std::int32_t found = part.node_index.find(node);
+    if (found == LabelIndex::kMissing) {
+      sink.report(DiagCode::undefined_node, block.node_locs[k],
+                  fmt::format("node {} is not defined{}", node,
+                              part_index ? fmt::format(" in part '{}'", part.name.display)
+                                         : std::string()));
+      node = kGround;
+      continue;
+    }
+    node = found;
+  }
+  for (const ElementBlock::QualifiedNode& q : block.qualified) {
+    const SourceLoc loc = block.node_locs[static_cast<std::size_t>(q.position)];
+    const std::int32_t inst = find_instance(model, q.instance_key, q.instance_display, loc, sink);
+    if (inst < 0) continue;
+    const Instance& instance = model.instances[inst];
+    const std::int32_t found = model.parts[instance.part].node_index.find(q.label);
+    if (found == LabelIndex::kMissing) {
+      sink.report(DiagCode::undefined_node, loc,
+                  fmt::format("node {} is not defined in instance '{}'", q.label,
+                              q.instance_display));
+      continue;
+    }
+    block.nodes[static_cast<std::size_t>(q.position)] = instance.node_offset + found;
+  }
+  block.qualified.clear();
 }
 
 // Element node labels → part-local node indices (root part: global indices).
@@ -158,6 +215,7 @@ void resolve_element_nodes(Model& model, std::int32_t part_index, DiagnosticSink
     element.nodes[q.slot] = instance.node_offset + found;
   }
   part.qualified_nodes.clear();
+  for (ElementBlock& block : part.element_blocks) resolve_block_nodes(model, part, part_index, block, sink);
 }
 
 // The global node and element arrays of an assembly: each instance's copy of its part, placed,

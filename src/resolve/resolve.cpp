@@ -5,6 +5,7 @@ namespace clinch {
 void resolve_model(Model& model, DiagnosticSink& sink) {
   resolve_geometry(model, sink);
   resolve_sections(model, sink);
+  resolve_structure(model, sink);
   resolve_potentials_and_friction(model, sink);
   resolve_history(model, sink);
 }

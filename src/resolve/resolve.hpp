@@ -16,6 +16,8 @@ struct Model;
 void resolve_geometry(Model& model, DiagnosticSink& sink);
 // Sections, orientations, springs: types, element kinds, section_of_element, behaviour refs.
 void resolve_sections(Model& model, DiagnosticSink& sink);
+// The sections, materials, surfaces and display bodies of held elements (structure_model.hpp).
+void resolve_structure(Model& model, DiagnosticSink& sink);
 // Derived components, potentials and friction (derived-components-and-potentials.md, friction.md):
 // names inside each behaviour block, classification, and the rules that need it.
 void resolve_potentials_and_friction(Model& model, DiagnosticSink& sink);

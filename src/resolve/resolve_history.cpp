@@ -235,7 +235,7 @@ class HistoryValidator {
     for (std::int32_t node : bc.resolved) {
       const DofMask active = active_[static_cast<std::size_t>(node)];
       if (active == 0) {
-        if (lonely++ == 0) lonely_node = node;
+        if (!on_held_element(node) && lonely++ == 0) lonely_node = node;
         continue;
       }
       if (dofs & ~active) {
@@ -290,7 +290,7 @@ class HistoryValidator {
     bool prescribed_reported = false;
     for (std::int32_t node : load.resolved) {
       if (!(active_[static_cast<std::size_t>(node)] & bit)) {
-        if (lost++ == 0) lost_node = node;
+        if (!on_held_element(node) && lost++ == 0) lost_node = node;
         continue;
       }
       if (!prescribed_reported && in_force.boundaries.contains(node, load.dof)) {
@@ -396,6 +396,13 @@ class HistoryValidator {
   Model& model_;
   DiagnosticSink& sink_;
   std::vector<DofMask> active_;
+
+  // A node of a held element that is refused while deformable (check_held_elements): a
+  // condition on it is not reported a second time.
+  bool on_held_element(std::int32_t node) const {
+    const auto& held = model_.structure.node_on_held_element;
+    return static_cast<std::size_t>(node) < held.size() && held[static_cast<std::size_t>(node)];
+  }
   bool friction_known_ = false, friction_ = false;
 };
 

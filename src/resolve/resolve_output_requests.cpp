@@ -69,6 +69,7 @@ class OutputValidator {
           if (!block.has_elset) continue;
           std::vector<std::int32_t>& elements = block.resolved;
           if (!resolve_elements(model_, block.elset, elements, sink_) || request.field) continue;
+          drop_held_elements(elements);
           for (const OutputIdentifier& id : block.identifiers) {
             element_identifier(id, block.elset, elements, false);
           }
@@ -97,6 +98,7 @@ class OutputValidator {
           }
         } else {
           if (!print.all && !resolve_elements(model_, print.set, members, sink_)) continue;
+          drop_held_elements(members);
           for (const OutputIdentifier& id : print.identifiers) {
             element_identifier(id, print.set, members, print.totals != PrintRequest::Totals::No,
                                print.totals == PrintRequest::Totals::Only);
@@ -107,6 +109,14 @@ class OutputValidator {
   }
 
  private:
+  // Held elements (solids, shells, masses, ...) have no output variables: a request names
+  // the connectors, springs and dashpots among its elements.
+  void drop_held_elements(std::vector<std::int32_t>& elements) const {
+    std::erase_if(elements, [&](std::int32_t e) {
+      return model_.elements[static_cast<std::size_t>(e)].type == ElementType::Held;
+    });
+  }
+
   // W0903: a column produced twice in one step is written once; the second request is warned
   // about, once per identifier (output-variables.md §1.2). A column is a variable label (CTF1,
   // CDERF-normal, U2, …) at a target. Set totals are few and keyed by their names; element and

@@ -702,6 +702,7 @@ class SectionValidator {
     const auto& sections = model_.sections;
     for (std::size_t e = 0; e < model_.elements.size(); ++e) {
       const Element& element = model_.elements[e];
+      if (element.type == ElementType::Held) continue;  // their sections: resolve_structure
       const bool connector = is_connector(element.type);
       const bool has =
           connector ? sections.section_of_element[e] >= 0 : sections.spring_of_element[e] >= 0;

@@ -1,0 +1,43 @@
+// The element types clinch reads (Abaqus element library): each with its node count and family.
+// Connectors, springs and dashpots are analysed; every other type is held as its nodes only
+// (a block of the model's ElementBlocks), which a rigid body may later carry (docs/decisions.md,
+// "Elements held as nodes").
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+#include "src/model/geometry.hpp"
+
+namespace clinch {
+
+// The family of a type held as nodes; it names the type in messages and decides what a static
+// step does with it.
+enum class ElementFamily : std::uint8_t {
+  Analysed,  // a connector, spring or dashpot
+  Solid, Shell, Membrane, Rigid, Beam, Truss, Planar, Mass, RotaryInertia
+};
+
+struct ElementTypeInfo {
+  std::string_view name;  // canonical upper-case name, e.g. "C3D8R"
+  ElementType type;       // ElementType::Held for every family but Analysed
+  int nodes;              // nodes of one element
+  ElementFamily family;
+};
+
+// The type of canonical (folded) name `name`, or nullptr.
+const ElementTypeInfo* find_element_type(std::string_view name);
+
+// Every known type, in table order (the unit tests read them all).
+std::span<const ElementTypeInfo> element_types();
+
+// "solid", "shell", "mass", ... for messages.
+std::string_view element_family_name(ElementFamily family);
+
+// MASS and ROTARYI: inertia only, no stiffness (Abaqus: no role in a *STATIC step).
+inline bool is_inertia_only(ElementFamily family) {
+  return family == ElementFamily::Mass || family == ElementFamily::RotaryInertia;
+}
+
+}  // namespace clinch
