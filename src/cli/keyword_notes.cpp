@@ -36,11 +36,21 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
        {{"SYSTEM=C or S", "only rectangular coordinates (SYSTEM=R) are implemented"}}},
       {"ELEMENT",
        "Defines connector (CONN3D2, CONN2D2), spring (SPRINGA, SPRING1, SPRING2) and dashpot "
-       "(DASHPOTA, DASHPOT1, DASHPOT2) elements.",
+       "(DASHPOTA, DASHPOT1, DASHPOT2) elements, which clinch analyses, and reads the solids "
+       "(C3D4-C3D20R, their H variants, SC6R, SC8R), shells (S3, S3R, S4, S4R, S8R, S9R5, STRI3, "
+       "STRI65), membranes (M3D3-M3D9R), rigid elements (R3D3, R3D4, R2D2, RAX2, RB3D2, RB2D2), "
+       "beams (B21-B33, PIPE21-PIPE32), trusses (T2D2-T3D3), planar continua (CPS, CPE, CAX) "
+       "and point elements (MASS, ROTARYI) as their nodes.",
        "`label, node a[, node b]`; node b may be left out of a CONN3D2 or CONN2D2 (connected to "
-       "ground) and is absent for SPRING1 and DASHPOT1.",
-       {{"TYPE= any other element (solids, shells, beams, trusses, masses, ...)",
-         "clinch analyses connectors, springs and dashpots only"}}},
+       "ground) and is absent for SPRING1 and DASHPOT1. Other types: `label`, then every node of "
+       "the element; an element with more than 15 nodes goes on over lines that end with a "
+       "comma (16 entries a line).",
+       {{"a block of solid, shell, membrane, rigid, beam, truss or planar elements",
+         "refused once per block at TYPE=: clinch has no formulation for a deformable element; "
+         "make its part a rigid body (*RIGID BODY) or remove it"},
+        {"TYPE= other types (cohesive, gasket, gap, heat transfer, acoustic, user elements, ...)",
+         "not read"}},
+       {{"TYPE=MASS, ROTARYI", "inertia only, which a *STATIC step does not use"}}},
       {"NSET", "Defines a node set.",
        "Node labels or set names, or `first, last, increment` with GENERATE."},
       {"ELSET", "Defines an element set.",
@@ -76,6 +86,51 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
        "",
        {{"any parameter other than NAME, ELEMENT DELETION, MAX DEGRADATION and VISCOSITY",
          "they control elements clinch does not have"}}},
+      {"SOLID SECTION",
+       "Gives the solid (or planar) elements of ELSET= their material; read and kept.",
+       "Optional: the thickness of planar elements."},
+      {"SHELL SECTION", "Gives the shell elements of ELSET= their material; read and kept.",
+       "`thickness[, integration points]`."},
+      {"MEMBRANE SECTION",
+       "Gives the membrane elements of ELSET= their material; read and kept.", "`thickness`."},
+      {"BEAM SECTION",
+       "Gives the beam elements of ELSET= their profile (SECTION=) and material; read and kept.",
+       "Line 1: the profile dimensions; line 2: the direction of the n1 axis."},
+      {"TRUSS SECTION", "Gives the truss elements of ELSET= their material; read and kept.",
+       "`cross-sectional area`."},
+      {"MASS", "The mass of the MASS elements of ELSET=; read and kept.", "`mass`.",
+       {},
+       {{"the whole keyword", "a *STATIC step does not use inertia"}}},
+      {"ROTARY INERTIA", "The rotary inertia of the ROTARYI elements of ELSET=; read and kept.",
+       "`I11, I22, I33, I12, I13, I23`.",
+       {},
+       {{"the whole keyword", "a *STATIC step does not use inertia"}}},
+      {"MATERIAL",
+       "Opens a named material; the options that follow (*ELASTIC, *DENSITY, ...) belong to it. "
+       "Read and kept for the sections of held elements.",
+       ""},
+      {"ELASTIC", "Elastic moduli of the material; read and kept.",
+       "Rows of numbers (ISOTROPIC: `E, nu`)."},
+      {"DENSITY", "Mass density of the material; read and kept.", "`density`."},
+      {"PLASTIC", "Yield stress against plastic strain of the material; read and kept.",
+       "Rows of `yield stress, plastic strain`."},
+      {"EXPANSION", "Thermal expansion of the material; read and kept.",
+       "Rows of numbers (ISO: `alpha`)."},
+      {"DAMPING", "Rayleigh or structural damping of the material (ALPHA=, BETA=, ...); read and "
+       "kept.", ""},
+      {"CONDUCTIVITY", "Thermal conductivity of the material; read and kept.",
+       "Rows of numbers."},
+      {"SPECIFIC HEAT", "Specific heat of the material; read and kept.", "Rows of numbers."},
+      {"SURFACE",
+       "Defines a named surface of element faces (TYPE=ELEMENT) or nodes (TYPE=NODE); read and "
+       "kept.",
+       "TYPE=ELEMENT: `element or element set, face` (S1-S6, SPOS, SNEG; none: the whole "
+       "exterior). TYPE=NODE: `node or node set[, area]`.",
+       {{"TYPE=SEGMENTS, CYLINDER, REVOLUTION, CUTTING SURFACE or EULERIAN MATERIAL",
+         "analytical and Eulerian surfaces are not read"}}},
+      {"DISPLAY BODY",
+       "Shows an instance as a display body that follows up to three nodes; read and kept.",
+       "Optional: `node 1[, node 2, node 3]`."},
       {"CONNECTOR BEHAVIOR",
        "Opens a named connector behaviour; the options that follow (elasticity, damping, stops, "
        "plasticity, friction, damage, ...) belong to it.",
