@@ -19,6 +19,24 @@ void reserve_for_block(std::vector<T>& v, std::size_t lines) {
   if (v.size() + lines > v.capacity()) v.reserve(std::max(v.size() + lines, 2 * v.capacity()));
 }
 
+// A node or element label 1…2147483647 in the first field of a line; nullopt after a report.
+std::optional<std::int32_t> line_label(BlockContext& ctx, const Field& field,
+                                       std::string_view what) {
+  const std::string field_name = fmt::format("{} label", what);
+  if (field.empty()) {
+    ctx.missing(field.loc, field_name);
+    return std::nullopt;
+  }
+  auto label = ctx.integer(field, field_name);
+  if (!label) return std::nullopt;
+  if (*label < 1 || *label > 2147483647) {
+    ctx.report(DiagCode::value_out_of_range, field,
+               fmt::format("{} {} is out of range (1-2147483647)", field_name, *label));
+    return std::nullopt;
+  }
+  return static_cast<std::int32_t>(*label);
+}
+
 class NodeHandler : public KeywordHandler {
  public:
   void begin(BlockContext& ctx) override {
@@ -39,19 +57,10 @@ class NodeHandler : public KeywordHandler {
       ctx.check_field_count(line, fields, 7, "label, x, y, z, nx, ny, nz");
       return;
     }
-    if (fields[0].empty()) {
-      ctx.missing(fields[0].loc, "node label");
-      return;
-    }
-    auto label = ctx.integer(fields[0], "node label");
+    auto label = line_label(ctx, fields[0], "node");
     if (!label) return;
-    if (*label < 1 || *label > 2147483647) {
-      ctx.report(DiagCode::value_out_of_range, fields[0],
-                 fmt::format("node label {} is out of range (1-2147483647)", *label));
-      return;
-    }
     Node node;
-    node.label = static_cast<std::int32_t>(*label);
+    node.label = *label;
     node.line = line.loc.line;
     node.file = line.loc.file;
     for (std::size_t k = 1; k < fields.size() && k < 4; ++k) {
@@ -153,19 +162,10 @@ class ElementHandler : public KeywordHandler {
                             info_->nodes == 1 ? "label, node" : "label, node a, node b");
       return;
     }
-    if (fields[0].empty()) {
-      ctx.missing(fields[0].loc, "element label");
-      return;
-    }
-    auto label = ctx.integer(fields[0], "element label");
+    auto label = line_label(ctx, fields[0], "element");
     if (!label) return;
-    if (*label < 1 || *label > 2147483647) {
-      ctx.report(DiagCode::value_out_of_range, fields[0],
-                 fmt::format("element label {} is out of range (1-2147483647)", *label));
-      return;
-    }
     Element element;
-    element.label = static_cast<std::int32_t>(*label);
+    element.label = *label;
     element.type = info_->type;
     element.line = line.loc.line;
     element.file = line.loc.file;
@@ -203,14 +203,7 @@ class ElementHandler : public KeywordHandler {
     }
     if (!ok) return;
     if (!check_ends(ctx, line, fields, element)) return;
-    const std::int32_t existing = part_->element_index.insert(element.label, index);
-    if (existing != LabelIndex::kMissing) {
-      ctx.report(DiagCode::duplicate_element, fields[0],
-                 fmt::format("element {} is already defined", element.label))
-          .notes.push_back({part_->elements[existing].loc(), "previous definition is here"});
-      return;
-    }
-    part_->elements.push_back(element);
+    if (!add_element(ctx, fields[0], element)) return;
     for (Part::QualifiedNode& q : qualified) part_->qualified_nodes.push_back(std::move(q));
     if (set_) set_->members.push_back(index);
   }
@@ -224,6 +217,20 @@ class ElementHandler : public KeywordHandler {
   }
 
  private:
+  // Appends `element` at the next index unless its label is taken (E0510 at `label_field`).
+  bool add_element(BlockContext& ctx, const Field& label_field, const Element& element) {
+    const auto index = static_cast<std::int32_t>(part_->elements.size());
+    const std::int32_t existing = part_->element_index.insert(element.label, index);
+    if (existing != LabelIndex::kMissing) {
+      ctx.report(DiagCode::duplicate_element, label_field,
+                 fmt::format("element {} is already defined", element.label))
+          .notes.push_back({part_->elements[existing].loc(), "previous definition is here"});
+      return false;
+    }
+    part_->elements.push_back(element);
+    return true;
+  }
+
   // A line of a held element, or the continuation of one (kEntriesPerLine).
   void held_line(BlockContext& ctx, const DataLine& line, std::vector<Field>& fields) {
     const std::size_t needed = 1 + static_cast<std::size_t>(info_->nodes);
@@ -248,17 +255,8 @@ class ElementHandler : public KeywordHandler {
 
   void add_held_element(BlockContext& ctx, const DataLine& line, const std::vector<Field>& fields) {
     const std::size_t needed = 1 + static_cast<std::size_t>(info_->nodes);
-    if (fields[0].empty()) {
-      ctx.missing(fields[0].loc, "element label");
-      return;
-    }
-    auto label = ctx.integer(fields[0], "element label");
+    auto label = line_label(ctx, fields[0], "element");
     if (!label) return;
-    if (*label < 1 || *label > 2147483647) {
-      ctx.report(DiagCode::value_out_of_range, fields[0],
-                 fmt::format("element label {} is out of range (1-2147483647)", *label));
-      return;
-    }
     if (fields.size() < needed) {
       ctx.report(DiagCode::missing_field, BlockContext::end_of_line(line),
                  fmt::format("{} element {} has {} nodes; {} given (a line that goes on to "
@@ -291,20 +289,13 @@ class ElementHandler : public KeywordHandler {
       }
     }
     Element element;
-    element.label = static_cast<std::int32_t>(*label);
+    element.label = *label;
     element.type = ElementType::Held;
     element.line = fields[0].loc.line;
     element.file = fields[0].loc.file;
     element.keyword_line = ctx.keyword().loc.line;
     const auto index = static_cast<std::int32_t>(part_->elements.size());
-    const std::int32_t existing = part_->element_index.insert(element.label, index);
-    if (existing != LabelIndex::kMissing) {
-      ctx.report(DiagCode::duplicate_element, fields[0],
-                 fmt::format("element {} is already defined", element.label))
-          .notes.push_back({part_->elements[existing].loc(), "previous definition is here"});
-      return;
-    }
-    part_->elements.push_back(element);
+    if (!add_element(ctx, fields[0], element)) return;
     block.nodes.insert(block.nodes.end(), nodes.begin(), nodes.end());
     for (std::size_t k = 1; k < needed; ++k) block.node_locs.push_back(fields[k].loc);
     for (auto& q : qualified) block.qualified.push_back(std::move(q));
