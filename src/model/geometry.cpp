@@ -36,6 +36,15 @@ const char* element_type_name(ElementType type) {
   return "?";
 }
 
+std::string_view element_type_name(const Model& model, std::int32_t e) {
+  const Element& element = model.elements[static_cast<std::size_t>(e)];
+  if (element.type != ElementType::Held) return element_type_name(element.type);
+  const Instance& instance = model.instances[static_cast<std::size_t>(element.instance)];
+  const ElementBlock* block =
+      model.parts[static_cast<std::size_t>(instance.part)].block_of(e - instance.element_offset);
+  return block ? std::string_view(block->type) : std::string_view("?");
+}
+
 const ElementBlock* Part::block_of(std::int32_t e) const {
   // Blocks are in order of first_element and do not overlap.
   auto it = std::upper_bound(

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <string_view>
 #include <unordered_map>
 
 #include "src/model/label_index.hpp"
@@ -66,6 +67,11 @@ double geometry_tolerance(const std::vector<Node>& nodes);
 // |x|, computed with scaling: neither overflow nor underflow of the squares for coordinates
 // between about 1e-300 and 1e300.
 double length_of(const Vec3& x);
+
+struct Element;
+struct Model;
+// The type of global element `e` as written: "CONN3D2", or a held element's block type ("C3D8R").
+std::string_view element_type_name(const Model& model, std::int32_t e);
 
 struct Element {
   std::int32_t label = 0;

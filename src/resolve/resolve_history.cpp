@@ -330,10 +330,10 @@ class HistoryValidator {
           const std::string what =
               condition.target.is_label
                   ? fmt::format("element {} is of type {}", element_name(model_, e),
-                                element_type_name(element.type))
+                                element_type_name(model_, e))
                   : fmt::format("{} contains element {} of type {}",
                                 describe(condition.target, true), element_name(model_, e),
-                                element_type_name(element.type));
+                                element_type_name(model_, e));
           sink_.report(DiagCode::wrong_element_kind, condition.target.loc,
                        fmt::format("{}; {} needs connector elements", what, keyword));
         }

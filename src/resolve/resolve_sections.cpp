@@ -220,7 +220,7 @@ class SectionValidator {
                        fmt::format("{} contains element {} of type {}; *CONNECTOR SECTION needs "
                                    "connector elements",
                                    describe(section.elset, true), element_label(element),
-                                   element_type_name(element.type)));
+                                   element_type_name(model_, index)));
         }
         continue;
       }
@@ -464,7 +464,8 @@ class SectionValidator {
           sink_.report(DiagCode::wrong_element_kind, spring.elset.loc,
                        fmt::format("{} contains element {} of type {}; {} needs {} elements",
                                    describe(spring.elset, true), element_label(element),
-                                   element_type_name(element.type), words.keyword, words.element));
+                                   element_type_name(model_, index), words.keyword,
+                                   words.element));
         }
         continue;
       }

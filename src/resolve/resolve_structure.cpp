@@ -26,7 +26,7 @@ void resolve_section(Model& model, ElementSection& section, DiagnosticSink& sink
                   fmt::format("{} contains element {} of type {}; *{} is for solid, shell, "
                               "membrane, beam, truss and point elements",
                               describe(section.elset, true), element.label,
-                              element_type_name(element.type), section.keyword));
+                              element_type_name(model, e), section.keyword));
       return;
     }
     section.elements.push_back(e);
