@@ -14,6 +14,7 @@
 #include "src/assembly/connector_system.hpp"
 #include "src/cli/blas_threads.hpp"
 #include "src/cli/stop_signals.hpp"
+#include "src/model/default_stick_stiffness.hpp"
 #include "src/output/history_columns.hpp"
 #include "src/output/run_log.hpp"
 #include "src/output/status_file.hpp"
@@ -174,6 +175,7 @@ int run_deck(const RunCommandOptions& options) {
                        plan->springs.size(), node_equations,
                        model.nodes.empty() ? 0.0 : double(node_equations) / model.nodes.size(),
                        plan->dofs.equations() - node_equations));
+  if (auto stick = default_stick_stiffness_summary(model.behaviors)) log.info(*stick);
   ConnectorSystem system(model, *plan);
   if (communicator) {
     system.distribute(*communicator);
