@@ -22,7 +22,8 @@
 #include "parser/reader/line_stream.hpp"
 #include "parser/reader/parameter_substitution.hpp"
 #include "parser/reader/prepass.hpp"
-#include "src/check/validate.hpp"
+#include "src/check/check.hpp"
+#include "src/resolve/resolve.hpp"
 
 namespace clinch {
 namespace {
@@ -137,6 +138,12 @@ class Reader {
   BlockDispatcher blocks_;
 };
 
+// Once the deck is read: fill the model (src/resolve/), then check the rules that read it.
+void resolve_and_check(Model& model, DiagnosticSink& sink) {
+  resolve_model(model, sink);
+  check_model(model, sink);
+}
+
 }  // namespace
 
 ReadStatus read_deck_file(const std::string& path, SourceManager& sources, Model& model,
@@ -153,7 +160,7 @@ ReadStatus read_deck_file(const std::string& path, SourceManager& sources, Model
     if (io_error) *io_error = sources.read_error();
     return ReadStatus::IoError;
   }
-  validate_model(model, sink);
+  resolve_and_check(model, sink);
   return ReadStatus::Ok;
 }
 
@@ -161,7 +168,7 @@ void read_deck_text(const std::string& display_name, std::string text, SourceMan
                     Model& model, DiagnosticSink& sink) {
   std::uint32_t idx = sources.add_buffer(display_name, std::move(text));
   Reader(sources, model, sink).run(idx);
-  validate_model(model, sink);
+  resolve_and_check(model, sink);
 }
 
 }  // namespace clinch

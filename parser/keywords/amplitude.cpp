@@ -1,7 +1,8 @@
 // *AMPLITUDE (keywords.md §8): a model-wide named time function, in model or history data.
 // The data are read as (time, value) pairs, as equally spaced values, or as the constants of a
-// formula (amplitude_formula.cpp), checked (E0803) and stored after SCALEX/SCALEY/SHIFTX/SHIFTY. Whether anything uses it (W0501) and undefined
-// references (E0507) are decided in validate_history.
+// formula (amplitude_formula.cpp), checked (E0803) and stored after SCALEX/SCALEY/SHIFTX/SHIFTY.
+// Whether anything uses it (W0501) and undefined references (E0507) are decided in
+// resolve_history.
 #include <fmt/format.h>
 
 #include "parser/keywords/amplitude_formula.hpp"

@@ -1,7 +1,7 @@
 // *BOUNDARY, *CLOAD, *CONNECTOR MOTION and *CONNECTOR LOAD (keywords.md §9–§13). Each block
 // becomes a ConditionBlock (OP, AMPLITUDE, FIXED, TYPE) and its data lines become entries that
 // point at it, in the step or, for *BOUNDARY and *CONNECTOR MOTION, in model data (zero values
-// only). Targets are resolved and DOFs/components checked against the model in validate_history.
+// only). Targets are resolved and DOFs/components checked against the model in resolve_history.
 #include <fmt/format.h>
 
 #include <cctype>

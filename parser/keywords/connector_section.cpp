@@ -2,7 +2,7 @@
 // handlers read what each block can know on its own (names, connection types and their
 // combination, orientation points, spring data lines) into SectionModel; everything that needs
 // the elements (element kinds, CONN2D2, the spring's element type, references to other
-// definitions) is checked by validate_sections.
+// definitions) is checked by resolve_sections.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -161,7 +161,7 @@ class OrientationHandler : public KeywordHandler {
   }
 
   // `na, nb [, nc]`: node labels whose initial coordinates give a, b, c (resolved by
-  // validate_sections once the geometry is complete).
+  // resolve_sections once the geometry is complete).
   void read_nodes(BlockContext& ctx, const DataLine& line, std::vector<Field>& fields) {
     if (!ctx.check_field_count(line, fields, 3, "node a, node b, node c")) {
       points_ok_ = false;
@@ -546,7 +546,7 @@ class SpringHandler : public KeywordHandler {
   }
 
   // `k [, frequency] [, temperature]` or `F, Δ [, temperature]`: numbers only; what they mean
-  // and how many lines there may be is checked by validate_sections.
+  // and how many lines there may be is checked by resolve_sections.
   SpringLine read_property_line(BlockContext& ctx, const DataLine& line,
                                 std::vector<Field>& fields) {
     SpringLine out;

@@ -1,7 +1,7 @@
 // *CONNECTOR DAMAGE INITIATION and *CONNECTOR DAMAGE EVOLUTION (behaviors.md §7.1, §7.2). Both
 // are owners of a following *CONNECTOR POTENTIAL (derived-components-and-potentials.md §2.7); an
 // evolution attaches to the nearest preceding initiation that has no evolution yet (§2). Rules
-// that need the plasticities or the connection type are checked by validate_behaviors.
+// that need the plasticities or the connection type are checked by check_behaviors.
 #include <fmt/format.h>
 
 #include "parser/block_context.hpp"

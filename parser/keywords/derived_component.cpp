@@ -2,7 +2,7 @@
 // scalar function of the intrinsic components. The handler reads the parameters and the two
 // positional data lines (component numbers, coefficients) into a DerivedComponentTerm of the open
 // behaviour block; names are resolved and types checked once the model is complete
-// (validate_potentials.cpp).
+// (resolve_potentials.cpp).
 #include <algorithm>
 #include <cstdint>
 #include <string>

@@ -1,7 +1,7 @@
 // *CONNECTOR ELASTICITY (behaviors.md §4): linear and nonlinear uncoupled, coupled linear (21
 // terms), RIGID. Reads the data into ConnectorElasticity and reports what one option can know on
 // its own; the per-component rules (duplicates, plasticity) and everything that needs the
-// connection type are checked by validate_behaviors.
+// connection type are checked by check_behaviors.
 #include <fmt/format.h>
 
 #include <cmath>

@@ -2,7 +2,7 @@
 // friction keyword records a FrictionDefinition and registers itself as a potential owner
 // (derived-components-and-potentials.md §2.7); *FRICTION attaches its law to the nearest
 // preceding friction definition of the block. Checks that need the connection type or the
-// derived components run in validate_potentials.cpp.
+// derived components run in resolve_potentials.cpp.
 #include <cstdint>
 #include <optional>
 #include <string>

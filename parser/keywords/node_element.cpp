@@ -190,7 +190,7 @@ class ElementHandler : public KeywordHandler {
                              fields[k].loc});
         element.nodes[slot] = 0;
       } else {
-        element.nodes[slot] = ref->label;  // a label until finalize_geometry resolves it
+        element.nodes[slot] = ref->label;  // a label until resolve_geometry resolves it
       }
     }
     if (!ok) return;

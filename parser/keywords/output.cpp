@@ -1,7 +1,7 @@
 // *OUTPUT, *ELEMENT OUTPUT, *NODE OUTPUT (keywords.md §17) and the CalculiX print requests
 // *NODE PRINT, *EL PRINT (§18). Identifiers are classified here (unknown E0901, unsupported
 // E0904, velocity-type W0904: output-variables.md §1.2, §5); everything that depends on the
-// elements of a set (E0902, W0901, W0903, derived components) is checked in validate_history.
+// elements of a set (E0902, W0901, W0903, derived components) is checked in resolve_history.
 #include <fmt/format.h>
 
 #include "parser/keywords/history_keywords.hpp"

@@ -2,7 +2,7 @@
 // of a following *CONNECTOR POTENTIAL (derived-components-and-potentials.md §2.7); a hardening
 // attaches to the nearest preceding plasticity of the block (behaviors.md §2). The rules that
 // need the elasticity of the behaviour (softening-too-steep, plasticity-needs-linear-elasticity)
-// are checked by validate_behaviors.
+// are checked by check_behaviors.
 #include <fmt/format.h>
 
 #include "parser/block_context.hpp"

@@ -2,7 +2,7 @@
 // lines (and the manual's short layout, with a warning), the checks that need only the line
 // itself (§2.2, §2.3), and the attachment to the nearest preceding owner keyword of the same
 // behaviour block (§2.7). The plasticity/friction rules need the derived-component types and run
-// in validate_potentials.cpp.
+// in resolve_potentials.cpp.
 #include <cmath>
 #include <cstdint>
 #include <string>

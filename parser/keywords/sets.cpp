@@ -1,5 +1,5 @@
 // *NSET and *ELSET (input-syntax.md §7.4). Members are recorded as set operations and replayed
-// in deck order by finalize_geometry, because labels may refer to later definitions.
+// in deck order by resolve_geometry, because labels may refer to later definitions.
 #include <fmt/format.h>
 
 #include "parser/block_context.hpp"

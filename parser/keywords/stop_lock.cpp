@@ -1,6 +1,6 @@
 // *CONNECTOR STOP, *CONNECTOR LOCK and *CONNECTOR FAILURE (behaviors.md §5): limits and criteria
 // on the position (and total force) of one component. Each takes one data line; what needs the
-// connection type (availability, the initial position) is checked by validate_behaviors.
+// connection type (availability, the initial position) is checked by check_behaviors.
 #include <fmt/format.h>
 
 #include "parser/block_context.hpp"

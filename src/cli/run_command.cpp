@@ -8,7 +8,7 @@
 
 #include "parser/deck_reader.hpp"
 #include "parser/diagnostic_render.hpp"
-#include "src/check/validate.hpp"
+#include "src/check/check.hpp"
 #include "src/assembly/analysis_plan.hpp"
 #include "src/assembly/connector_step_problem.hpp"
 #include "src/assembly/connector_system.hpp"

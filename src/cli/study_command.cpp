@@ -13,7 +13,7 @@
 
 #include "parser/deck_reader.hpp"
 #include "parser/diagnostic_render.hpp"
-#include "src/check/validate.hpp"
+#include "src/check/check.hpp"
 #include "src/cli/stop_signals.hpp"
 #include "src/output/csv_table.hpp"
 #include "src/output/progress.hpp"

@@ -15,7 +15,7 @@ struct Model;
 using DofMask = std::uint8_t;
 
 // DOF mask of every global node; 0 for a node that belongs to no element. Valid after
-// validate_sections (it reads section_of_element and the *SPRING DOFs).
+// resolve_sections (it reads section_of_element and the *SPRING DOFs).
 std::vector<DofMask> active_dofs(const Model& model);
 
 }  // namespace clinch

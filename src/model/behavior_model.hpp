@@ -1,6 +1,6 @@
 // Plain data for *CONNECTOR BEHAVIOR and its sub-options (behaviors.md), including the derived
 // components, potentials and friction definitions of each behaviour block. The reader fills it in
-// deck order; validate_behaviors checks the rules that need the whole block or the sections that
+// deck order; check_behaviors checks the rules that need the whole block or the sections that
 // use it; the analysis plan reads it. Every option keeps the locations its diagnostics need.
 #pragma once
 

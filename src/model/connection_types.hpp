@@ -73,7 +73,7 @@ struct ConnectionSummary {
 ConnectionSummary summarize_connection(std::span<const ConnectionTypeInfo* const> types,
                                        bool two_d);
 
-// The section's available components (filled by validate_sections; CONN2D2 sections hold only
+// The section's available components (filled by resolve_sections; CONN2D2 sections hold only
 // components of {1, 2, 6}).
 inline ComponentMask available_components(const ConnectorSection& section) {
   return section.available;

@@ -1,6 +1,6 @@
 // Plain data for *CONNECTOR DERIVED COMPONENT (derived-components-and-potentials.md §1). Each
 // keyword occurrence is one term; the terms with the same NAME in one behaviour block add up to
-// one derived component. The reader fills the terms; validate_potentials_and_friction classifies
+// one derived component. The reader fills the terms; resolve_potentials_and_friction classifies
 // them (§1.5). Which contexts use a name (§4) is answered by potential_queries.hpp.
 #pragma once
 

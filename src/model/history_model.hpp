@@ -1,6 +1,6 @@
 // Plain data for amplitudes, steps and everything in them: procedure, controls, boundary
 // conditions, loads, connector motions and loads, output requests (keywords.md §8–§18). The
-// history keyword handlers fill it in deck order; validate_history resolves references and checks
+// history keyword handlers fill it in deck order; resolve_history resolves references and checks
 // the rules that need the whole model. It stores the global nodes or elements each condition,
 // load and output request targets (`resolved`; empty when the reference is in error), and the
 // run reads those instead of resolving the names again. Steps hold their *effective* NLGEOM and

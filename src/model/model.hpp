@@ -21,7 +21,8 @@ struct Model {
   std::unordered_map<std::string, std::int32_t> part_by_key;
   std::unordered_map<std::string, std::int32_t> instance_by_key;
 
-  // Global numbering, filled by finalize_geometry(): every node and element of every instance.
+  // Global numbering, filled by resolve_geometry() (src/resolve/): every node and element of
+  // every instance.
   std::vector<Node> nodes;
   std::vector<Element> elements;
   int dimension = 3;  // 2 when the model has CONN2D2 elements (keywords.md, DOF numbering)
@@ -34,11 +35,5 @@ struct Model {
 
   Model();
 };
-
-class DiagnosticSink;
-
-// Resolves node and element references, places instances and builds the global arrays
-// (geometry.cpp); the first stage of validate_model.
-void finalize_geometry(Model& model, DiagnosticSink& sink);
 
 }  // namespace clinch

@@ -2,7 +2,7 @@
 // which identifiers each request keyword accepts, their aliases (CTM1 ≡ CTF4), which are scalar
 // by default (CDMG), which behaviour produces them, and how a requested component becomes a
 // history column name (`<LABEL>@<where>`, cli-contract.md). The output keyword handlers classify
-// identifiers with it; validate_history and the history writer expand requests with it.
+// identifiers with it; resolve_history and the history writer expand requests with it.
 #pragma once
 
 #include <cstdint>

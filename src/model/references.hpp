@@ -1,6 +1,7 @@
 // References from data fields to nodes, elements and sets (node-or-set, element-or-set fields,
 // input-syntax.md §3.2 and §7.3). They are recorded while reading and resolved once the model
-// data is complete, because labels may refer to definitions later in the file.
+// data is complete (src/resolve/reference_lookup.hpp), because labels may refer to definitions
+// later in the file.
 #pragma once
 
 #include <cstdint>
@@ -11,7 +12,6 @@
 
 namespace clinch {
 
-class DiagnosticSink;
 struct Model;
 
 struct TargetRef {
@@ -24,15 +24,6 @@ struct TargetRef {
   SourceLoc loc;
   std::int32_t part = 0;     // scope where the reference was written (0: flat model or assembly)
 };
-
-// Global node/element indices a reference denotes. A reference written inside part p (> 0)
-// denotes the copies of every instance of p. Reports undefined labels, sets and instances
-// (E0501, E0502, E0503, E0508, with did-you-mean notes) and returns false then; an empty set is
-// not an error here (callers that need members report E0515).
-bool resolve_nodes(const Model& model, const TargetRef& ref, std::vector<std::int32_t>& out,
-                   DiagnosticSink& sink);
-bool resolve_elements(const Model& model, const TargetRef& ref, std::vector<std::int32_t>& out,
-                      DiagnosticSink& sink);
 
 // The display of a reference for messages: "node 12", "element set 'W1'", "Inst.12".
 std::string describe(const TargetRef& ref, bool element);

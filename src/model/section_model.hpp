@@ -1,6 +1,6 @@
 // Plain data for *ORIENTATION, *CONNECTOR SECTION, *SPRING and *SECTION CONTROLS
 // (keywords.md §4–§7, connection-types.md §1.3). The reader fills what the deck says;
-// validate_sections resolves element sets, names and element-dependent rules and fills the
+// resolve_sections resolves element sets, names and element-dependent rules and fills the
 // resolved fields (marked "filled by validation").
 #pragma once
 

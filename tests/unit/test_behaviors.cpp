@@ -1,6 +1,6 @@
 // Unit tests of *CONNECTOR BEHAVIOR and its sub-options (behaviors.md §2–§8): the numbers each
 // keyword form stores, and each diagnostic with its code, line and column. Section-dependent
-// checks run validate_behaviors on a model whose sections are set up by hand.
+// checks run check_behaviors on a model whose sections are set up by hand.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,8 +14,8 @@
 #include "base/diagnostic.hpp"
 #include "parser/source_manager.hpp"
 #include "src/model/model.hpp"
-#include "src/check/validate.hpp"
-#include "src/check/validate_behavior_sections.hpp"
+#include "src/check/check.hpp"
+#include "src/check/check_behavior_sections.hpp"
 
 namespace clinch {
 namespace {
@@ -782,7 +782,7 @@ TEST(BehaviorFeatures, Flags) {
 // ---------------------------------------------------------------- section-dependent checks
 
 // Attaches a hand-made section (connection type `type`, available `mask`) to behaviour 0, with
-// one CONN3D2 element between nodes at xa and xb, and runs validate_behaviors again.
+// one CONN3D2 element between nodes at xa and xb, and runs check_behaviors again.
 struct SectionSetup {
   std::string type;
   std::uint8_t mask;
@@ -815,7 +815,7 @@ DiagnosticSink revalidate(Parsed& p, const SectionSetup& setup) {
   m.sections.connector_sections = {s};
   m.behaviors.behaviors[0].used = true;
   DiagnosticSink sink;
-  validate_behaviors(m, sink);
+  check_behaviors(m, sink);
   return sink;
 }
 

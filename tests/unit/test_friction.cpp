@@ -10,7 +10,7 @@
 #include "base/diagnostic.hpp"
 #include "parser/deck_reader.hpp"
 #include "parser/source_manager.hpp"
-#include "src/check/validate.hpp"
+#include "src/resolve/resolve.hpp"
 #include "src/model/default_stick_stiffness.hpp"
 #include "src/model/model.hpp"
 #include "src/model/potential_queries.hpp"
@@ -352,7 +352,7 @@ TEST(FrictionTypes, ComponentNotAvailableAtTheSectionBehaviorValue) {
   f.component_loc = SourceLoc{0, 10, 22};
   model.behaviors.behaviors[0].potential_owners[0].allows_potential = false;
   DiagnosticSink sink;
-  validate_potentials_and_friction(model, sink);
+  resolve_potentials_and_friction(model, sink);
   ASSERT_EQ(sink.diagnostics().size(), 1u);
   const Diagnostic& d = sink.diagnostics()[0];
   EXPECT_EQ(d.code, DiagCode::component_not_available);
@@ -391,7 +391,7 @@ TEST(FrictionTypes, PredefinedPerConnectionType) {
     f.predefined = true;
     f.internal_force.clear();
     DiagnosticSink sink;
-    validate_potentials_and_friction(model, sink);
+    resolve_potentials_and_friction(model, sink);
     const std::string type = c.types[0];
     if (c.code == DiagCode::unknown_keyword) {
       EXPECT_TRUE(sink.diagnostics().empty()) << type;
@@ -409,7 +409,7 @@ TEST(FrictionTypes, PredefinedUnavailableMessage) {
   Model model = model_with_section({"REVOLUTE"}, component_bit(4), 0);
   add_friction(model).predefined = true;
   DiagnosticSink sink;
-  validate_potentials_and_friction(model, sink);
+  resolve_potentials_and_friction(model, sink);
   ASSERT_EQ(sink.diagnostics().size(), 1u);
   EXPECT_EQ(sink.diagnostics()[0].message,
             "connection type REVOLUTE has no predefined friction; use COMPONENT= or a "
@@ -433,7 +433,7 @@ TEST(FrictionTypes, ContactForceNameUndefinedSuggestsTheDefinition) {
   f.contact = FrictionDefinition::Contact::Derived;
   f.contact_name = Name{"PRES", "PRES", SourceLoc{0, 41, 30}};
   DiagnosticSink sink;
-  validate_potentials_and_friction(model, sink);
+  resolve_potentials_and_friction(model, sink);
   const Diagnostic* undefined = nullptr;
   for (const Diagnostic& d : sink.diagnostics()) {
     if (d.code == DiagCode::undefined_derived_component) undefined = &d;
@@ -464,7 +464,7 @@ TEST(FrictionTypes, ContactForceMayListConstrainedComponents) {
   f.contact = FrictionDefinition::Contact::Derived;
   f.contact_name = Name{"N", "N", SourceLoc{0, 10, 40}};
   DiagnosticSink sink;
-  validate_potentials_and_friction(model, sink);
+  resolve_potentials_and_friction(model, sink);
   // 2 and 3 are constrained (allowed for a contact force); 4 is neither.
   ASSERT_EQ(sink.diagnostics().size(), 1u);
   EXPECT_EQ(sink.diagnostics()[0].code, DiagCode::dc_unavailable_component);
@@ -479,7 +479,7 @@ TEST(FrictionTypes, ContactSelfWarning) {
   f.contact_component = 1;
   f.contact_loc = SourceLoc{0, 10, 35};
   DiagnosticSink sink;
-  validate_potentials_and_friction(model, sink);
+  resolve_potentials_and_friction(model, sink);
   ASSERT_EQ(sink.diagnostics().size(), 1u);
   EXPECT_EQ(sink.diagnostics()[0].code, DiagCode::friction_contact_self);
   EXPECT_EQ(sink.diagnostics()[0].loc.column, 35u);

@@ -8,6 +8,7 @@
 
 #include "parser/deck_reader.hpp"
 #include "parser/diagnostic_render.hpp"
+#include "src/resolve/reference_lookup.hpp"
 
 namespace clinch {
 namespace {

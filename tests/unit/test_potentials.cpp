@@ -15,7 +15,7 @@
 #include "parser/source_manager.hpp"
 #include "src/model/model.hpp"
 #include "src/model/potential_queries.hpp"
-#include "src/check/validate.hpp"
+#include "src/resolve/resolve.hpp"
 
 namespace clinch {
 namespace {
@@ -597,7 +597,7 @@ TEST(PotentialAvailability, IntrinsicComponentNotAvailable) {
   p.contributions.push_back(intrinsic(2, 12));
   b.potentials.push_back(p);
   DiagnosticSink sink;
-  validate_potentials_and_friction(model, sink);
+  resolve_potentials_and_friction(model, sink);
   ASSERT_EQ(sink.diagnostics().size(), 1u);
   const Diagnostic& d = sink.diagnostics()[0];
   EXPECT_EQ(d.code, DiagCode::potential_unavailable_component);
@@ -618,7 +618,7 @@ TEST(PotentialAvailability, DerivedComponentListsUnavailableComponent) {
   p.contributions.push_back(derived("N", 11));
   b.potentials.push_back(p);
   DiagnosticSink sink;
-  validate_potentials_and_friction(model, sink);
+  resolve_potentials_and_friction(model, sink);
   ASSERT_EQ(sink.diagnostics().size(), 1u);
   const Diagnostic& d = sink.diagnostics()[0];
   EXPECT_EQ(d.code, DiagCode::dc_unavailable_component);
@@ -639,7 +639,7 @@ TEST(PotentialAvailability, TwoDimensionalComponentsDoNotExist) {
   p.contributions.push_back(derived("N", 11));
   b.potentials.push_back(p);
   DiagnosticSink sink;
-  validate_potentials_and_friction(model, sink);
+  resolve_potentials_and_friction(model, sink);
   ASSERT_EQ(sink.diagnostics().size(), 1u);  // dc-bad-component only, not also unavailable
   EXPECT_EQ(sink.diagnostics()[0].code, DiagCode::dc_bad_component);
   EXPECT_EQ(sink.diagnostics()[0].loc.column, 4u);
@@ -654,7 +654,7 @@ TEST(PotentialAvailability, UnusedBehaviorSkipsAvailability) {
   p.contributions.push_back(intrinsic(5, 11));
   b.potentials.push_back(p);
   DiagnosticSink sink;
-  validate_potentials_and_friction(model, sink);
+  resolve_potentials_and_friction(model, sink);
   EXPECT_TRUE(sink.diagnostics().empty());
 }
 

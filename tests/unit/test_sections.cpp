@@ -1,6 +1,6 @@
 // Unit tests of the connection-type library (connection-types.md §2.1), the *ORIENTATION triad
 // (keywords.md §6), and *CONNECTOR SECTION / *SPRING / *SECTION CONTROLS reading and
-// validate_sections: stored data, and each diagnostic with its code, line and column.
+// resolve_sections: stored data, and each diagnostic with its code, line and column.
 #include <gtest/gtest.h>
 
 #include <cmath>

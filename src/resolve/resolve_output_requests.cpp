@@ -1,4 +1,4 @@
-#include "src/check/validate_output.hpp"
+#include "src/resolve/resolve_output_requests.hpp"
 
 #include <fmt/format.h>
 
@@ -13,6 +13,7 @@
 #include "src/model/model.hpp"
 #include "src/model/output_variables.hpp"
 #include "src/model/potential_queries.hpp"
+#include "src/resolve/reference_lookup.hpp"
 
 namespace clinch {
 namespace {
@@ -395,7 +396,7 @@ class OutputValidator {
 
 }  // namespace
 
-void validate_output_requests(Model& model, const std::vector<DofMask>& active,
+void resolve_output_requests(Model& model, const std::vector<DofMask>& active,
                               DiagnosticSink& sink) {
   OutputValidator(model, active, sink).run(model.history.steps);
 }

@@ -1,4 +1,4 @@
-#include "src/check/validate_behavior_sections.hpp"
+#include "src/check/check_behavior_sections.hpp"
 
 #include <fmt/format.h>
 
@@ -169,8 +169,8 @@ std::array<double, 6> symmetric_block_eigenvalues(const std::array<std::array<do
   return eig;
 }
 
-void check_behavior_against_sections(Model& model, std::size_t index, DiagnosticSink& sink) {
-  ConnectorBehavior& b = model.behaviors.behaviors[index];
+void check_behavior_against_sections(const Model& model, std::size_t index, DiagnosticSink& sink) {
+  const ConnectorBehavior& b = model.behaviors.behaviors[index];
   const std::vector<ComponentUse> uses = component_uses(b);
   std::set<std::pair<std::size_t, int>> reference_warned;         // (field, ·)
   std::set<std::pair<std::size_t, std::uint8_t>> coupled_warned;  // (elasticity, mask)

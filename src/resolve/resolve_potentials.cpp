@@ -1,9 +1,9 @@
-// Whole-model checks of derived components, potentials and connector friction
+// Resolve of derived components, potentials and connector friction
 // (derived-components-and-potentials.md §1.5–§2.7, friction.md §2, §8): name resolution inside
 // each behaviour block, classification of derived components (g_S/g_M/g_N/mixed) and of
 // potential contributions (P_N/P_S), the plasticity/friction rules, component availability
 // against every section that uses the behaviour, placement (potential-missing), predefined
-// friction per connection type, and unused derived components. Runs after validate_sections,
+// friction per connection type, and unused derived components. Runs after resolve_sections,
 // which fills ConnectorSection::behavior_index, available and constrained.
 #include <fmt/format.h>
 
@@ -19,7 +19,7 @@
 
 #include "base/diagnostic.hpp"
 #include "base/suggest.hpp"
-#include "src/check/validate.hpp"
+#include "src/resolve/resolve.hpp"
 #include "src/model/default_stick_stiffness.hpp"
 #include "src/model/model.hpp"
 #include "src/model/potential_queries.hpp"
@@ -679,7 +679,7 @@ class BehaviorChecker {
 
 }  // namespace
 
-void validate_potentials_and_friction(Model& model, DiagnosticSink& sink) {
+void resolve_potentials_and_friction(Model& model, DiagnosticSink& sink) {
   for (std::size_t i = 0; i < model.behaviors.behaviors.size(); ++i) {
     BehaviorChecker(model, sink, i).run();
   }

@@ -1,9 +1,9 @@
-// validate_history: the rules of keywords.md §8–§18 that need the whole model. Amplitude
+// resolve_history: the rules of keywords.md §8–§18 that need the whole model. Amplitude
 // references (E0507, W0501), procedures of unclosed steps (E0605), boundary conditions and loads
 // against the DOFs the elements use (W0502, W0803, E0801), repeated conditions (W0802), loads on
 // prescribed DOFs or components (W0801), connector motions and loads against the connection type
 // (E0512, E0709, E0702), UNSYMM=NO with an unsymmetric behaviour (W0806), and the output requests
-// (validate_output.cpp).
+// (resolve_output_requests.cpp).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -18,8 +18,9 @@
 #include "src/model/active_dofs.hpp"
 #include "src/model/connection_types.hpp"
 #include "src/model/model.hpp"
-#include "src/check/validate.hpp"
-#include "src/check/validate_output.hpp"
+#include "src/resolve/reference_lookup.hpp"
+#include "src/resolve/resolve.hpp"
+#include "src/resolve/resolve_output_requests.hpp"
 
 namespace clinch {
 namespace {
@@ -135,7 +136,7 @@ class HistoryValidator {
         check_connector(load, ConditionKind::ConnectorLoad, where, nullptr, in_force);
       }
     }
-    validate_output_requests(model_, active_, sink_);
+    resolve_output_requests(model_, active_, sink_);
   }
 
  private:
@@ -430,6 +431,6 @@ class HistoryValidator {
 
 }  // namespace
 
-void validate_history(Model& model, DiagnosticSink& sink) { HistoryValidator(model, sink).run(); }
+void resolve_history(Model& model, DiagnosticSink& sink) { HistoryValidator(model, sink).run(); }
 
 }  // namespace clinch

@@ -1,8 +1,8 @@
-// validate_behaviors: the rules of behaviors.md that need a whole *CONNECTOR BEHAVIOR block
+// check_behaviors: the rules of behaviors.md that need a whole *CONNECTOR BEHAVIOR block
 // (§2 attachment and per-component rules, §6 plasticity/elasticity interplay, §7 damage
-// prerequisites), the unused-behaviour warning, and — through validate_behavior_sections — the
+// prerequisites), the unused-behaviour warning, and — through check_behavior_sections — the
 // checks that need the connection types of the sections using the behaviour. Runs after
-// validate_sections (which sets ConnectorBehavior::used and the sections' available masks).
+// resolve_sections (which sets ConnectorBehavior::used and the sections' available masks).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -12,9 +12,9 @@
 
 #include "base/diagnostic.hpp"
 #include "src/model/model.hpp"
-#include "src/check/validate.hpp"
+#include "src/check/check.hpp"
 #include "src/model/elasticity_queries.hpp"
-#include "src/check/validate_behavior_sections.hpp"
+#include "src/check/check_behavior_sections.hpp"
 
 namespace clinch {
 namespace {
@@ -410,8 +410,8 @@ class BehaviorChecker {
 
 }  // namespace
 
-void validate_behaviors(Model& model, DiagnosticSink& sink) {
-  auto& behaviors = model.behaviors.behaviors;
+void check_behaviors(const Model& model, DiagnosticSink& sink) {
+  const auto& behaviors = model.behaviors.behaviors;
   for (std::size_t i = 0; i < behaviors.size(); ++i) {
     const ConnectorBehavior& b = behaviors[i];
     std::uint8_t available = kAllComponents;

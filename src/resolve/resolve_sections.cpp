@@ -1,4 +1,4 @@
-// validate_sections (validate.hpp): the rules of keywords.md §3–§7 and connection-types.md §1–§2
+// resolve_sections (resolve.hpp): the rules of keywords.md §3–§7 and connection-types.md §1–§2
 // that need the complete geometry. Resolves the element sets of *CONNECTOR SECTION and *SPRING,
 // fills section_of_element / spring_of_element, resolves BEHAVIOR=, CONTROLS= and orientation
 // names, applies the CONN2D2 rules, and gives the check-time warnings of connection-types.md §2.2.
@@ -16,7 +16,8 @@
 #include "src/model/connection_types.hpp"
 #include "src/model/model.hpp"
 #include "src/model/orientation_triad.hpp"
-#include "src/check/validate.hpp"
+#include "src/resolve/reference_lookup.hpp"
+#include "src/resolve/resolve.hpp"
 
 namespace clinch {
 namespace {
@@ -734,6 +735,6 @@ class SectionValidator {
 
 }  // namespace
 
-void validate_sections(Model& model, DiagnosticSink& sink) { SectionValidator(model, sink).run(); }
+void resolve_sections(Model& model, DiagnosticSink& sink) { SectionValidator(model, sink).run(); }
 
 }  // namespace clinch

@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 
 #include "base/diagnostic.hpp"
-#include "src/check/validate.hpp"
+#include "src/check/check.hpp"
 #include "src/model/model.hpp"
 
 namespace clinch {

@@ -1,0 +1,7 @@
+#include "src/check/check.hpp"
+
+namespace clinch {
+
+void check_model(const Model& model, DiagnosticSink& sink) { check_behaviors(model, sink); }
+
+}  // namespace clinch

@@ -1,0 +1,21 @@
+// The check stage: the rules that need the whole resolved model (behaviors.md: attachment,
+// duplicates, components available in every section that uses a behaviour), reading the model
+// and reporting, never writing it. It runs after resolve (src/resolve/resolve.hpp).
+#pragma once
+
+namespace clinch {
+
+class DiagnosticSink;
+struct Model;
+
+// Behaviour rules of behaviors.md (attachment, duplicates, components available).
+void check_behaviors(const Model& model, DiagnosticSink& sink);
+
+void check_model(const Model& model, DiagnosticSink& sink);
+
+// Errors for what `clinch run` cannot run yet although check_model accepts it (FORCE damage
+// beside friction or RIGID elasticity). `clinch check` and `clinch run` both call it after reading,
+// so that check never passes a deck that run refuses; tests of the checks alone do not.
+void report_run_refusals(const Model& model, DiagnosticSink& sink);
+
+}  // namespace clinch

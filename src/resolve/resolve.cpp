@@ -1,0 +1,12 @@
+#include "src/resolve/resolve.hpp"
+
+namespace clinch {
+
+void resolve_model(Model& model, DiagnosticSink& sink) {
+  resolve_geometry(model, sink);
+  resolve_sections(model, sink);
+  resolve_potentials_and_friction(model, sink);
+  resolve_history(model, sink);
+}
+
+}  // namespace clinch

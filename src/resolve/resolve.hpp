@@ -1,0 +1,27 @@
+// The resolve stage: fills the model from what the reader recorded, once the deck is complete.
+// Instances are placed, sets replayed, references followed to node and element indices, sections
+// joined to their elements and behaviours, derived components and potential contributions
+// classified, and step targets and output requests expanded. It reports what it cannot fill (a
+// name that is not defined, a value that contradicts its keyword) at the field at fault. The check
+// stage (src/check/check.hpp) then only reads the resolved model. Each family has its own
+// function; resolve_model runs them in dependency order.
+#pragma once
+
+namespace clinch {
+
+class DiagnosticSink;
+struct Model;
+
+// input-syntax.md §7: set operations, element nodes, instance placement, the global arrays.
+void resolve_geometry(Model& model, DiagnosticSink& sink);
+// Sections, orientations, springs: types, element kinds, section_of_element, behaviour refs.
+void resolve_sections(Model& model, DiagnosticSink& sink);
+// Derived components, potentials and friction (derived-components-and-potentials.md, friction.md):
+// names inside each behaviour block, classification, and the rules that need it.
+void resolve_potentials_and_friction(Model& model, DiagnosticSink& sink);
+// Amplitudes, steps, conditions, loads and output requests (keywords.md §8–§18).
+void resolve_history(Model& model, DiagnosticSink& sink);
+
+void resolve_model(Model& model, DiagnosticSink& sink);
+
+}  // namespace clinch
