@@ -2,6 +2,9 @@
 
 namespace clinch {
 
-void check_model(const Model& model, DiagnosticSink& sink) { check_behaviors(model, sink); }
+void check_model(const Model& model, DiagnosticSink& sink) {
+  check_behaviors(model, sink);
+  check_motion_stops(model, sink);
+}
 
 }  // namespace clinch

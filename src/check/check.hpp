@@ -11,6 +11,9 @@ struct Model;
 // Behaviour rules of behaviors.md (attachment, duplicates, components available).
 void check_behaviors(const Model& model, DiagnosticSink& sink);
 
+// motion-suspends-stop at each *CONNECTOR MOTION line that drives a component with a stop.
+void check_motion_stops(const Model& model, DiagnosticSink& sink);
+
 void check_model(const Model& model, DiagnosticSink& sink);
 
 // Errors for what `clinch run` cannot run yet although check_model accepts it (FORCE damage

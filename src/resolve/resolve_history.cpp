@@ -25,7 +25,6 @@
 namespace clinch {
 namespace {
 
-
 // "DOF 4", "DOFs 2, 3" for messages.
 std::string dof_list(DofMask mask) {
   std::string list;
@@ -247,8 +246,7 @@ class HistoryValidator {
         if (!(dofs & active & (1u << (d - 1)))) continue;
         in_force.insert(node, d, bc.loc);
         SourceLoc previous;
-        if (seen.insert(node, d, bc.loc, &previous) || duplicate_reported ||
-            previous == bc.loc) {
+        if (seen.insert(node, d, bc.loc, &previous) || duplicate_reported || previous == bc.loc) {
           continue;
         }
         duplicate_reported = true;
@@ -321,7 +319,7 @@ class HistoryValidator {
     const char* keyword = condition_keyword(kind);
     const int c = condition.component;
     bool kind_reported = false, dimension_reported = false, duplicate_reported = false;
-    bool prescribed_reported = false, stop_reported = false;
+    bool prescribed_reported = false;
     std::vector<std::int32_t> reported_sections;
     const auto& sections = model_.sections;
     for (std::int32_t e : condition.resolved) {
@@ -369,9 +367,6 @@ class HistoryValidator {
           }
           continue;
         }
-        if (kind == ConditionKind::Motion && !stop_reported) {
-          stop_reported = warn_stop_suspended(condition, e, section);
-        }
       }
       if (kind == ConditionKind::Motion) {
         in_force.motions.insert(e, c, condition.loc);
@@ -396,31 +391,6 @@ class HistoryValidator {
                                  element_name(model_, e), c));
       }
     }
-  }
-
-  // A motion on a component that has a *CONNECTOR STOP suspends the stop while it is prescribed:
-  // clinch enforces the motion, as the stronger constraint (docs/decisions.md, "Steps"). Said
-  // once per data line; true when said.
-  bool warn_stop_suspended(const ConnectorCondition& motion, std::int32_t element,
-                           const ConnectorSection& section) {
-    const auto b = static_cast<std::size_t>(section.behavior_index);
-    if (section.behavior_index < 0 || b >= model_.behaviors.behaviors.size()) return false;
-    for (const ConnectorStop& stop : model_.behaviors.behaviors[b].stops) {
-      if (!stop.valid || stop.component != motion.component) continue;
-      const auto limit = [](const std::optional<double>& v) {
-        return v ? fmt::format("{}", *v) : std::string("none");
-      };
-      sink_
-          .report(DiagCode::motion_suspends_stop, motion.loc,
-                  fmt::format("*CONNECTOR MOTION drives component {} of element {}, which has a "
-                              "*CONNECTOR STOP (lower {}, upper {}); the stop is not enforced "
-                              "while the motion is prescribed",
-                              motion.component, element_name(model_, element),
-                              limit(stop.lower), limit(stop.upper)))
-          .notes.push_back({stop.loc, "the stop is defined here"});
-      return true;
-    }
-    return false;
   }
 
   Model& model_;
