@@ -35,4 +35,11 @@ const KeywordSpec* KeywordRegistry::find(std::string_view folded_name) const {
   return it == by_name_.end() ? nullptr : it->second;
 }
 
+std::vector<const KeywordSpec*> KeywordRegistry::specs() const {
+  std::vector<const KeywordSpec*> all;
+  all.reserve(specs_.size());
+  for (const auto& spec : specs_) all.push_back(spec.get());
+  return all;
+}
+
 }  // namespace clinch

@@ -21,6 +21,8 @@ class KeywordRegistry {
   const KeywordSpec* find(std::string_view folded_name) const;
   // Display names ("*CONNECTOR SECTION") of all keywords, for did-you-mean.
   const std::vector<std::string>& display_names() const { return display_names_; }
+  // Every spec, in the order the families registered them (for `clinch keywords`).
+  std::vector<const KeywordSpec*> specs() const;
 
  private:
   std::vector<std::unique_ptr<KeywordSpec>> specs_;

@@ -1,4 +1,5 @@
-// The clinch command line (cli-contract.md): `run`, `check`, `compare`, `study` and `report`.
+// The clinch command line (cli-contract.md): `run`, `check`, `compare`, `study`, `report` and
+// `keywords`.
 // Usage errors, and standard output that cannot be written, exit with 3.
 #include <csignal>
 #include <iostream>
@@ -8,6 +9,7 @@
 #include "src/cli/check_command.hpp"
 #include "src/cli/compare_command.hpp"
 #include "src/cli/huge_pages.hpp"
+#include "src/cli/keywords_command.hpp"
 #include "src/cli/report_command.hpp"
 #include "src/cli/run_command.hpp"
 #include "src/cli/standard_output.hpp"
@@ -156,6 +158,20 @@ int run_command_line(int argc, char** argv) {
                      "the page to write (default: RUN_DIR/<job>.report.html)");
   report->add_flag("--quiet", report_options.quiet, "print nothing but warnings and errors");
 
+  clinch::KeywordsOptions keywords_options;
+  std::string keywords_format = "text";
+  CLI::App* keywords = app.add_subcommand(
+      "keywords",
+      "Print what the deck language supports, from the keyword registry: every keyword, or "
+      "one with its parameters and allowed values, data lines and what is refused and why; "
+      "exit 0 = printed, 1 = NAME is not a keyword clinch knows, 3 = usage or I/O error");
+  keywords->add_option("NAME", keywords_options.name,
+                       "one keyword, with or without '*', in any case (e.g. 'connector section')");
+  keywords->add_option("--format", keywords_format,
+                       "text, or markdown (the form of docs/keywords.md)")
+      ->check(CLI::IsMember({"text", "markdown"}))
+      ->capture_default_str();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -183,6 +199,11 @@ int run_command_line(int argc, char** argv) {
   if (compare->parsed()) return clinch::run_compare(compare_arguments);
   if (study->parsed()) return clinch::run_study(study_options);
   if (report->parsed()) return clinch::run_report(report_options);
+  if (keywords->parsed()) {
+    keywords_options.format = keywords_format == "markdown" ? clinch::KeywordsFormat::Markdown
+                                                            : clinch::KeywordsFormat::Text;
+    return clinch::run_keywords(keywords_options);
+  }
   return 3;
 }
 

@@ -11,10 +11,10 @@
 #include <string>
 
 #include "base/diagnostic.hpp"
-#include "src/model/model.hpp"
 #include "src/check/check.hpp"
-#include "src/model/elasticity_queries.hpp"
 #include "src/check/check_behavior_sections.hpp"
+#include "src/model/elasticity_queries.hpp"
+#include "src/model/model.hpp"
 
 namespace clinch {
 namespace {
@@ -239,8 +239,8 @@ class BehaviorChecker {
           fmt::format("{} on component {} needs linear elasticity, but that component has a "
                       "NONLINEAR elasticity",
                       what, c));
-      d.notes.push_back({b_.elasticities[static_cast<std::size_t>(on.nonlinear)].loc,
-                         "elasticity defined here"});
+      d.notes.push_back(
+          {b_.elasticities[static_cast<std::size_t>(on.nonlinear)].loc, "elasticity defined here"});
       return false;
     }
     if (on.rigid >= 0) {
@@ -397,10 +397,10 @@ class BehaviorChecker {
   DiagnosticSink& sink_;
   // What the elasticities of the block put on each component (§2).
   struct ComponentElasticity {
-    int first = -1;      // the first definition on it
-    int rigid = -1;      // a RIGID definition
-    int nonlinear = -1;  // the first NONLINEAR definition
-    bool linear = false;  // some linear (uncoupled or coupled) definition
+    int first = -1;        // the first definition on it
+    int rigid = -1;        // a RIGID definition
+    int nonlinear = -1;    // the first NONLINEAR definition
+    bool linear = false;   // some linear (uncoupled or coupled) definition
     double stiffness = 0;  // their diagonal stiffness, added
   };
   std::array<ComponentElasticity, 6> elastic_{};

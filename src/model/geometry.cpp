@@ -1,10 +1,10 @@
-// Geometry of the model: instance placement of a point or a vector, the geometric tolerance, element
-// type names and the display of references. The stage that places instances and resolves
+// Geometry of the model: instance placement of a point or a vector, the geometric tolerance,
+// element type names and the display of references. The stage that places instances and resolves
 // references is src/resolve/ (geometry_placement.cpp, reference_lookup.cpp).
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-
-#include <fmt/format.h>
 
 #include "base/diagnostic.hpp"
 #include "base/suggest.hpp"
@@ -14,14 +14,22 @@ namespace clinch {
 
 const char* element_type_name(ElementType type) {
   switch (type) {
-    case ElementType::Conn3D2: return "CONN3D2";
-    case ElementType::Conn2D2: return "CONN2D2";
-    case ElementType::SpringA: return "SPRINGA";
-    case ElementType::Spring1: return "SPRING1";
-    case ElementType::Spring2: return "SPRING2";
-    case ElementType::DashpotA: return "DASHPOTA";
-    case ElementType::Dashpot1: return "DASHPOT1";
-    case ElementType::Dashpot2: return "DASHPOT2";
+    case ElementType::Conn3D2:
+      return "CONN3D2";
+    case ElementType::Conn2D2:
+      return "CONN2D2";
+    case ElementType::SpringA:
+      return "SPRINGA";
+    case ElementType::Spring1:
+      return "SPRING1";
+    case ElementType::Spring2:
+      return "SPRING2";
+    case ElementType::DashpotA:
+      return "DASHPOTA";
+    case ElementType::Dashpot1:
+      return "DASHPOT1";
+    case ElementType::Dashpot2:
+      return "DASHPOT2";
   }
   return "?";
 }

@@ -17,12 +17,12 @@ struct Model;
 struct TargetRef {
   bool is_label = false;
   std::int32_t label = 0;
-  std::string set_key;       // set identity (input-syntax.md §4) when !is_label
+  std::string set_key;  // set identity (input-syntax.md §4) when !is_label
   std::string set_display;
   std::string instance_key;  // qualifier "Inst." (empty: none)
   std::string instance_display;
   SourceLoc loc;
-  std::int32_t part = 0;     // scope where the reference was written (0: flat model or assembly)
+  std::int32_t part = 0;  // scope where the reference was written (0: flat model or assembly)
 };
 
 // The display of a reference for messages: "node 12", "element set 'W1'", "Inst.12".

@@ -36,4 +36,14 @@ const OutputFile* RunOutputs::failed_file() const {
   return nullptr;
 }
 
+void RunOutputs::note(int step, int increment, std::string_view text) {
+  log_.info(increment > 0 ? fmt::format("step {} increment {}: {}", step, increment, text)
+                          : fmt::format("step {}: {}", step, text));
+}
+
+void RunOutputs::cut_back(int step, int increment, std::string_view reason, double dt) {
+  log_.warning(
+      fmt::format("step {} increment {}: {}; cutting back to {}", step, increment, reason, dt));
+}
+
 }  // namespace clinch

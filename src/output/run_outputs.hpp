@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <string>
+#include <string_view>
 
 #include "src/output/history_recorder.hpp"
 #include "src/output/progress.hpp"
@@ -19,8 +20,6 @@ class RunOutputs {
  public:
   RunOutputs(HistoryRecorder& history, StatusFile& status, RunLog& log, Progress& progress)
       : history_(history), status_(status), log_(log), progress_(progress) {}
-
-  RunLog& log() { return log_; }
 
   void begin_step(std::size_t step) { history_.begin_step(step); }
   // Row 0: the initial state, before any condition applies (output-variables.md §1.4).
@@ -35,6 +34,13 @@ class RunOutputs {
   // The FAILED line, and the log's line with where the run was (`at_start`: before any increment,
   // where the reason says it all).
   void stopped(const std::string& reason, int step, int increment, double time, bool at_start);
+  // Log lines (run_log.hpp): Newton's iterations, a note on step `step` (or on its increment
+  // `increment` when > 0), a note that stands alone, a warning, and a cutback with its reason.
+  void iteration(const IterationRecord& record) { log_.iteration(record); }
+  void note(int step, int increment, std::string_view text);
+  void note(std::string_view text) { log_.info(text); }
+  void warning(std::string_view text) { log_.warning(text); }
+  void cut_back(int step, int increment, std::string_view reason, double dt);
   // The first output that could not be written, or null.
   const OutputFile* failed_file() const;
 

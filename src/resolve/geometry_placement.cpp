@@ -1,9 +1,9 @@
 // The first stage of resolve (input-syntax.md §7): set operations replayed, element node labels
 // resolved, instances placed and the global node and element arrays built.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-
-#include <fmt/format.h>
 
 #include "base/diagnostic.hpp"
 #include "src/model/model.hpp"
@@ -26,25 +26,23 @@ void replay_set_operations(Model& model, std::int32_t part_index, DiagnosticSink
       std::int32_t inst = find_instance(model, op.instance_key, op.instance_display, op.loc, sink);
       if (inst < 0) continue;
       source_part = &model.parts[model.instances[inst].part];
-      offset = op.element_set ? model.instances[inst].element_offset
-                              : model.instances[inst].node_offset;
+      offset =
+          op.element_set ? model.instances[inst].element_offset : model.instances[inst].node_offset;
     }
-    const LabelIndex& index = op.element_set ? source_part->element_index
-                                             : source_part->node_index;
+    const LabelIndex& index = op.element_set ? source_part->element_index : source_part->node_index;
     switch (op.kind) {
       case SetOperation::Kind::Labels: {
         target.members.reserve(target.members.size() + op.labels.size());
         for (const SetOperation::LabelItem& item : op.labels) {
           std::int32_t found = index.find(item.label);
           if (found == LabelIndex::kMissing) {
-            sink.report(
-                op.element_set ? DiagCode::undefined_element : DiagCode::undefined_node,
-                item.loc,
-                fmt::format("{} {} is not defined{}", op.element_set ? "element" : "node",
-                            item.label,
-                            op.instance_key.empty()
-                                ? std::string()
-                                : fmt::format(" in instance '{}'", op.instance_display)));
+            sink.report(op.element_set ? DiagCode::undefined_element : DiagCode::undefined_node,
+                        item.loc,
+                        fmt::format("{} {} is not defined{}", op.element_set ? "element" : "node",
+                                    item.label,
+                                    op.instance_key.empty()
+                                        ? std::string()
+                                        : fmt::format(" in instance '{}'", op.instance_display)));
             target.defined_ok = false;
             continue;
           }
@@ -70,8 +68,8 @@ void replay_set_operations(Model& model, std::int32_t part_index, DiagnosticSink
         break;
       }
       case SetOperation::Kind::SetName: {
-        const auto& source_sets = op.element_set ? source_part->element_sets
-                                                 : source_part->node_sets;
+        const auto& source_sets =
+            op.element_set ? source_part->element_sets : source_part->node_sets;
         auto it = source_sets.find(op.source_key);
         if (it == source_sets.end()) {
           report_undefined_set(*source_part, op.element_set, op.source_display, op.loc, "", sink);
@@ -130,8 +128,8 @@ void resolve_element_nodes(Model& model, std::int32_t part_index, DiagnosticSink
       if (element.nodes[slot] == kGround || qualified[e * 2 + slot]) continue;
       std::int32_t found = part.node_index.find(element.nodes[slot]);
       if (found == LabelIndex::kMissing) {
-        sink.report(DiagCode::undefined_node, {element.file, element.line,
-                                                element.node_columns[slot]},
+        sink.report(DiagCode::undefined_node,
+                    {element.file, element.line, element.node_columns[slot]},
                     fmt::format("node {} is not defined{}", element.nodes[slot],
                                 part_index ? fmt::format(" in part '{}'", part.name.display)
                                            : std::string()));
@@ -151,9 +149,9 @@ void resolve_element_nodes(Model& model, std::int32_t part_index, DiagnosticSink
     const Instance& instance = model.instances[inst];
     std::int32_t found = model.parts[instance.part].node_index.find(q.label);
     if (found == LabelIndex::kMissing) {
-      sink.report(DiagCode::undefined_node, q.loc,
-                  fmt::format("node {} is not defined in instance '{}'", q.label,
-                              q.instance_display));
+      sink.report(
+          DiagCode::undefined_node, q.loc,
+          fmt::format("node {} is not defined in instance '{}'", q.label, q.instance_display));
       element.nodes[q.slot] = kGround;
       continue;
     }

@@ -1,9 +1,9 @@
 // Reference lookup (reference_lookup.hpp).
 #include "src/resolve/reference_lookup.hpp"
 
-#include <algorithm>
-
 #include <fmt/format.h>
+
+#include <algorithm>
 
 #include "base/diagnostic.hpp"
 #include "base/suggest.hpp"
@@ -23,8 +23,8 @@ std::vector<std::string> instance_names(const Model& model) {
 
 }  // namespace
 
-std::int32_t find_instance(const Model& model, const std::string& key,
-                           const std::string& display, SourceLoc loc, DiagnosticSink& sink) {
+std::int32_t find_instance(const Model& model, const std::string& key, const std::string& display,
+                           SourceLoc loc, DiagnosticSink& sink) {
   auto it = model.instance_by_key.find(key);
   if (it != model.instance_by_key.end()) return it->second;
   Diagnostic& d = sink.report(DiagCode::undefined_instance, loc,
@@ -37,9 +37,9 @@ std::int32_t find_instance(const Model& model, const std::string& key,
 
 void report_undefined_set(const Part& part, bool element_set, const std::string& display,
                           SourceLoc loc, const std::string& where, DiagnosticSink& sink) {
-  Diagnostic& d = sink.report(DiagCode::undefined_set, loc,
-                              fmt::format("undefined {} set '{}'{}",
-                                          element_set ? "element" : "node", display, where));
+  Diagnostic& d = sink.report(
+      DiagCode::undefined_set, loc,
+      fmt::format("undefined {} set '{}'{}", element_set ? "element" : "node", display, where));
   std::vector<std::string> names;
   for (const auto& [key, set] : element_set ? part.element_sets : part.node_sets) {
     names.push_back(set.name.display);
@@ -61,8 +61,7 @@ bool resolve(const Model& model, const TargetRef& ref, bool element_kind,
   std::vector<std::int32_t> instances;
   std::int32_t lookup_part = ref.part;
   if (!ref.instance_key.empty()) {
-    std::int32_t inst = find_instance(model, ref.instance_key, ref.instance_display, ref.loc,
-                                      sink);
+    std::int32_t inst = find_instance(model, ref.instance_key, ref.instance_display, ref.loc, sink);
     if (inst < 0) return false;
     instances.push_back(inst);
     lookup_part = model.instances[inst].part;
@@ -79,12 +78,12 @@ bool resolve(const Model& model, const TargetRef& ref, bool element_kind,
     const LabelIndex& index = element_kind ? part.element_index : part.node_index;
     std::int32_t found = index.find(ref.label);
     if (found == LabelIndex::kMissing) {
-      sink.report(element_kind ? DiagCode::undefined_element : DiagCode::undefined_node, ref.loc,
-                  fmt::format("{} {} is not defined{}", element_kind ? "element" : "node",
-                              ref.label,
-                              ref.instance_key.empty()
-                                  ? std::string()
-                                  : fmt::format(" in instance '{}'", ref.instance_display)));
+      sink.report(
+          element_kind ? DiagCode::undefined_element : DiagCode::undefined_node, ref.loc,
+          fmt::format("{} {} is not defined{}", element_kind ? "element" : "node", ref.label,
+                      ref.instance_key.empty()
+                          ? std::string()
+                          : fmt::format(" in instance '{}'", ref.instance_display)));
       return false;
     }
     local.push_back(found);

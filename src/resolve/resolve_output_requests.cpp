@@ -274,7 +274,8 @@ class OutputValidator {
     BehaviorFeatures features;
     for (std::int32_t e : elements) {
       const Element& element = model_.elements[static_cast<std::size_t>(e)];
-      if (is_spring_or_dashpot(element.type) != spring_variable) continue;  // not defined for this kind
+      if (is_spring_or_dashpot(element.type) != spring_variable)
+        continue;  // not defined for this kind
       ++matching;
       if (spring_variable) {
         total_components |= 1;
@@ -375,8 +376,7 @@ class OutputValidator {
       if (totals == PrintRequest::Totals::Only) continue;
       for (int c = 1; c <= 6; ++c) {
         if (!(components & (1u << (c - 1)))) continue;
-        add_target_column(component_label(labels, id.variable, c), true, n, id,
-                          duplicate_reported);
+        add_target_column(component_label(labels, id.variable, c), true, n, id, duplicate_reported);
       }
     }
     if (totals == PrintRequest::Totals::No) return;
@@ -402,7 +402,7 @@ class OutputValidator {
 }  // namespace
 
 void resolve_output_requests(Model& model, const std::vector<DofMask>& active,
-                              DiagnosticSink& sink) {
+                             DiagnosticSink& sink) {
   OutputValidator(model, active, sink).run(model.history.steps);
 }
 

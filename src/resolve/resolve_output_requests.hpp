@@ -15,6 +15,6 @@ class DiagnosticSink;
 struct Model;
 
 void resolve_output_requests(Model& model, const std::vector<DofMask>& active,
-                              DiagnosticSink& sink);
+                             DiagnosticSink& sink);
 
 }  // namespace clinch

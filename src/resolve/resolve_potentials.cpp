@@ -19,10 +19,10 @@
 
 #include "base/diagnostic.hpp"
 #include "base/suggest.hpp"
-#include "src/resolve/resolve.hpp"
 #include "src/model/default_stick_stiffness.hpp"
 #include "src/model/model.hpp"
 #include "src/model/potential_queries.hpp"
+#include "src/resolve/resolve.hpp"
 
 namespace clinch {
 namespace {

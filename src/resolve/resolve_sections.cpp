@@ -275,9 +275,9 @@ class SectionValidator {
       }
       return;  // its definition already failed: no second error here (input-syntax.md §10)
     }
-    Diagnostic& d = sink_.report(
-        DiagCode::undefined_behavior, section.behavior.loc,
-        fmt::format("undefined connector behavior '{}'", section.behavior.display));
+    Diagnostic& d =
+        sink_.report(DiagCode::undefined_behavior, section.behavior.loc,
+                     fmt::format("undefined connector behavior '{}'", section.behavior.display));
     std::vector<std::string> candidates;
     for (const ConnectorBehavior& b : behaviors.behaviors) {
       if (b.referable) candidates.push_back(b.name.display);
@@ -294,9 +294,9 @@ class SectionValidator {
       sections.controls[static_cast<std::size_t>(it->second)].used = true;
       return;
     }
-    Diagnostic& d = sink_.report(
-        DiagCode::undefined_section_controls, section.controls.loc,
-        fmt::format("undefined section controls '{}'", section.controls.display));
+    Diagnostic& d =
+        sink_.report(DiagCode::undefined_section_controls, section.controls.loc,
+                     fmt::format("undefined section controls '{}'", section.controls.display));
     std::vector<std::string> candidates;
     for (const SectionControls& c : sections.controls) candidates.push_back(c.name.display);
     suggest_name(d, section.controls.loc, section.controls.display, candidates);
@@ -464,8 +464,7 @@ class SectionValidator {
           sink_.report(DiagCode::wrong_element_kind, spring.elset.loc,
                        fmt::format("{} contains element {} of type {}; {} needs {} elements",
                                    describe(spring.elset, true), element_label(element),
-                                   element_type_name(element.type), words.keyword,
-                                   words.element));
+                                   element_type_name(element.type), words.keyword, words.element));
         }
         continue;
       }
@@ -506,9 +505,9 @@ class SectionValidator {
     if (!spring.orientation.empty()) {
       spring.orientation_index = find_orientation(spring.orientation, spring.elset.part);
       if (spring_form(spring.type) == ElementType::SpringA) {
-        sink_.report(DiagCode::orientation_ignored, spring.orientation_param_loc,
-                     fmt::format("ORIENTATION is ignored for {} elements",
-                                 element_type_name(spring.type)));
+        sink_.report(
+            DiagCode::orientation_ignored, spring.orientation_param_loc,
+            fmt::format("ORIENTATION is ignored for {} elements", element_type_name(spring.type)));
       }
     }
     std::vector<const SpringLine*> properties;
@@ -540,7 +539,8 @@ class SectionValidator {
       if (spring.first_line_ok) {
         sink_.report(DiagCode::spring_dof_line, spring.first_line_loc,
                      fmt::format("{} takes a blank DOF line after {} (its direction is the line "
-                                 "between its nodes)", type_name, words.keyword));
+                                 "between its nodes)",
+                                 type_name, words.keyword));
       }
       return false;
     }
@@ -595,8 +595,7 @@ class SectionValidator {
     for (std::size_t k = 1; k < line.values.size() && k < 3; ++k) {
       if (line.values[k].value) {
         sink_.report(DiagCode::unsupported_dependencies, line.values[k].loc,
-                     fmt::format("{}-dependent {} data is not supported", kWhat[k],
-                                 words.element));
+                     fmt::format("{}-dependent {} data is not supported", kWhat[k], words.element));
         ok = false;
       }
     }
@@ -620,17 +619,16 @@ class SectionValidator {
         SourceLoc where = line->loc;
         if (force_missing && !line->values.empty()) where = line->values[0].loc;
         if (!force_missing && line->values.size() >= 2) where = line->values[1].loc;
-        sink_.report(DiagCode::missing_field, where,
-                     fmt::format("missing value for '{}' of {}",
-                                 force_missing ? std::string_view("force") : words.motion,
-                                 words.keyword));
+        sink_.report(
+            DiagCode::missing_field, where,
+            fmt::format("missing value for '{}' of {}",
+                        force_missing ? std::string_view("force") : words.motion, words.keyword));
         ok = false;
         continue;
       }
       if (line->values.size() > 2 && line->values[2].value) {
         sink_.report(DiagCode::unsupported_dependencies, line->values[2].loc,
-                     fmt::format("temperature-dependent {} data is not supported",
-                                 words.element));
+                     fmt::format("temperature-dependent {} data is not supported", words.element));
         ok = false;
         continue;
       }
@@ -668,8 +666,8 @@ class SectionValidator {
     }
     if (f0 != 0) {
       sink_.report(DiagCode::nonlinear_elasticity_offset, t.front().loc,
-                   fmt::format("{} table gives force {} at zero {}", words.element,
-                               number_text(f0), words.motion));
+                   fmt::format("{} table gives force {} at zero {}", words.element, number_text(f0),
+                               words.motion));
     }
     return true;
   }

@@ -9,6 +9,7 @@
 
 #include <string>
 
+#include "src/model/history_model.hpp"
 #include "src/solver/time_stepper.hpp"
 
 namespace clinch {

@@ -8,7 +8,7 @@
 #include <set>
 
 #include "src/solver/convergence_criteria.hpp"
-#include "src/solver/time_stepper.hpp"
+#include "src/solver/procedure.hpp"
 
 namespace clinch {
 namespace {
@@ -90,8 +90,12 @@ class Driver {
   // One attempt: Newton, then the stop active set (behaviors.md §5.1), re-solved until it settles.
   NewtonReport attempt(int step, int increment, int attempt_number, int& iterations, int& changes) {
     const TimeIncrementationControls& t = controls_->time;
-    const NewtonOptions options{
-        t.ic, t.i0, accept_unconverged_, line_search_, options_.stop_requested, fixed_increments_};
+    const NewtonOptions options{t.ic,
+                                t.i0,
+                                rules_.accept_unconverged,
+                                line_search_,
+                                options_.stop_requested,
+                                rules_.fixed_increments};
     iterations = 0;
     changes = 0;
     for (;;) {
@@ -113,7 +117,7 @@ class Driver {
         record.correction_norm = n.correction_norm;
         record.largest_correction = std::max(n.largest_correction[0], n.largest_correction[1]);
         record.constraint_violation = n.constraint_violation;
-        out_.log().iteration(record);
+        out_.iteration(record);
       }
       iterations += std::max(0, static_cast<int>(report.iterations.size()) - 1);
       if (!report.converged() || !step_problem_.update_active_set()) return report;
@@ -127,10 +131,10 @@ class Driver {
 
   bool run_step(std::size_t s) {
     const Step& step = model_.history.steps[s];
-    const StaticProcedure procedure = step.procedure.value_or(StaticProcedure{});
+    const std::unique_ptr<Procedure> procedure = procedure_for(step);
     const int step_number = static_cast<int>(s) + 1;
-    if (!begin_step(step, procedure, step_number)) return false;
-    const std::unique_ptr<TimeStepper> time_stepper = time_stepper_for(step);
+    if (!begin_step(step, *procedure, step_number)) return false;
+    const std::unique_ptr<TimeStepper> time_stepper = procedure->time_stepper();
     TimeStepper& stepper = *time_stepper;
     Attempted last;
     const int cutbacks_before = result_.cutbacks;
@@ -141,11 +145,11 @@ class Driver {
         return fail(proposal.reason, step_number, increment);
       }
       if (proposal.cut_back) {
-        out_.log().warning(fmt::format("step {} increment {}: {}; cutting back to {}", step_number,
-                                       increment, last.outcome.reason, proposal.dt));
+        out_.cut_back(step_number, increment, last.outcome.reason, proposal.dt);
       }
       attempt_number = proposal.cut_back ? attempt_number + 1 : 1;
-      if (!attempt_increment(step, step_number, increment, attempt_number, proposal.dt, last)) {
+      if (!attempt_increment(*procedure, step_number, increment, attempt_number, proposal.dt,
+                             last)) {
         return false;
       }
       const bool converged = last.outcome.kind == AttemptOutcome::Kind::Converged;
@@ -153,20 +157,18 @@ class Driver {
       result_.cutbacks = cutbacks_before + stepper.cutbacks();
       if (converged && !accept_increment(step_number, stepper, last)) return false;
     }
-    step_problem_.end_step(procedure.period, total_time_);
+    step_problem_.end_step(procedure->period(), total_time_);
     for (const std::string& line : step_problem_.step_summary()) {
-      out_.log().info(fmt::format("step {}: {}", step_number, line));
+      out_.note(step_number, 0, line);
     }
     return true;
   }
 
   // What the step sets once: NLGEOM, the storage and its solver, the conditions, the line search,
   // the criteria and the output columns.
-  bool begin_step(const Step& step, const StaticProcedure& procedure, int step_number) {
+  bool begin_step(const Step& step, const Procedure& procedure, int step_number) {
     controls_ = &step.controls;
-    // DIRECT=NO STOP accepts an increment that reaches the iteration limit (keywords.md §15).
-    accept_unconverged_ = procedure.direct && procedure.no_stop;
-    fixed_increments_ = procedure.direct;
+    rules_ = procedure.increment_rules();
     step_problem_.begin_step(static_cast<std::size_t>(step_number - 1), step.nlgeom);
     if (!choose_storage(step, step_number)) return false;
     warned_.clear();
@@ -177,13 +179,13 @@ class Driver {
     if (needs.line_search_iterations > 0 && !line_search_.given &&
         line_search_.max_iterations == 0) {
       line_search_.max_iterations = needs.line_search_iterations;
-      out_.log().info(
-          fmt::format("step {}: line search on (N_ls = {}): {} and the deck does not "
-                      "set *CONTROLS, PARAMETERS=LINE SEARCH",
-                      step_number, needs.line_search_iterations, needs.line_search_reason));
+      out_.note(step_number, 0,
+                fmt::format("line search on (N_ls = {}): {} and the deck does not set *CONTROLS, "
+                            "PARAMETERS=LINE SEARCH",
+                            needs.line_search_iterations, needs.line_search_reason));
     }
     for (const std::string& note : needs.notes) {
-      out_.log().info(fmt::format("step {}: {}", step_number, note));
+      out_.note(step_number, 0, note);
     }
     criteria_.start_step(step.controls);
     out_.begin_step(static_cast<std::size_t>(step_number - 1));
@@ -196,16 +198,15 @@ class Driver {
   // release components and solve the same increment again (behaviors.md §5.3). A failed or
   // abandoned attempt is reverted and its status line written. False when the run must stop
   // here (a signal, an output that cannot be written).
-  bool attempt_increment(const Step& step, int step_number, int increment, int& attempt_number,
-                         double dt, Attempted& attempted) {
+  bool attempt_increment(const Procedure& procedure, int step_number, int increment,
+                         int& attempt_number, double dt, Attempted& attempted) {
     for (;; ++attempt_number) {
       if (interrupted(step_number, increment)) return false;
       const double new_time = step_time_ + dt;
-      const bool extrapolate = step.extrapolation && increment > 1 && previous_dt_ > 0;
-      step_problem_.begin_increment(new_time, total_time_ + dt, dt,
-                                    extrapolate ? dt / previous_dt_ : 0.0);
+      procedure.begin_increment(
+          step_problem_, {new_time, total_time_ + dt, dt, increment > 1 ? previous_dt_ : 0.0});
       if (options_.check_tangent) {
-        out_.log().info(step_problem_.check_tangent(step_number, increment));
+        out_.note(step_problem_.check_tangent(step_number, increment));
       }
       int iterations = 0, changes = 0;
       const NewtonReport report =
@@ -240,8 +241,7 @@ class Driver {
     const std::vector<std::string> failures = step_problem_.release_failed_components();
     if (failures.empty()) return false;
     for (const std::string& f : failures) {
-      out_.log().info(fmt::format("step {} increment {}: {}; the increment is solved again",
-                                  step_number, increment, f));
+      out_.note(step_number, increment, f + "; the increment is solved again");
     }
     IncrementAttempt redone = attempted.status_line;
     redone.cut_back = true;
@@ -284,7 +284,7 @@ class Driver {
     step_problem_.commit();
     criteria_.accept_increment(attempted.last_iteration);
     for (const StepRequest::Warning& w : attempted.request.warnings) {
-      if (warned_.insert(w.element).second) out_.log().warning(w.message);
+      if (warned_.insert(w.element).second) out_.warning(w.message);
     }
     step_time_ = stepper.step_time();
     total_time_ += dt;
@@ -296,7 +296,7 @@ class Driver {
     // (behaviors.md §5.2, example E5).
     step_problem_.end_increment();
     for (const std::string& event : step_problem_.take_events()) {
-      out_.log().info(fmt::format("step {} increment {}: {}", step_number, increment, event));
+      out_.note(step_number, increment, event);
     }
     return true;
   }
@@ -339,10 +339,10 @@ class Driver {
     solver_ = solver.get();
     if (symmetric && step_problem_.has_multipliers()) why += "; the multipliers make it indefinite";
     if (const std::string choice = solver_->choice(); !choice.empty()) why += "; " + choice;
-    out_.log().info(fmt::format("step {}: {} on the {} ({} equations, {} stored entries): {}",
-                                step_number, solver_->name(),
-                                symmetric ? "upper triangle" : "full pattern", problem_.pattern().n,
-                                problem_.pattern().values.size(), why));
+    out_.note(step_number, 0,
+              fmt::format("{} on the {} ({} equations, {} stored entries): {}", solver_->name(),
+                          symmetric ? "upper triangle" : "full pattern", problem_.pattern().n,
+                          problem_.pattern().values.size(), why));
     return true;
   }
 
@@ -356,8 +356,7 @@ class Driver {
   const RunOptions& options_;
   ConvergenceCriteria criteria_;
   const Controls* controls_ = nullptr;
-  bool accept_unconverged_ = false;
-  bool fixed_increments_ = false;  // DIRECT: Newton breaks its own cycles
+  IncrementRules rules_;  // the step's procedure's
   double total_time_ = 0.0;
   double step_time_ = 0.0;    // of the step, at the last converged increment
   double previous_dt_ = 0.0;  // the last converged increment (extrapolation)

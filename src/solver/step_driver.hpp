@@ -1,8 +1,9 @@
-// The step driver (keywords.md §13–§16): runs every step of the deck, increment by increment, as
-// its time stepper proposes them (static_time_stepper.hpp: automatic incrementation with cutbacks
-// and growth, or DIRECT); calls Newton for each attempt, settles the active set of stops, passes
+// The step driver (keywords.md §13–§16): runs every step of the deck through its procedure
+// (procedure.hpp: the time stepper, Newton's increment rules, what an increment means), increment
+// by increment as the time stepper proposes them; calls Newton for each attempt, settles the active set of stops, passes
 // what the laws ask of the time step to the stepper, engages locks on converged increments, and
-// tells the outputs (run_outputs.hpp) of each attempt, iteration and converged increment. Each step
+// tells the outputs (run_outputs.hpp: history, status file, log, progress) of each attempt,
+// iteration, note and converged increment; it holds none of their writers. Each step
 // assembles a symmetric tangent (CHOLMOD) or a full one (UMFPACK) as its laws and *STEP, UNSYMM
 // require. A failure stops the run with the reason, the step, the increment and the time.
 #pragma once

@@ -1,14 +1,12 @@
 // The time policy of a procedure (ARCHITECTURE.md principle 2): given how each attempt ended, the
 // next increment to try, or the end of the step, or a stop with its reason. Each step kind has
-// its own (static_time_stepper.hpp for *STATIC); the step driver runs any of them around the same
-// increment attempt. Pure objects: no deck, no files, no solver.
+// its own, made by its procedure (procedure.hpp; static_time_stepper.hpp for *STATIC); the step
+// driver runs any of them around the same increment attempt. Pure objects: no deck, no files, no
+// solver.
 #pragma once
 
 #include <limits>
-#include <memory>
 #include <string>
-
-#include "src/model/history_model.hpp"
 
 namespace clinch {
 
@@ -57,8 +55,5 @@ class TimeStepper {
   // Is the increment of the last accepted attempt the step's last one?
   virtual bool at_end() const = 0;
 };
-
-// The time stepper of `step`'s procedure (*STATIC: StaticTimeStepper).
-std::unique_ptr<TimeStepper> time_stepper_for(const Step& step);
 
 }  // namespace clinch

@@ -1,0 +1,258 @@
+#include "src/cli/keyword_notes.hpp"
+
+namespace clinch {
+namespace {
+
+// Refusals that several behaviour options share (parser/keywords/behavior_option_common.cpp).
+constexpr KeywordRefusal kFieldDependence{
+    "DEPENDENCIES greater than 0, or a field variable given in a data line",
+    "field-variable-dependent data is not implemented"};
+constexpr KeywordRefusal kTemperatureDependence{
+    "rows for more than one temperature", "temperature-dependent data is not implemented"};
+constexpr KeywordRefusal kExplicitOnly{"REGULARIZE, RTOL", "Abaqus/Explicit only"};
+
+}  // namespace
+
+const std::vector<KeywordNotes>& all_keyword_notes() {
+  static const std::vector<KeywordNotes> notes = {
+      {"HEADING", "The title of the analysis (its first line is copied to the .log).",
+       "Free text; the first line is the title."},
+      {"PARAMETER",
+       "Defines named values (`name = expression`) used as `<name>` in later fields.",
+       "One definition per line: `name = expression` (arithmetic, `sqrt`, `sin`, ...)."},
+      {"PART", "Opens a part: nodes, elements, sets, orientations and sections of one piece.",
+       ""},
+      {"END PART", "Closes the part.", ""},
+      {"ASSEMBLY", "Opens the assembly, where instances place parts and connectors join them.",
+       ""},
+      {"END ASSEMBLY", "Closes the assembly.", ""},
+      {"INSTANCE", "Places a part in the assembly; its labels become `instance.label`.",
+       "Optional: a translation (x, y, z) on the first line, a rotation (axis point a, axis "
+       "point b, angle in degrees) on the second.",
+       {{"LIBRARY=, INSTANCE=", "instances of other models or libraries are not implemented"}}},
+      {"END INSTANCE", "Closes the instance.", ""},
+      {"NODE", "Defines nodes by their coordinates.",
+       "`label, x, y, z` (missing coordinates are 0).",
+       {{"SYSTEM=C or S", "only rectangular coordinates (SYSTEM=R) are implemented"}}},
+      {"ELEMENT",
+       "Defines connector (CONN3D2, CONN2D2), spring (SPRINGA, SPRING1, SPRING2) and dashpot "
+       "(DASHPOTA, DASHPOT1, DASHPOT2) elements.",
+       "`label, node a[, node b]`; node b may be left out of a CONN3D2 or CONN2D2 (connected to "
+       "ground) and is absent for SPRING1 and DASHPOT1.",
+       {{"TYPE= any other element (solids, shells, beams, trusses, masses, ...)",
+         "clinch analyses connectors, springs and dashpots only"}}},
+      {"NSET", "Defines a node set.",
+       "Node labels or set names, or `first, last, increment` with GENERATE."},
+      {"ELSET", "Defines an element set.",
+       "Element labels or set names, or `first, last, increment` with GENERATE."},
+      {"ORIENTATION",
+       "Defines a local coordinate system for connector sections and springs.",
+       "Line 1: `a1, a2, a3, b1, b2, b3[, c1, c2, c3]`: a point a on the local 1-axis, a point b "
+       "in the 1-2 plane and the origin c (default 0); with DEFINITION=NODES three node labels. "
+       "Line 2 (optional): `axis, angle`, an extra rotation in degrees about local axis 1, 2 or "
+       "3.",
+       {{"SYSTEM=CYLINDRICAL, SPHERICAL, Z RECTANGULAR or USER",
+         "connector and spring orientations are rectangular"},
+        {"DEFINITION=OFFSET TO NODES", "it needs the nodes of continuum elements"},
+        {"LOCAL DIRECTIONS", "not implemented for connector and spring orientations"}}},
+      {"CONNECTOR SECTION",
+       "Gives an element set its connection type(s), orientations and connector behaviour.",
+       "Line 1: one assembled or basic connection type, or a translational and a rotational "
+       "basic type (`Hinge,`; `Cartesian, Cardan`). Line 2 (optional): the orientation at node a "
+       "and at node b.",
+       {},
+       {{"ELIMINATION", "Abaqus/Explicit only"}}},
+      {"SPRING", "Properties of SPRINGA, SPRING1 and SPRING2 elements.",
+       "Line 1: the degrees of freedom (SPRING1: `dof`; SPRING2: `dof1, dof2`; SPRINGA: blank). "
+       "Then the stiffness, or with NONLINEAR rows of `force, relative displacement`.",
+       {kFieldDependence, kTemperatureDependence}},
+      {"DASHPOT", "Properties of DASHPOTA, DASHPOT1 and DASHPOT2 elements.",
+       "Line 1: the degrees of freedom (DASHPOT1: `dof`; DASHPOT2: `dof1, dof2`; DASHPOTA: "
+       "blank). Then the coefficient, or with NONLINEAR rows of `force, relative velocity`.",
+       {kFieldDependence, kTemperatureDependence}},
+      {"SECTION CONTROLS",
+       "Element deletion, maximum degradation and viscous regularisation of connector damage "
+       "(named by `*CONNECTOR SECTION, CONTROLS=`).",
+       "",
+       {{"any parameter other than NAME, ELEMENT DELETION, MAX DEGRADATION and VISCOSITY",
+         "they control elements clinch does not have"}}},
+      {"CONNECTOR BEHAVIOR",
+       "Opens a named connector behaviour; the options that follow (elasticity, damping, stops, "
+       "plasticity, friction, damage, ...) belong to it.",
+       "",
+       {},
+       {{"INTEGRATION, REGULARIZE, RTOL", "Abaqus/Explicit only"}}},
+      {"CONNECTOR CONSTITUTIVE REFERENCE",
+       "The reference positions from which elastic and plastic motions are measured.",
+       "One line: the reference values of components 1 to 6 (lengths, then angles in degrees; "
+       "blank fields are 0)."},
+      {"CONNECTOR DAMPING",
+       "Viscous damping of connector components (force against velocity Δu/Δt in *STATIC): "
+       "linear, nonlinear or coupled.",
+       "Linear: the coefficient. NONLINEAR: rows of `force, velocity`. Coupled (no COMPONENT): "
+       "the upper triangle of the damping matrix of the available components.",
+       {{"TYPE=RAYLEIGH", "give the coefficient with TYPE=VISCOUS"},
+        {"INDEPENDENT COMPONENTS", "damping against another component's velocity is not implemented"},
+        {"UNSYMM", "unsymmetric damping matrices are not implemented"},
+        {"FREQUENCY DEPENDENCE=ON", "for frequency-domain procedures, which clinch does not run"},
+        kFieldDependence,
+        kTemperatureDependence},
+       {{"TYPE=STRUCTURAL", "it acts only in steady-state dynamics"}, kExplicitOnly}},
+      {"CONNECTOR ELASTICITY",
+       "Elasticity of connector components: linear, nonlinear (tabulated), coupled or RIGID.",
+       "Linear: the stiffness. NONLINEAR: rows of `force, relative motion`. Coupled (no "
+       "COMPONENT): the upper triangle of the stiffness matrix of the available components. "
+       "RIGID: the components on one line (none: all available ones).",
+       {{"UNSYMM", "unsymmetric stiffness matrices are not implemented"},
+        {"INDEPENDENT COMPONENTS", "elasticity against another component's motion is not implemented"},
+        {"FREQUENCY DEPENDENCE=ON", "for frequency-domain procedures, which clinch does not run"},
+        kFieldDependence,
+        kTemperatureDependence},
+       {kExplicitOnly}},
+      {"CONNECTOR STOP", "Limits a component's motion to a range (a one-sided contact).",
+       "One line: `lower, upper`, the limits of the component's position (radians for "
+       "rotations); a blank field is no limit."},
+      {"CONNECTOR LOCK",
+       "Locks components once a criterion on a component's motion or force is met.",
+       "One line: `p_L, p_U, F_L, F_U`, bounds on the tested component's position and total "
+       "force (a blank field is no bound); LOCK= names the component to lock, or ALL.",
+       {kFieldDependence}},
+      {"CONNECTOR FAILURE",
+       "Releases components when a component's force or position leaves its range.",
+       "One line: `p_L, p_U, F_L, F_U` as for *CONNECTOR LOCK; RELEASE= names the component "
+       "released, or ALL."},
+      {"CONNECTOR PLASTICITY",
+       "Plasticity of a component (COMPONENT=) or coupled through a *CONNECTOR POTENTIAL.",
+       "None; *CONNECTOR HARDENING and *CONNECTOR POTENTIAL follow it."},
+      {"CONNECTOR HARDENING",
+       "Isotropic (tabular or exponential law) or kinematic (Ziegler, Armstrong–Frederick) "
+       "hardening of the preceding *CONNECTOR PLASTICITY.",
+       "ISOTROPIC TABULAR: rows of `yield force, equivalent plastic motion`. EXPONENTIAL LAW: "
+       "`F0, Q_inf, b`. KINEMATIC PARAMETERS: `F0, C, gamma`; HALF CYCLE: rows of `force, "
+       "plastic motion`.",
+       {{"DEFINITION=STABILIZED", "cyclic test data of the stabilised loop is not implemented"},
+        {"kinematic hardening with a coupled (potential) plasticity",
+         "the coupled return mapping is isotropic only"},
+        {"HALF CYCLE with more than two rows", "only the two-point (linear) half cycle is implemented"},
+        {"rate-dependent rows", "rate-dependent hardening is not implemented"},
+        kFieldDependence,
+        kTemperatureDependence}},
+      {"CONNECTOR DAMAGE INITIATION",
+       "When damage starts: on force, motion or plastic motion of a component or of a potential.",
+       "FORCE: `F_L, F_U`; MOTION: the lower and upper limits of the motion; PLASTIC MOTION: "
+       "the equivalent plastic motion at initiation (one row).",
+       {{"PLASTIC MOTION with more than one row", "mode-mix and rate dependence are not implemented"},
+        {"CRITERION=FORCE in a behaviour that also has friction or RIGID elasticity",
+         "`clinch run` cannot run it; `clinch check` refuses it too, so that check passes only "
+         "what run accepts"},
+        kFieldDependence,
+        kTemperatureDependence},
+       {{"RATE FILTER FACTOR, RATE INTERPOLATION, REGULARIZE, RTOL", "Abaqus/Explicit only"}}},
+      {"CONNECTOR DAMAGE EVOLUTION",
+       "How damage grows after initiation: by motion (linear, exponential or tabular softening) "
+       "or by dissipated energy.",
+       "With AFFECTED COMPONENTS, first the affected components. TYPE=MOTION, LINEAR: `du_f`, the "
+       "motion past initiation at full damage; EXPONENTIAL: `du_f, a`; TABULAR: rows of "
+       "`damage, motion past initiation`. TYPE=ENERGY: the energy dissipated at full damage.",
+       {kFieldDependence, kTemperatureDependence}},
+      {"CONNECTOR DERIVED COMPONENT",
+       "A named scalar made of components (weighted sum, Macaulay sum, ...), used by potentials "
+       "and friction.",
+       "Pairs of lines: the component numbers, then their coefficients.",
+       {{"INDEPENDENT COMPONENTS", "derived components of other components' motions are not implemented"},
+        {"temperature-dependent coefficients", "temperature-dependent data is not implemented"}}},
+      {"CONNECTOR POTENTIAL",
+       "A potential (SUM or MAX of terms over components and derived components) for coupled "
+       "plasticity, damage or friction.",
+       "One term per line: `component (1-6) or derived component name, scale R, exponent, "
+       "function (ABS, MACAULEY or NONE), shift, sign`; blank fields take their defaults."},
+      {"CONNECTOR FRICTION",
+       "Friction on a component, through a *CONNECTOR POTENTIAL, or predefined for the "
+       "connection type (see Refused for the types), with its contact force.",
+       "Optional: the internal contact force as rows of `F_int, accumulated slip` (one row: "
+       "a constant force). PREDEFINED SLOT and SLIDE-PLANE take no geometric data.",
+       {{"PREDEFINED on a connection type other than SLOT, SLIDE-PLANE",
+         "not implemented for the others (or the type has no predefined friction); use "
+         "COMPONENT= or a *CONNECTOR POTENTIAL with CONTACT FORCE="},
+        {"INDEPENDENT COMPONENTS", "not implemented"},
+        {"more than five *CONNECTOR FRICTION in one behaviour", "combine them"},
+        {"temperature-dependent internal contact force", "temperature-dependent data is not implemented"}}},
+      {"FRICTION",
+       "The friction coefficient of the preceding *CONNECTOR FRICTION: constant, tabulated "
+       "against slip rate or contact force, or static–kinetic exponential decay.",
+       "Rows of `mu, slip rate, contact force`; EXPONENTIAL DECAY: `mu_s, mu_k, d_c`.",
+       {{"ROUGH, LAGRANGE, USER", "not meaningful for connector friction"},
+        {"ANISOTROPIC", "use a *CONNECTOR POTENTIAL for directional friction"},
+        {"EXPONENTIAL DECAY with TEST DATA", "give mu_s, mu_k and d_c"},
+        {"*FRICTION outside a *CONNECTOR BEHAVIOR", "surface contact is not implemented"},
+        kTemperatureDependence},
+       {kExplicitOnly}},
+      {"STEP", "Opens a step; NLGEOM chooses finite rotations, INC the increment limit.",
+       "Optional: a description line.",
+       {{"PERTURBATION, SOLVER, MONOTONIC, INCF", "not implemented"},
+        {"EXTRAPOLATION=PARABOLIC", "use LINEAR or NO"}},
+       {{"CONVERT SDI", "it has no effect in clinch"}}},
+      {"END STEP", "Closes the step.", ""},
+      {"STATIC",
+       "A static procedure with automatic incrementation (cutbacks) or fixed increments "
+       "(DIRECT).",
+       "`initial increment, step time, minimum increment, maximum increment`.",
+       {{"STABILIZE, ALLSDTOL, CONTINUE, FACTOR, RIKS, LONG TERM, ADAPTIVE", "not implemented"}}},
+      {"CONTROLS",
+       "Newton convergence criteria (FIELD), time incrementation and line search.",
+       "With PARAMETERS=: the rows the manual gives for that parameter set.",
+       {{"PARAMETERS=CONSTRAINTS or DIRECT CYCLIC", "not implemented"}}},
+      {"BOUNDARY",
+       "Fixes or prescribes nodal degrees of freedom (ENCASTRE, PINNED, ... or values).",
+       "`node or set, first DOF, last DOF, value`, or `node or set, ENCASTRE`.",
+       {{"TYPE=VELOCITY or ACCELERATION", "static steps prescribe displacements"},
+        {"USER, SUBMODEL, LOAD CASE, REGION TYPE", "not implemented"},
+        {"non-zero values in model data", "prescribe them in a step"}}},
+      {"CLOAD", "Concentrated nodal forces and moments.",
+       "`node or set, DOF, magnitude`.",
+       {{"FOLLOWER, USER, LOAD CASE, CROSS SECTIONAL, SUBMODEL, SYSTEM", "not implemented"}}},
+      {"CONNECTOR MOTION", "Prescribes a connector component's motion.",
+       "`element or set, component, value`.",
+       {{"TYPE=VELOCITY or ACCELERATION", "static steps prescribe displacements"},
+        {"USER", "not implemented"}}},
+      {"CONNECTOR LOAD", "Applies a force or moment on a connector component.",
+       "`element or set, component, magnitude`."},
+      {"AMPLITUDE",
+       "A time variation for loads and prescribed motions (the definitions not refused below).",
+       "TABULAR and SMOOTH STEP: pairs `time, value`, four per line. EQUALLY SPACED: values "
+       "(FIXED INTERVAL= the spacing, BEGIN= the first time).",
+       {{"DEFINITION=PERIODIC, MODULATED, DECAY, SOLUTION DEPENDENT, BUBBLE, USER, ACTUATOR",
+         "not implemented"}},
+       {{"SMOOTH", "it smooths time derivatives, which a static analysis does not use"},
+        {"FIXED INTERVAL, BEGIN without DEFINITION=EQUALLY SPACED", "they belong to that form"}}},
+      {"OUTPUT",
+       "Opens an output request: HISTORY requests go to <job>.history.csv; FIELD requests are "
+       "read and have no output.",
+       "",
+       {{"TIME POINTS", "output at listed times is not implemented"}},
+       {{"FILTER, MODE LIST, SENSITIVITY, DIAGNOSTICS", "they have no effect in clinch"},
+        {"a FIELD request", "clinch writes history output only"}}},
+      {"ELEMENT OUTPUT", "The element (connector, spring) variables of a history request.",
+       "Output identifiers (CTF, CU, CUE, CUP, CSF, CDMG, ...)."},
+      {"NODE OUTPUT", "The nodal variables of a history request.",
+       "Output identifiers (U, UR, RF, RM, ...)."},
+      {"NODE PRINT",
+       "Nodal variables printed at increments; clinch writes them as history columns (sums "
+       "with TOTALS=).",
+       "Output identifiers."},
+      {"EL PRINT",
+       "Element variables printed at increments; clinch writes them as history columns (sums "
+       "with TOTALS=).",
+       "Output identifiers; a blank line starts a new table."},
+  };
+  return notes;
+}
+
+const KeywordNotes* find_keyword_notes(std::string_view canonical_name) {
+  for (const KeywordNotes& note : all_keyword_notes()) {
+    if (note.name == canonical_name) return &note;
+  }
+  return nullptr;
+}
+
+}  // namespace clinch

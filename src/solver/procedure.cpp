@@ -1,0 +1,11 @@
+#include "src/solver/procedure.hpp"
+
+#include "src/solver/static_step_procedure.hpp"
+
+namespace clinch {
+
+std::unique_ptr<Procedure> procedure_for(const Step& step) {
+  return std::make_unique<StaticStepProcedure>(step);
+}
+
+}  // namespace clinch

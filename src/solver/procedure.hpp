@@ -1,0 +1,46 @@
+// A step's procedure (keywords.md §15): its time policy and what an increment means for it.
+// *STATIC is the first (static_step_procedure.hpp); each further step kind (implicit dynamics,
+// arc length, frequency) is another implementation. The step driver runs any of them around the
+// same increment attempt, Newton and StepProblem, and never asks which one it has.
+#pragma once
+
+#include <memory>
+
+#include "src/solver/step_problem.hpp"
+#include "src/solver/time_stepper.hpp"
+
+namespace clinch {
+
+struct Step;
+
+// Where an increment lies: it ends at `step_time` of the step and `total_time` of the analysis,
+// is `dt` long, and the last converged increment of the step was `previous_dt` (0: none yet).
+struct IncrementTimes {
+  double step_time = 0.0;
+  double total_time = 0.0;
+  double dt = 0.0;
+  double previous_dt = 0.0;
+};
+
+// How Newton treats this procedure's increments.
+struct IncrementRules {
+  bool accept_unconverged = false;  // an increment at the iteration limit is kept (DIRECT=NO STOP)
+  bool fixed_increments = false;    // no increment can be cut, so Newton breaks its own cycles
+};
+
+class Procedure {
+ public:
+  virtual ~Procedure() = default;
+  virtual double period() const = 0;  // the step time at the step's end
+  // A new time policy for one run of the step (its state starts at the step's start).
+  virtual std::unique_ptr<TimeStepper> time_stepper() const = 0;
+  virtual IncrementRules increment_rules() const = 0;
+  // Starts the increment on `problem`: its times and conditions, and the predictor this
+  // procedure uses from the converged state.
+  virtual void begin_increment(StepProblem& problem, const IncrementTimes& times) const = 0;
+};
+
+// The procedure of `step` (*STATIC when the step names none: keywords.md §15).
+std::unique_ptr<Procedure> procedure_for(const Step& step);
+
+}  // namespace clinch
