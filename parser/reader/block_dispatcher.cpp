@@ -35,6 +35,11 @@ void BlockDispatcher::open(KeywordLine line) {
     if (p.has_value) substitution_.mark_references_used(p.value.text);
   }
   if (!spec) {
+    auto& behaviors = model_.behaviors.behaviors;
+    if (meant && meant->behavior_suboption && at.in_behavior && !behaviors.empty() &&
+        behaviors.back().loc == at.behavior_loc) {
+      behaviors.back().misspelt_option = true;
+    }
     if (meant && MisspeltBlock::changes_structure(*meant)) {
       structure_.enter(*meant, kl, ParamSet());
       remember_refused_name(*meant, kl);

@@ -292,9 +292,10 @@ class OutputValidator {
         features = behavior ? behavior_features(*behavior) : BehaviorFeatures{};
         last_behavior = behavior;
       }
-      // A section whose behaviour was refused or is undefined was reported there: its outputs
-      // are not "always 0" (input-syntax.md §10, no follow-ups).
-      const bool behavior_lost = !behavior && !section->behavior.empty();
+      // A section whose behaviour was refused or is undefined, or lost an option to a misspelt
+      // keyword, was reported there: its outputs are not "always 0" (input-syntax.md §10).
+      const bool behavior_lost =
+          behavior ? behavior->misspelt_option : !section->behavior.empty();
       if (!produces(features, info->producer) && !behavior_lost) ++without_producer;
       if (info->producer == OutputProducer::Derived) {
         std::vector<std::string> names = derived_columns(id, behavior, reported_behaviors);
