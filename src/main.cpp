@@ -35,6 +35,12 @@ int run_command_line(int argc, char** argv) {
                   "job name, a file name without '/' (default: the deck's name without .inp; "
                   "stdin for -)");
   run->add_flag("--quiet", run_options.quiet, "print nothing but warnings and errors");
+  std::string labels = "clinch";
+  run->add_option("--labels", labels,
+                  "history column names: clinch (CTF4@7, CU6@7: the component number) or abaqus "
+                  "(CTM1@7, CUR3@7: Abaqus's letters for rotational components)")
+      ->check(CLI::IsMember({"clinch", "abaqus"}))
+      ->capture_default_str();
   run->add_flag("--check-tangent", run_options.check_tangent,
                 "compare the assembled tangent with finite differences of the residual at the "
                 "first iteration of each increment and log the worst entries (small decks)");
@@ -174,6 +180,8 @@ int run_command_line(int argc, char** argv) {
                          : solver == "dense"   ? clinch::SolverChoice::Dense
                          : solver == "petsc"   ? clinch::SolverChoice::Petsc
                                                : clinch::SolverChoice::Automatic;
+    run_options.labels =
+        labels == "abaqus" ? clinch::LabelStyle::Abaqus : clinch::LabelStyle::Clinch;
     return clinch::run_deck(run_options);
   }
   if (check->parsed()) {
