@@ -158,6 +158,23 @@ int run_command_line(int argc, char** argv) {
                    "draw the first N connectors and nodes of the history table")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
+  report
+      ->add_option("--elements", report_options.elements,
+                   "draw these connectors and nodes (labels as the history names them, "
+                   "comma-separated; default: all, or the most loaded when there are more than "
+                   "--connectors)")
+      ->delimiter(',');
+  report
+      ->add_option("--components", report_options.components,
+                   "draw these components (1-6, comma-separated; default: every component that "
+                   "carries force or moves)")
+      ->delimiter(',')
+      ->check(CLI::Range(1, 6));
+  report
+      ->add_option("--variables", report_options.variables,
+                   "draw these variables (CTF, CEF, CSF, CRF, CU, ...; Abaqus names such as CTM "
+                   "or CUR too; comma-separated; default: all)")
+      ->delimiter(',');
   report->add_option("--output,-o", report_options.output,
                      "the page to write (default: RUN_DIR/<job>.report.html)");
   report->add_flag("--quiet", report_options.quiet, "print nothing but warnings and errors");

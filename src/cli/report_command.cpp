@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "src/output/abaqus_labels.hpp"
 #include "src/output/csv_table.hpp"
 #include "src/output/iteration_log_reader.hpp"
 #include "src/output/status_file_reader.hpp"
@@ -77,6 +78,9 @@ int run_report(const ReportOptions& options) {
   ReportInputs inputs;
   inputs.job = *job;
   inputs.max_connectors = options.max_connectors;
+  inputs.elements = options.elements;
+  inputs.components = options.components;
+  for (const std::string& v : options.variables) inputs.variables.push_back(canonical_label(v));
   inputs.history = &*history;
   inputs.status = status ? &*status : nullptr;
   inputs.iterations = iterations ? &*iterations : nullptr;

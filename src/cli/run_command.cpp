@@ -219,6 +219,9 @@ int run_deck(const RunCommandOptions& options) {
   Progress progress = Progress::for_stderr(options.quiet || !writer);
   HistoryRecorder history(columns, table, system);
   RunOutputs outputs(history, status, log, progress);
+  std::vector<std::string> step_names;
+  for (const Step& step : model.history.steps) step_names.push_back(step.name.display);
+  outputs.set_step_names(std::move(step_names));
   ConnectorStepProblem step_problem(model, system);
   const RunResult result = run_analysis(model, system, step_problem, solvers, outputs,
                                         RunOptions{options.check_tangent,

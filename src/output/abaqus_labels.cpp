@@ -194,4 +194,37 @@ std::string label_meaning(std::string_view label) {
   return text;
 }
 
+const char* quantity_name(Quantity q) {
+  switch (q) {
+    case Quantity::Force:
+      return "force";
+    case Quantity::Moment:
+      return "moment";
+    case Quantity::Displacement:
+      return "displacement";
+    case Quantity::Rotation:
+      return "rotation";
+    case Quantity::Ratio:
+      return "ratio";
+    case Quantity::Status:
+      return "status";
+  }
+  return "";
+}
+
+ColumnDescription describe_column(std::string_view name) {
+  const std::size_t at = name.find('@');
+  const std::string_view label = name.substr(0, at);
+  const Canonical c = canonical_parts(label);
+  ColumnDescription d;
+  d.variable = c.variable;
+  d.component = c.component;
+  d.derived = c.rest;
+  if (at != std::string_view::npos) d.where = std::string(name.substr(at + 1));
+  d.abaqus_name = abaqus_column_name(name);
+  d.meaning = label_meaning(label);
+  d.quantity = column_quantity(name);
+  return d;
+}
+
 }  // namespace clinch

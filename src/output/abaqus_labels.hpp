@@ -38,6 +38,22 @@ Quantity column_quantity(std::string_view name);
 bool is_force_like(Quantity q);   // Force or Moment
 bool is_motion_like(Quantity q);  // Displacement or Rotation
 
+const char* quantity_name(Quantity q);  // "force", "moment", "displacement", ...
+
+// A history column as the report shows it: its canonical variable and component ("CTF", 4 for
+// CTF4@7 and CTM1@7; "U", 5 for UR2@3; 0 for a scalar), the derived component's "-name", where it
+// is, its Abaqus name, meaning and quantity.
+struct ColumnDescription {
+  std::string variable;
+  int component = 0;
+  std::string derived;
+  std::string where;
+  std::string abaqus_name;
+  std::string meaning;
+  Quantity quantity = Quantity::Ratio;
+};
+ColumnDescription describe_column(std::string_view name);
+
 // What a label means, in Abaqus's words: "CTF1" → "total force in direction 1", "CTF4" (or
 // "CTM1") → "total moment about axis 1", "CU6" → "relative rotation about axis 3", "CDMG" →
 // "overall damage". The label alone when it is not a known one.

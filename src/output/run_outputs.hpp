@@ -7,6 +7,8 @@
 
 #include <cstddef>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "src/output/history_recorder.hpp"
 #include "src/output/progress.hpp"
@@ -22,7 +24,12 @@ class RunOutputs {
 
   RunLog& log() { return log_; }
 
-  void begin_step(std::size_t step) { history_.begin_step(step); }
+  // The steps' names (NAME= or Step-<n>), in deck order: the .sta, the log and the progress line
+  // name each step with them.
+  void set_step_names(std::vector<std::string> names) { step_names_ = std::move(names); }
+
+  // Step `step` (0-based) begins: its requests become current, its name goes to the .sta and log.
+  void begin_step(std::size_t step);
   // Row 0: the initial state, before any condition applies (output-variables.md §1.4).
   void initial_state() { history_.converged(1, 0, 0.0, 0.0, false); }
   // An attempt that failed, that a law abandoned, or that is solved again: its status line.
@@ -43,6 +50,7 @@ class RunOutputs {
   StatusFile& status_;
   RunLog& log_;
   Progress& progress_;
+  std::vector<std::string> step_names_;
 };
 
 }  // namespace clinch
