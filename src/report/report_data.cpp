@@ -22,7 +22,21 @@ nlohmann::json table_json(const CsvTable& table) {
     for (double v : row) values.push_back(number(v));
     rows.push_back(std::move(values));
   }
-  return {{"path", table.path}, {"columns", table.columns}, {"rows", std::move(rows)}};
+  nlohmann::json labels = nlohmann::json::array();
+  for (const std::string& name : table.columns) {
+    const ColumnDescription d = describe_column(name);
+    labels.push_back({{"variable", d.variable},
+                      {"component", d.component},
+                      {"derived", d.derived},
+                      {"where", d.where},
+                      {"abaqus", d.abaqus_name},
+                      {"meaning", d.meaning},
+                      {"quantity", quantity_name(d.quantity)}});
+  }
+  return {{"path", table.path},
+          {"columns", table.columns},
+          {"labels", std::move(labels)},
+          {"rows", std::move(rows)}};
 }
 
 const char* verdict_text(ColumnVerdict verdict) {
@@ -44,18 +58,6 @@ nlohmann::json report_data(const ReportInputs& in) {
   data["job"] = in.job;
   data["max_connectors"] = in.max_connectors;
   data["history"] = table_json(*in.history);
-  nlohmann::json labels = nlohmann::json::array();
-  for (const std::string& name : in.history->columns) {
-    const ColumnDescription d = describe_column(name);
-    labels.push_back({{"variable", d.variable},
-                      {"component", d.component},
-                      {"derived", d.derived},
-                      {"where", d.where},
-                      {"abaqus", d.abaqus_name},
-                      {"meaning", d.meaning},
-                      {"quantity", quantity_name(d.quantity)}});
-  }
-  data["history"]["labels"] = std::move(labels);
   data["choice"] = {{"elements", in.elements},
                     {"components", in.components},
                     {"variables", in.variables}};
