@@ -167,7 +167,7 @@ std::string column_name_in(std::string_view name, LabelStyle style) {
 Quantity column_quantity(std::string_view name) {
   const Canonical c = canonical_parts(name.substr(0, name.find('@')));
   const VariableWords* w = words_of(c.variable);
-  if (w == nullptr) return Quantity::Ratio;
+  if (w == nullptr) return Quantity::Other;
   if (c.component >= 4) {
     if (w->quantity == Quantity::Force) return Quantity::Moment;
     if (w->quantity == Quantity::Displacement) return Quantity::Rotation;
@@ -208,6 +208,8 @@ const char* quantity_name(Quantity q) {
       return "ratio";
     case Quantity::Status:
       return "status";
+    case Quantity::Other:
+      return "other";
   }
   return "";
 }

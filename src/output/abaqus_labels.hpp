@@ -33,6 +33,7 @@ enum class Quantity : std::uint8_t {
   Rotation,      // CU4 (CUR1), UR2
   Ratio,         // damage, initiation criteria: dimensionless
   Status,        // CSLST, CSLIPST: codes
+  Other,         // a name clinch does not write
 };
 Quantity column_quantity(std::string_view name);
 bool is_force_like(Quantity q);   // Force or Moment

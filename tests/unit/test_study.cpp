@@ -149,7 +149,7 @@ TEST(ConvergenceEstimate, FirstOrderRichardsonRecoversTheExactError) {
   std::vector<const CsvTable*> pointers;
   for (const CsvTable& t : tables) pointers.push_back(&t);
   std::string error;
-  const std::optional<StudyEstimate> e = estimate_errors(pointers, scales, 2.0, {}, &error);
+  const std::optional<StudyEstimate> e = estimate_errors(pointers, scales, 2.0, {}, false, &error);
   ASSERT_TRUE(e) << error;
   ASSERT_EQ(e->columns.size(), 2u);
   const ColumnEstimate& v = e->columns[0];
@@ -175,7 +175,7 @@ TEST(ConvergenceEstimate, NoOrderWhenDifferencesDoNotShrink) {
   std::vector<const CsvTable*> pointers = {&tables[0], &tables[1], &tables[2]};
   std::string error;
   const std::optional<StudyEstimate> e =
-      estimate_errors(pointers, {1.0, 0.5, 0.25}, 2.0, {"V@1"}, &error);
+      estimate_errors(pointers, {1.0, 0.5, 0.25}, 2.0, {"V@1"}, false, &error);
   ASSERT_TRUE(e) << error;
   EXPECT_EQ(e->columns[0].status, OrderStatus::NotObserved);
   EXPECT_TRUE(e->estimate_is_bound[0]);
@@ -191,14 +191,66 @@ TEST(ConvergenceEstimate, TooFewRunsAndInterpolatedTimes) {
   for (int i = 0; i <= 8; ++i) fine.rows.push_back({1, double(i), i / 2.0, i / 2.0, i / 2.0, 0.0});
   std::string error;
   const std::optional<StudyEstimate> e =
-      estimate_errors({&coarse, &fine}, {1.0, 0.5}, 2.0, {"V@1"}, &error);
+      estimate_errors({&coarse, &fine}, {1.0, 0.5}, 2.0, {"V@1"}, false, &error);
   ASSERT_TRUE(e) << error;
   EXPECT_EQ(e->times.size(), 5u);
   EXPECT_EQ(e->columns[0].status, OrderStatus::TooFewRuns);
   EXPECT_EQ(e->columns[0].difference[0], 0.0);
   EXPECT_EQ(value_at(fine, 3, 4, 1.25), 1.25);
-  EXPECT_FALSE(estimate_errors({&coarse}, {1.0}, 2.0, {"W@1"}, &error));
+  EXPECT_FALSE(estimate_errors({&coarse}, {1.0}, 2.0, {"W@1"}, false, &error));
   EXPECT_NE(error.find("no column 'W@1'"), std::string::npos);
+}
+
+// A driven component: its total moment CTF4 is round-off (1e-9 h, changing with the increment),
+// its friction moment CSF4 = 10 + 0.2 h sin t has a first-order error, and a force CTF1 = 1000
+// sets the scale of forces and moments together.
+CsvTable driven_table(double h) {
+  CsvTable table;
+  table.columns = {"step", "increment", "step_time", "total_time", "CTF1@1", "CTF4@1", "CSF4@1",
+                   "CU4@1"};
+  for (int i = 0; i <= 4; ++i) {
+    const double t = i;
+    table.rows.push_back({1, double(i), t, t, 1000.0, 1e-9 * h * std::cos(t),
+                          10.0 + 0.2 * h * std::sin(t), 0.1 * t});
+  }
+  return table;
+}
+
+TEST(ConvergenceEstimate, ErrorsAgainstTheModelsScaleAndRoundOffColumnsLeftOut) {
+  std::vector<CsvTable> tables;
+  std::vector<double> scales;
+  for (int k = 0; k < 4; ++k) {
+    scales.push_back(std::pow(0.5, k));
+    tables.push_back(driven_table(scales.back()));
+  }
+  std::vector<const CsvTable*> pointers;
+  for (const CsvTable& t : tables) pointers.push_back(&t);
+  std::string error;
+  const std::optional<StudyEstimate> e = estimate_errors(pointers, scales, 2.0, {}, false, &error);
+  ASSERT_TRUE(e) << error;
+  ASSERT_EQ(e->columns.size(), 4u);
+  // CTF4: largest 1e-9 against the scale 1000 of forces and moments: left out.
+  EXPECT_EQ(e->columns[1].status, OrderStatus::Negligible);
+  EXPECT_EQ(e->columns[1].scale, 1000.0);
+  // CSF4: error 0.2 h |sin 2| against the force scale 1000, not against its own peak 10.2.
+  const ColumnEstimate& friction = e->columns[2];
+  EXPECT_EQ(friction.status, OrderStatus::Observed);
+  EXPECT_EQ(friction.scale, 1000.0);
+  for (std::size_t r = 0; r < 4; ++r) {
+    EXPECT_NEAR(friction.estimated[r], 0.2 * scales[r] * std::abs(std::sin(2.0)) / 1000.0, 1e-14)
+        << r;
+  }
+  EXPECT_EQ(e->worst_column[0], "CSF4@1");
+  // CU4 is exact: its motion scale is its own 0.4, and every setting agrees.
+  EXPECT_EQ(e->columns[3].status, OrderStatus::Agree);
+  EXPECT_EQ(e->columns[3].scale, 0.4);
+  // Chosen with --columns, the round-off column is estimated, against the model's force scale
+  // still: its differences (1e-12 of it at most) are round-off, the settings agree.
+  const std::optional<StudyEstimate> kept =
+      estimate_errors(pointers, scales, 2.0, {"CTF4@1"}, true, &error);
+  ASSERT_TRUE(kept) << error;
+  EXPECT_EQ(kept->columns[0].status, OrderStatus::Agree);
+  EXPECT_EQ(kept->columns[0].scale, 1000.0);
 }
 
 TEST(StudyResult, CheapestSettingBelowTheTolerance) {
