@@ -341,7 +341,6 @@ def golden_overlays(page, history, golden, columns_by_name):
         fig = Figure(figsize=(6.4, 4.6))
         top, bottom = fig.subplots(2, 1, sharex=True, gridspec_kw={"height_ratios": [3, 2]})
         label = column.label() if column else plain(name)
-        name = column.display if column else name
         if column is None:
             top.text(0.5, 0.5, plain(f"{name}: no such column in the run"),
                      transform=top.transAxes, ha="center")
