@@ -150,6 +150,15 @@ std::string abaqus_label(std::string_view label) {
   return std::string(label);
 }
 
+std::string canonical_variable(std::string_view variable) {
+  std::string v(variable);
+  for (char& c : v) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  for (const OutputAlias& a : rotation_aliases()) {
+    if (a.alias == v) return std::string(a.canonical);
+  }
+  return v;
+}
+
 std::string canonical_column_name(std::string_view name) {
   const std::size_t at = name.find('@');
   return with_where(canonical_label(name.substr(0, at)), name, at);

@@ -19,6 +19,10 @@ std::string canonical_label(std::string_view label);
 // "CTF4" → "CTM1", "CU6" → "CUR3"; any other label (CTF1, CDMG, U1) as it is.
 std::string abaqus_label(std::string_view label);
 
+// A variable without its component: "CTM" → "CTF", "CUR" → "CU", "ctf" → "CTF"; others as
+// they are, in capitals.
+std::string canonical_variable(std::string_view variable);
+
 // The same on a column name `<LABEL>@<where>` (the part after the first '@' is kept as it is).
 std::string canonical_column_name(std::string_view name);
 std::string abaqus_column_name(std::string_view name);
