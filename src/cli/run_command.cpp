@@ -210,6 +210,11 @@ int run_deck(const RunCommandOptions& options) {
     return kExitUsage;
   }
   const double columns_seconds = seconds_since(columns_start);
+  if (options.labels == LabelStyle::Abaqus) {
+    log.info(fmt::format("history: {} columns, rotational components with Abaqus's names "
+                         "(--labels abaqus: CTM1 for CTF4, CUR1 for CU4, ...)",
+                         columns.names().size()));
+  }
   // Per step, the driver asks for the solver of the storage the step needs.
   const bool definite = !plan->has_multipliers;
   const SolverFactory solvers = [&](bool symmetric) -> std::unique_ptr<LinearSolver> {
