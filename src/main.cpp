@@ -133,7 +133,8 @@ int run_command_line(int argc, char** argv) {
   CLI::App* report = app.add_subcommand(
       "report",
       "Write a self-contained HTML page (plots inlined, opens offline) for a run directory: "
-      "per connector force-motion curves per component, time histories, the Newton convergence "
+      "per connector the parts of each component's force against its motion (Abaqus names), "
+      "time histories with step names, the Newton convergence "
       "of each increment with cutbacks marked, golden overlays with the tolerance band and the "
       "worst deviation, and a study's work-precision plot; exit 0 = written, 3 = usage or I/O "
       "error");

@@ -24,7 +24,7 @@ struct ReportOptions {
   double atol = kDefaultAtol;
   std::optional<std::string> study;
   // A model with thousands of connectors would make a page nobody can read, and take minutes
-  // to draw: the first ones are drawn, and the page says how many were left out.
+  // to draw: the most loaded ones are drawn, and the page says how many were left out.
   int max_connectors = 20;
   // --elements, --components, --variables (comma-separated): the connectors and nodes (labels as
   // the history names them), components (1-6) and variables (CTF or CTM, ...) to draw.

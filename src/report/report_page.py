@@ -2,9 +2,9 @@
 matplotlib, no script, style or font fetched from anywhere) from the JSON document that
 `clinch report` writes (src/report/report_data.cpp).
 
-Sections: per connector, force-motion curves per component (CTF against CU, and against the
-elastic and plastic motions CUE and CUP where the run has them) and time histories; per node,
-time histories; the Newton convergence of every increment attempt (residual and correction
+Sections: per connector, the parts of each component's force (CEF, CVF, CSF, -CRF, CTF) against
+its motion, the components that carry nothing listed instead, and time histories with a panel per
+quantity and the step names; per node, time histories; the Newton convergence of every increment attempt (residual and correction
 norms, log scale) with cutbacks marked; per golden column, the result over the golden values
 with the tolerance band of `clinch compare` and the worst deviation marked; the work-precision
 plot of a study.

@@ -139,15 +139,27 @@ CsvTable first_order_table(double h, double c) {
   return table;
 }
 
-TEST(ConvergenceEstimate, FirstOrderRichardsonRecoversTheExactError) {
+// Four settings, scales 1, 1/2, 1/4, 1/8, each table made by `table_at(scale)`.
+struct Ladder {
   std::vector<CsvTable> tables;
   std::vector<double> scales;
-  for (int k = 0; k < 4; ++k) {
-    scales.push_back(std::pow(0.5, k));
-    tables.push_back(first_order_table(scales.back(), 0.3));
-  }
   std::vector<const CsvTable*> pointers;
-  for (const CsvTable& t : tables) pointers.push_back(&t);
+  template <typename Make>
+  explicit Ladder(Make table_at) {
+    for (int k = 0; k < 4; ++k) {
+      scales.push_back(std::pow(0.5, k));
+      tables.push_back(table_at(scales.back()));
+    }
+    for (const CsvTable& t : tables) pointers.push_back(&t);
+  }
+  Ladder(const Ladder&) = delete;  // `pointers` point into `tables`
+  Ladder& operator=(const Ladder&) = delete;
+};
+
+TEST(ConvergenceEstimate, FirstOrderRichardsonRecoversTheExactError) {
+  const Ladder ladder([](double h) { return first_order_table(h, 0.3); });
+  const std::vector<double>& scales = ladder.scales;
+  const std::vector<const CsvTable*>& pointers = ladder.pointers;
   std::string error;
   const std::optional<StudyEstimate> e = estimate_errors(pointers, scales, 2.0, {}, false, &error);
   ASSERT_TRUE(e) << error;
@@ -217,14 +229,9 @@ CsvTable driven_table(double h) {
 }
 
 TEST(ConvergenceEstimate, ErrorsAgainstTheModelsScaleAndRoundOffColumnsLeftOut) {
-  std::vector<CsvTable> tables;
-  std::vector<double> scales;
-  for (int k = 0; k < 4; ++k) {
-    scales.push_back(std::pow(0.5, k));
-    tables.push_back(driven_table(scales.back()));
-  }
-  std::vector<const CsvTable*> pointers;
-  for (const CsvTable& t : tables) pointers.push_back(&t);
+  const Ladder ladder(driven_table);
+  const std::vector<double>& scales = ladder.scales;
+  const std::vector<const CsvTable*>& pointers = ladder.pointers;
   std::string error;
   const std::optional<StudyEstimate> e = estimate_errors(pointers, scales, 2.0, {}, false, &error);
   ASSERT_TRUE(e) << error;
