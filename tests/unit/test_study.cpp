@@ -298,5 +298,32 @@ TEST(StatusFileReader, AttemptsCutbacksAndEnding) {
   EXPECT_EQ(r->ending, "FAILED: too many cutbacks (step 1, increment 2, time 0.25)");
 }
 
+TEST(StatusFileReader, StepNames) {
+  // What StatusFile writes: a STEP line before each step's attempts, a name with blanks and a
+  // colon kept whole (docs/study-and-report.md, "Abaqus names and step names").
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / "clinch-step-names.sta";
+  {
+    StatusFile sta;
+    std::string error;
+    ASSERT_TRUE(sta.open(path, &error)) << error;
+    ASSERT_TRUE(sta.write_step(1, "Open"));
+    ASSERT_TRUE(sta.write_attempt({1, 1, 1, false, 2, 2, 1.0, 1.0, 1.0}));
+    ASSERT_TRUE(sta.write_step(2, "Close: slowly"));
+    ASSERT_TRUE(sta.write_attempt({2, 1, 1, false, 1, 1, 2.0, 1.0, 1.0}));
+    ASSERT_TRUE(sta.write_completed());
+  }
+  std::string error;
+  const std::optional<StatusRecord> r = read_status_file(path.string(), &error);
+  ASSERT_TRUE(r) << error;
+  EXPECT_EQ(r->attempts.size(), 2u);
+  EXPECT_EQ(r->step_names.at(1), "Open");
+  EXPECT_EQ(r->step_names.at(2), "Close: slowly");
+  EXPECT_EQ(r->ending, "COMPLETED");
+  std::ofstream(path) << "header\nSTEP x: bad\n";
+  EXPECT_FALSE(read_status_file(path.string(), &error));
+  EXPECT_NE(error.find(":2: not a step line"), std::string::npos) << error;
+}
+
 }  // namespace
 }  // namespace clinch
