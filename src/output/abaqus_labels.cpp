@@ -156,6 +156,9 @@ std::string canonical_variable(std::string_view variable) {
   for (const OutputAlias& a : rotation_aliases()) {
     if (a.alias == v) return std::string(a.canonical);
   }
+  if (v == "UR") return "U";  // nodal rotations, reactions and loads (output-variables.md §3)
+  if (v == "RM") return "RF";
+  if (v == "CM") return "CF";
   return v;
 }
 

@@ -19,8 +19,8 @@ std::string canonical_label(std::string_view label);
 // "CTF4" → "CTM1", "CU6" → "CUR3"; any other label (CTF1, CDMG, U1) as it is.
 std::string abaqus_label(std::string_view label);
 
-// A variable without its component: "CTM" → "CTF", "CUR" → "CU", "ctf" → "CTF"; others as
-// they are, in capitals.
+// A variable without its component: "CTM" → "CTF", "CUR" → "CU", "UR" → "U", "RM" → "RF",
+// "ctf" → "CTF"; others as they are, in capitals.
 std::string canonical_variable(std::string_view variable);
 
 // The same on a column name `<LABEL>@<where>` (the part after the first '@' is kept as it is).

@@ -17,7 +17,6 @@ import io
 import json
 import math
 import os
-import re
 import sys
 
 try:
@@ -378,7 +377,7 @@ def golden_overlays(page, history, golden, columns_by_name):
                       f"(rtol {rtol:g}, atol {atol:g})", fontsize=9)
         top.grid(True, alpha=0.3)
         top.legend(fontsize=7)
-        bottom.set_ylabel(f"run - golden", fontsize=9)
+        bottom.set_ylabel("run - golden", fontsize=9)
         bottom.set_xlabel("total time")
         bottom.grid(True, alpha=0.3)
         fig.tight_layout()

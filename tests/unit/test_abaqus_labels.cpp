@@ -41,6 +41,8 @@ TEST(AbaqusLabels, ColumnNamesKeepWhereTheyAre) {
   EXPECT_EQ(canonical_variable("ctm"), "CTF");
   EXPECT_EQ(canonical_variable("CUR"), "CU");
   EXPECT_EQ(canonical_variable("CSF"), "CSF");
+  EXPECT_EQ(canonical_variable("UR"), "U");
+  EXPECT_EQ(canonical_variable("RM"), "RF");
 }
 
 TEST(AbaqusLabels, MeaningsAndQuantities) {
