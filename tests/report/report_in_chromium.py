@@ -252,6 +252,7 @@ def main():
         labels = " ".join(loop["text"])
         assert "CSM1 (friction)" in labels and "-CRM1 (actuator" in labels, loop["text"]
         assert "CUR1@1: relative rotation about axis 1 [rad]" in labels, loop["text"]
+        assert "connector 1: moments against CUR1" in loop["text"], loop["text"]
         for k in (1, 2, 3, 5, 6):
             assert f"<tr><td>{k}</td><td>carries nothing" in text, k
 
