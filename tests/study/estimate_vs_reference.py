@@ -46,9 +46,9 @@ json.dump([names, [(r[3], r[4]) for r in rows]], sys.stdout)
 
 # Variables by kind (output-variables.md §2, §3), for the study's scales.
 FORCES = {"CTF", "CTM", "CEF", "CEM", "CVF", "CVM", "CSF", "CSM", "CRF", "CRM", "CCF", "CCM",
-          "CNF", "CNM", "CALPHAF", "CALPHAM", "CSFC", "CNFC", "RF", "RM", "CF", "CM", "S"}
+          "CNF", "CNM", "CALPHAF", "CALPHAM", "CSFC", "CNFC", "CDERF", "RF", "RM", "CF", "CM", "S"}
 MOTIONS = {"CU", "CUR", "CCU", "CCUR", "CP", "CPR", "CUE", "CURE", "CUP", "CURP", "CUPEQ",
-           "CUPEQC", "CASU", "CASUC", "U", "UR", "E"}
+           "CUPEQC", "CASU", "CASUC", "CDERU", "U", "UR", "E"}
 RATIOS = {"CDMG", "CDMGR", "CDIF", "CDIFR", "CDIFC", "CDIM", "CDIMR", "CDIMC", "CDIP", "CDIPR",
           "CDIPC"}
 
