@@ -238,6 +238,9 @@ std::optional<TableComparison> compare_tables(const CsvTable& result, const CsvT
     comparison.columns.push_back(compare_column(name, column_values(result, *in_result),
                                                 column_values(golden, *golden.column_index(name)),
                                                 matches, golden_times, options));
+    if (result.columns[*in_result] != name) {
+      comparison.columns.back().result_name = result.columns[*in_result];
+    }
   }
   return comparison;
 }
@@ -273,6 +276,7 @@ std::string render_comparison(const TableComparison& comparison, const CompareOp
       fmt::format_to(line, "  (golden rows outside the result's times: {}, the first at {})",
                      c.out_of_range_rows, c.first_out_of_range_time);
     }
+    if (!c.result_name.empty()) fmt::format_to(line, "  (the result's {})", c.result_name);
     out += '\n';
   }
   for (const std::string& problem : comparison.problems) {
