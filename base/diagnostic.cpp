@@ -47,6 +47,10 @@ Diagnostic& DiagnosticSink::report(DiagCode code, Severity severity, SourceLoc l
   return diagnostics_.back();
 }
 
+void DiagnosticSink::add_note(std::size_t index, DiagNote note) {
+  if (index < diagnostics_.size()) diagnostics_[index].notes.push_back(std::move(note));
+}
+
 void DiagnosticSink::sort_by_location() {
   std::stable_sort(diagnostics_.begin(), diagnostics_.end(),
                    [](const Diagnostic& a, const Diagnostic& b) {

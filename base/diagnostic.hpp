@@ -48,6 +48,9 @@ class DiagnosticSink {
   Diagnostic& report(DiagCode code, Severity severity, SourceLoc loc, std::string message);
 
   const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
+  // Appends a note to the stored diagnostic at `index` in diagnostics(), for a note that is known
+  // only later in the reading; nothing when that diagnostic was dropped past the cap.
+  void add_note(std::size_t index, DiagNote note);
   std::size_t error_count() const { return errors_; }
   std::size_t warning_count() const { return warnings_; }
   bool has_errors() const { return errors_ > 0; }

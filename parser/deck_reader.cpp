@@ -46,7 +46,7 @@ class Reader {
     LineStream stream(sources_, sink_);
     stream.push(main_file);
     read_lines(stream);
-    blocks_.close();
+    blocks_.finish();
     structure_.finish(main_file);
     parameters_.report_unused(sink_);
   }

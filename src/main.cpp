@@ -37,6 +37,12 @@ int run_command_line(int argc, char** argv) {
                   "job name, a file name without '/' (default: the deck's name without .inp; "
                   "stdin for -)");
   run->add_flag("--quiet", run_options.quiet, "print nothing but warnings and errors");
+  std::string labels = "clinch";
+  run->add_option("--labels", labels,
+                  "history column names: clinch (CTF4@7, CU6@7: the component number) or abaqus "
+                  "(CTM1@7, CUR3@7: Abaqus's letters for rotational components)")
+      ->check(CLI::IsMember({"clinch", "abaqus"}))
+      ->capture_default_str();
   run->add_flag("--check-tangent", run_options.check_tangent,
                 "compare the assembled tangent with finite differences of the residual at the "
                 "first iteration of each increment and log the worst entries (small decks)");
@@ -129,7 +135,8 @@ int run_command_line(int argc, char** argv) {
   CLI::App* report = app.add_subcommand(
       "report",
       "Write a self-contained HTML page (plots inlined, opens offline) for a run directory: "
-      "per connector force-motion curves per component, time histories, the Newton convergence "
+      "per connector the parts of each component's force against its motion (Abaqus names), "
+      "time histories with step names, the Newton convergence "
       "of each increment with cutbacks marked, golden overlays with the tolerance band and the "
       "worst deviation, and a study's work-precision plot; exit 0 = written, 3 = usage or I/O "
       "error");
@@ -154,6 +161,23 @@ int run_command_line(int argc, char** argv) {
                    "draw the first N connectors and nodes of the history table")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
+  report
+      ->add_option("--elements", report_options.elements,
+                   "draw these connectors and nodes (labels as the history names them, "
+                   "comma-separated; default: all, or the most loaded when there are more than "
+                   "--connectors)")
+      ->delimiter(',');
+  report
+      ->add_option("--components", report_options.components,
+                   "draw these components (1-6, comma-separated; default: every component that "
+                   "carries force or moves)")
+      ->delimiter(',')
+      ->check(CLI::Range(1, 6));
+  report
+      ->add_option("--variables", report_options.variables,
+                   "draw these variables (CTF, CEF, CSF, CRF, CU, ...; Abaqus names such as CTM "
+                   "or CUR too; comma-separated; default: all)")
+      ->delimiter(',');
   report->add_option("--output,-o", report_options.output,
                      "the page to write (default: RUN_DIR/<job>.report.html)");
   report->add_flag("--quiet", report_options.quiet, "print nothing but warnings and errors");
@@ -190,6 +214,8 @@ int run_command_line(int argc, char** argv) {
                          : solver == "dense"   ? clinch::SolverChoice::Dense
                          : solver == "petsc"   ? clinch::SolverChoice::Petsc
                                                : clinch::SolverChoice::Automatic;
+    run_options.labels =
+        labels == "abaqus" ? clinch::LabelStyle::Abaqus : clinch::LabelStyle::Clinch;
     return clinch::run_deck(run_options);
   }
   if (check->parsed()) {

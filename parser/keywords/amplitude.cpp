@@ -1,13 +1,25 @@
 // *AMPLITUDE (keywords.md §8): a model-wide named time function, in model or history data.
-// The data are read as (time, value) pairs, or as equally spaced values, checked (E0803) and
-// stored after SCALEX/SCALEY/SHIFTX/SHIFTY. Whether anything uses it (W0501) and undefined
-// references (E0507) are decided in resolve_history.
+// The data are read as (time, value) pairs, as equally spaced values, or as the constants of a
+// formula (amplitude_formula.cpp), checked (E0803) and stored after SCALEX/SCALEY/SHIFTX/SHIFTY.
+// Whether anything uses it (W0501) and undefined references (E0507) are decided in
+// resolve_history.
 #include <fmt/format.h>
 
+#include "parser/keywords/amplitude_formula.hpp"
 #include "parser/keywords/history_keywords.hpp"
 
 namespace clinch {
 namespace {
+
+// Why a definition clinch refuses has no meaning here (keywords.md §8).
+const char* refusal_reason(std::string_view definition) {
+  if (definition == "SOLUTION DEPENDENT") {
+    return "it is driven by the creep strain rate of a superplastic forming analysis";
+  }
+  if (definition == "BUBBLE") return "it is a loading of underwater shock analysis";
+  if (definition == "USER") return "user subroutines UAMP and VUAMP cannot be called";
+  return "it needs a co-simulation with a logical modeling program";  // ACTUATOR
+}
 
 class AmplitudeHandler : public KeywordHandler {
  public:
@@ -27,11 +39,17 @@ class AmplitudeHandler : public KeywordHandler {
       amplitude_.definition = AmplitudeDefinition::SmoothStep;
     } else if (definition == "EQUALLY SPACED") {
       amplitude_.definition = AmplitudeDefinition::EquallySpaced;
+    } else if (definition == "PERIODIC") {
+      amplitude_.definition = AmplitudeDefinition::Periodic;
+    } else if (definition == "MODULATED") {
+      amplitude_.definition = AmplitudeDefinition::Modulated;
+    } else if (definition == "DECAY") {
+      amplitude_.definition = AmplitudeDefinition::Decay;
     } else if (!definition.empty() && definition != "TABULAR") {
       ctx.report(DiagCode::unsupported_option, params.loc("DEFINITION", true),
-                 fmt::format("DEFINITION={} is not supported by clinch (TABULAR, SMOOTH STEP or "
-                             "EQUALLY SPACED)",
-                             definition));
+                 fmt::format("DEFINITION={} is not supported by clinch: {} (TABULAR, SMOOTH "
+                             "STEP, EQUALLY SPACED, PERIODIC, MODULATED and DECAY are)",
+                             definition, refusal_reason(definition)));
       skip_ = true;
     }
     amplitude_.total_time = params.enum_value("TIME") == "TOTAL TIME";
@@ -91,28 +109,41 @@ class AmplitudeHandler : public KeywordHandler {
         skip_ = true;
       }
     }
+    // A formula's time constants are scaled by SCALEX (amplitude_formula.cpp): a reversed or
+    // collapsed time axis has no formula.
+    if (is_formula(amplitude_.definition) && params.has("SCALEX") && !skip_ &&
+        !(amplitude_.scale_x > 0)) {
+      ctx.report(DiagCode::value_out_of_range, *params.value("SCALEX"),
+                 fmt::format("SCALEX must be positive for DEFINITION={}, got {}", definition,
+                             params.value("SCALEX")->text));
+      skip_ = true;
+    }
   }
 
   void data_line(BlockContext& ctx, const DataLine& line, std::vector<Field>& fields) override {
     if (skip_ || line.blank) return;
-    const bool equally_spaced = amplitude_.definition == AmplitudeDefinition::EquallySpaced;
+    const bool formula = is_formula(amplitude_.definition);
+    const bool paired = amplitude_.definition == AmplitudeDefinition::Tabular ||
+                        amplitude_.definition == AmplitudeDefinition::SmoothStep;
     // Abaqus reads 4 pairs (8 values) per line (§8).
     if (fields.size() > 8) {
       ctx.report(DiagCode::too_many_entries, fields[8],
                  fmt::format("{} entries on one line; Abaqus accepts at most 8", fields.size()));
     }
     for (const Field& field : fields) {
-      const bool is_time = !equally_spaced && numbers_.size() % 2 == 0;
+      const bool is_time = paired && numbers_.size() % 2 == 0;
+      const char* what = formula ? "amplitude constant" : is_time ? "time" : "amplitude value";
       if (field.empty()) {
-        ctx.missing(field.loc, is_time ? "time" : "amplitude value");
+        ctx.missing(field.loc, what);
         failed_ = true;
-        numbers_.push_back({0, field.loc});  // keep the pairing of later fields
+        numbers_.push_back({0, field.loc, lines_});  // keep the pairing of later fields
         continue;
       }
-      auto value = ctx.real(field, is_time ? "an amplitude time" : "an amplitude value");
+      auto value = ctx.real(field, fmt::format("an {}", what));
       if (!value) failed_ = true;
-      numbers_.push_back({value.value_or(0), field.loc});
+      numbers_.push_back({value.value_or(0), field.loc, lines_});
     }
+    ++lines_;
   }
 
   void end(BlockContext& ctx) override {
@@ -129,6 +160,8 @@ class AmplitudeHandler : public KeywordHandler {
       ctx.report(DiagCode::invalid_amplitude, a.loc,
                  fmt::format("amplitude '{}' has no data points", name));
       a.valid = false;
+    } else if (is_formula(a.definition)) {
+      if (!failed_ && !read_amplitude_formula(ctx, a, numbers_)) a.valid = false;
     } else if (a.definition == AmplitudeDefinition::EquallySpaced) {
       for (std::size_t i = 0; i < numbers_.size(); ++i) {
         a.times.push_back(a.begin + static_cast<double>(i) * a.fixed_interval);
@@ -176,12 +209,9 @@ class AmplitudeHandler : public KeywordHandler {
   }
 
  private:
-  struct Number {
-    double value;
-    SourceLoc loc;
-  };
   Amplitude amplitude_;
-  std::vector<Number> numbers_;
+  std::vector<AmplitudeNumber> numbers_;
+  int lines_ = 0;  // non-blank data lines read
   bool skip_ = false;
   bool failed_ = false;
 };

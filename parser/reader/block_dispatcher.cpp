@@ -15,20 +15,40 @@ void BlockDispatcher::open(KeywordLine line) {
   skip_block_ = true;
   block_spec_ = nullptr;
   const KeywordSpec* spec = registry_.find(kl.name);
+  const std::size_t error_index = sink_.diagnostics().size();
+  // An unknown keyword stands where the keyword it was meant to be stands.
+  const KeywordSpec* meant = spec ? nullptr : report_unknown_keyword(kl, registry_, sink_);
+  const KeywordSpec* stands_as = spec ? spec : meant;
   // Any keyword that is not a behaviour sub-option closes the behaviour block.
-  if (!spec || (!spec->behavior_suboption && spec->level != KeywordLevel::Anywhere)) {
+  if (!stands_as ||
+      (!stands_as->behavior_suboption && stands_as->level != KeywordLevel::Anywhere)) {
     structure_.leave_behavior();
   }
-  if (!spec || (!spec->material_suboption && spec->level != KeywordLevel::Anywhere)) {
+  if (!stands_as ||
+      (!stands_as->material_suboption && stands_as->level != KeywordLevel::Anywhere)) {
     structure_.leave_material();
   }
+  const ReaderPosition& at = structure_.position();
+  const std::string_view as = stands_as ? std::string_view(stands_as->name) : kl.name;
+  misspelt_.keyword(
+      kl, misspelt_.opened_behavior() ? at.in_behavior : at.in_step && as != "END STEP" && as != "STEP",
+      sink_);
   // A block that is refused as a whole still uses the parameters it names: they are not
   // reported unused (input-syntax.md §6.4 item 6, §10 "follows only from an earlier error").
   for (const KeywordParam& p : kl.params) {
     if (p.has_value) substitution_.mark_references_used(p.value.text);
   }
   if (!spec) {
-    report_unknown_keyword(kl, registry_, sink_);
+    auto& behaviors = model_.behaviors.behaviors;
+    if (meant && meant->behavior_suboption && at.in_behavior && !behaviors.empty() &&
+        behaviors.back().loc == at.behavior_loc) {
+      behaviors.back().misspelt_option = true;
+    }
+    if (meant && MisspeltBlock::changes_structure(*meant)) {
+      structure_.enter(*meant, kl, ParamSet());
+      remember_refused_name(*meant, kl);
+      misspelt_.begin(error_index, *meant, kl);
+    }
     return;
   }
   if (spec->keyword_class == KeywordClass::NotSupported) {
@@ -87,6 +107,11 @@ void BlockDispatcher::close() {
   skip_block_ = false;
   input_used_ = false;
   block_open_ = true;
+}
+
+void BlockDispatcher::finish() {
+  close();
+  misspelt_.finish(sink_);
 }
 
 void BlockDispatcher::close_unreadable() {

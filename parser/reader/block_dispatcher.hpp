@@ -19,6 +19,7 @@
 #include "parser/lexer.hpp"
 #include "parser/reader/deck_files.hpp"
 #include "parser/reader/deck_structure.hpp"
+#include "parser/reader/misspelt_block.hpp"
 #include "parser/reader/parameter_substitution.hpp"
 #include "parser/source_manager.hpp"
 #include "src/model/model.hpp"
@@ -41,6 +42,8 @@ class BlockDispatcher {
   void open(KeywordLine line);
   // Ends the open block (its handler's end()), also before the first keyword line.
   void close();
+  // The end of the deck: the last block closes.
+  void finish();
   // A keyword line that could not be read: the block before it ends, and the data lines that
   // follow it are skipped.
   void close_unreadable();
@@ -61,6 +64,7 @@ class BlockDispatcher {
   ParameterSubstitution& substitution_;
   DeckStructure& structure_;
   std::unordered_set<std::string> warned_no_effect_;
+  MisspeltBlock misspelt_;
 
   // The open block: its keyword line, parameters, spec (null when refused), handler and context.
   KeywordLine block_line_;

@@ -31,8 +31,8 @@ const ParamSpec* shortest_covering(const std::vector<const ParamSpec*>& candidat
 
 }  // namespace
 
-void report_unknown_keyword(const KeywordLine& line, const KeywordRegistry& registry,
-                            DiagnosticSink& sink) {
+const KeywordSpec* report_unknown_keyword(const KeywordLine& line,
+                                          const KeywordRegistry& registry, DiagnosticSink& sink) {
   Diagnostic& d = sink.report(DiagCode::unknown_keyword, line.loc,
                               fmt::format("unknown keyword '*{}'", line.spelled));
   // The abbreviation note only when the name is a prefix of exactly one keyword: a prefix of
@@ -50,11 +50,13 @@ void report_unknown_keyword(const KeywordLine& line, const KeywordRegistry& regi
     d.notes.push_back(
         {line.loc,
          fmt::format("keywords cannot be abbreviated; the full name is '{}'", *expansion)});
-    return;
+    return registry.find(fold_name(expansion->substr(1)));
   }
   if (auto guess = closest_match(fmt::format("*{}", line.spelled), registry.display_names())) {
     d.notes.push_back({line.loc, fmt::format("did you mean '{}'?", *guess)});
+    return registry.find(fold_name(guess->substr(1)));
   }
+  return nullptr;
 }
 
 bool validate_params(const KeywordSpec& spec, const KeywordLine& line, ParamSet& out, Model& model,

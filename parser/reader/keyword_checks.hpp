@@ -13,8 +13,10 @@
 
 namespace clinch {
 
-void report_unknown_keyword(const KeywordLine& line, const KeywordRegistry& registry,
-                            DiagnosticSink& sink);
+// Reports an unknown keyword with what it may have meant; returns the spec of that keyword (the
+// one it abbreviates or the closest name), null when there is none.
+const KeywordSpec* report_unknown_keyword(const KeywordLine& line,
+                                          const KeywordRegistry& registry, DiagnosticSink& sink);
 
 // Fills `out` with the parameters of `line` that pass; true when none was refused. The model,
 // position and sources are those an enumerated value is read with (BlockContext::word).

@@ -12,7 +12,7 @@ std::int64_t component_key(std::int32_t connector, int component) {
 StepConditions::StepConditions(const Model& model, const AnalysisPlan& plan)
     : model_(model), plan_(plan) {
   for (const Amplitude& a : model_.history.amplitudes) {
-    if (a.valid && !a.times.empty()) amplitudes_.emplace_back(AmplitudeFunction(a));
+    if (a.valid) amplitudes_.emplace_back(AmplitudeFunction(a));
     else amplitudes_.emplace_back(std::nullopt);
   }
 }

@@ -4,6 +4,7 @@ namespace clinch {
 
 void check_model(const Model& model, DiagnosticSink& sink) {
   check_behaviors(model, sink);
+  check_motion_stops(model, sink);
   check_held_elements(model, sink);
 }
 

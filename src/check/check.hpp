@@ -11,6 +11,9 @@ struct Model;
 // Behaviour rules of behaviors.md (attachment, duplicates, components available).
 void check_behaviors(const Model& model, DiagnosticSink& sink);
 
+// motion-suspends-stop at each *CONNECTOR MOTION line that drives a component with a stop.
+void check_motion_stops(const Model& model, DiagnosticSink& sink);
+
 // One decision per block of held elements (solids, shells, beams, masses, ...): refused while
 // deformable, noted when inertia only (held_elements.cpp).
 void check_held_elements(const Model& model, DiagnosticSink& sink);

@@ -227,7 +227,8 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
        "Optional: the internal contact force as rows of `F_int, accumulated slip` (one row: "
        "a constant force). PREDEFINED SLOT and SLIDE-PLANE take no geometric data.",
        {{"PREDEFINED on a connection type other than SLOT, SLIDE-PLANE",
-         "not implemented for the others (or the type has no predefined friction); use "
+         "for HINGE, CYLINDRICAL, TRANSLATOR, PLANAR, UJOINT and SLIPRING the manual's contact "
+         "force and geometric data line could not be found (the others have none); use "
          "COMPONENT= or a *CONNECTOR POTENTIAL with CONTACT FORCE="},
         {"INDEPENDENT COMPONENTS", "not implemented"},
         {"more than five *CONNECTOR FRICTION in one behaviour", "combine them"},
@@ -275,9 +276,11 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
       {"AMPLITUDE",
        "A time variation for loads and prescribed motions (the definitions not refused below).",
        "TABULAR and SMOOTH STEP: pairs `time, value`, four per line. EQUALLY SPACED: values "
-       "(FIXED INTERVAL= the spacing, BEGIN= the first time).",
-       {{"DEFINITION=PERIODIC, MODULATED, DECAY, SOLUTION DEPENDENT, BUBBLE, USER, ACTUATOR",
-         "not implemented"}},
+       "(FIXED INTERVAL= the spacing, BEGIN= the first time). PERIODIC: `N, omega, t0, A0`, "
+       "then `A1, B1, ..., AN, BN`. MODULATED: `A0, A, t0, omega1, omega2`. DECAY: "
+       "`A0, A, t0, td`.",
+       {{"DEFINITION=SOLUTION DEPENDENT, BUBBLE, USER, ACTUATOR",
+         "they need superplastic forming, underwater shock, user subroutines or co-simulation"}},
        {{"SMOOTH", "it smooths time derivatives, which a static analysis does not use"},
         {"FIXED INTERVAL, BEGIN without DEFINITION=EQUALLY SPACED", "they belong to that form"}}},
       {"OUTPUT",

@@ -5,7 +5,9 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <set>
 
+#include "src/output/abaqus_labels.hpp"
 #include "src/output/csv_table.hpp"
 #include "src/output/iteration_log_reader.hpp"
 #include "src/output/status_file_reader.hpp"
@@ -74,9 +76,39 @@ int run_report(const ReportOptions& options) {
       read_iteration_log(base.string() + ".log", &error);
   if (!iterations) std::cerr << "clinch: warning: " << error << "; no convergence plot\n";
 
+  // What --elements and --variables name must be in the history: a misspelt label would
+  // otherwise give a page without the plot the user asked for, and no word why.
+  {
+    std::set<std::string> wheres, variables;
+    for (const std::string& name : history->columns) {
+      const ColumnDescription d = describe_column(name);
+      wheres.insert(d.where);
+      variables.insert(d.variable);
+    }
+    for (const std::string& where : options.elements) {
+      if (!wheres.contains(where)) {
+        std::cerr << fmt::format(
+            "clinch: error: --elements: no history column is at '{}' (columns are named "
+            "<VAR>@<where>, e.g. CTF1@{})\n",
+            where, history->columns.size() > 4 ? describe_column(history->columns[4]).where : "7");
+        return kExitUsage;
+      }
+    }
+    for (const std::string& variable : options.variables) {
+      if (!variables.contains(canonical_variable(variable))) {
+        std::cerr << fmt::format("clinch: error: --variables: the history has no {} column\n",
+                                 variable);
+        return kExitUsage;
+      }
+    }
+  }
+
   ReportInputs inputs;
   inputs.job = *job;
   inputs.max_connectors = options.max_connectors;
+  inputs.elements = options.elements;
+  inputs.components = options.components;
+  for (const std::string& v : options.variables) inputs.variables.push_back(canonical_variable(v));
   inputs.history = &*history;
   inputs.status = status ? &*status : nullptr;
   inputs.iterations = iterations ? &*iterations : nullptr;

@@ -1,5 +1,6 @@
 // `clinch report RUN_DIR [--job NAME] [--golden GOLDEN.csv [--rtol R] [--atol A]]
-// [--study STUDY.csv] [--connectors N] [-o PAGE.html] [--quiet]`: gathers what a run wrote
+// [--study STUDY.csv] [--connectors N]
+// [--elements E,...] [--components C,...] [--variables V,...] [-o PAGE.html] [--quiet]`: gathers what a run wrote
 // (history table, status file, the Newton iterations of its log), the comparison with a golden
 // table and a study's settings, and has report_page.py draw them into one self-contained HTML
 // page. Exit 0 = the
@@ -9,6 +10,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "src/output/table_comparison.hpp"
 
@@ -22,8 +24,12 @@ struct ReportOptions {
   double atol = kDefaultAtol;
   std::optional<std::string> study;
   // A model with thousands of connectors would make a page nobody can read, and take minutes
-  // to draw: the first ones are drawn, and the page says how many were left out.
+  // to draw: the most loaded ones are drawn, and the page says how many were left out.
   int max_connectors = 20;
+  // --elements, --components, --variables (comma-separated): the connectors and nodes (labels as
+  // the history names them), components (1-6) and variables (CTF or CTM, ...) to draw.
+  std::vector<std::string> elements, variables;
+  std::vector<int> components;
   std::optional<std::string> output;  // default: RUN_DIR/<job>.report.html
   bool quiet = false;
 };

@@ -14,6 +14,7 @@
 #include "src/assembly/connector_system.hpp"
 #include "src/cli/blas_threads.hpp"
 #include "src/cli/stop_signals.hpp"
+#include "src/model/default_stick_stiffness.hpp"
 #include "src/output/history_columns.hpp"
 #include "src/output/run_log.hpp"
 #include "src/output/status_file.hpp"
@@ -72,6 +73,15 @@ bool stopped_before_analysis(const char* stage, const std::string& status_path, 
   else status.write_failed(reason, 1, 0, 0.0);
   log.error(fmt::format("analysis stopped: {} (step 1, increment 0, time 0)", reason));
   return true;
+}
+
+// The history header in the naming --labels chose (a copy only when it differs from clinch's).
+std::vector<std::string> column_names(const HistoryColumns& columns, LabelStyle style) {
+  if (style == LabelStyle::Clinch) return columns.names();
+  std::vector<std::string> names;
+  names.reserve(columns.names().size());
+  for (const std::string& name : columns.names()) names.push_back(column_name_in(name, style));
+  return names;
 }
 
 }  // namespace
@@ -174,6 +184,7 @@ int run_deck(const RunCommandOptions& options) {
                        plan->springs.size(), node_equations,
                        model.nodes.empty() ? 0.0 : double(node_equations) / model.nodes.size(),
                        plan->dofs.equations() - node_equations));
+  if (auto stick = default_stick_stiffness_summary(model.behaviors)) log.info(*stick);
   ConnectorSystem system(model, *plan);
   if (communicator) {
     system.distribute(*communicator);
@@ -194,12 +205,18 @@ int run_deck(const RunCommandOptions& options) {
   // The status file first, so that it can say why the history could not be started (a header
   // larger than the file-size limit, a full disk).
   if (!every_rank_ok(status.open(output_path(".sta"), &error) &&
-                     table.open(output_path(".history.csv"), columns.names(), &error))) {
+                     table.open(output_path(".history.csv"), column_names(columns, options.labels),
+                                &error))) {
     if (status.is_open()) status.write_failed(error, 1, 0, 0.0);
     log.error(fmt::format("analysis stopped: {} (step 1, increment 0, time 0)", error));
     return kExitUsage;
   }
   const double columns_seconds = seconds_since(columns_start);
+  if (options.labels == LabelStyle::Abaqus) {
+    log.info(fmt::format("history: {} columns, rotational components with Abaqus's names "
+                         "(--labels abaqus: CTM1 for CTF4, CUR1 for CU4, ...)",
+                         columns.names().size()));
+  }
   // Per step, the driver asks for the solver of the storage the step needs.
   const bool definite = !plan->has_multipliers;
   const SolverFactory solvers = [&](bool symmetric) -> std::unique_ptr<LinearSolver> {
@@ -209,6 +226,9 @@ int run_deck(const RunCommandOptions& options) {
   Progress progress = Progress::for_stderr(options.quiet || !writer);
   HistoryRecorder history(columns, table, system);
   RunOutputs outputs(history, status, log, progress);
+  std::vector<std::string> step_names;
+  for (const Step& step : model.history.steps) step_names.push_back(step.name.display);
+  outputs.set_step_names(std::move(step_names));
   ConnectorStepProblem step_problem(model, system);
   const RunResult result = run_analysis(model, system, step_problem, solvers, outputs,
                                         RunOptions{options.check_tangent,

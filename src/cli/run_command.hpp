@@ -1,4 +1,4 @@
-// `clinch run DECK.inp [--out DIR] [--job NAME]` (cli-contract.md): read and validate the deck,
+// `clinch run DECK.inp [--out DIR] [--job NAME] [--labels clinch|abaqus]` (cli-contract.md): read and validate the deck,
 // build the analysis plan, run every step, and write <job>.history.csv, <job>.sta and <job>.log.
 // Exit 0 completed, 1 deck errors (nothing run), 2 stopped early, 3 usage or I/O error.
 #pragma once
@@ -7,6 +7,7 @@
 #include <string>
 
 #include "src/linalg/linear_solver.hpp"
+#include "src/output/abaqus_labels.hpp"
 
 namespace clinch {
 
@@ -17,6 +18,7 @@ struct RunCommandOptions {
   bool quiet = false;
   bool check_tangent = false;
   SolverChoice solver = SolverChoice::Automatic;
+  LabelStyle labels = LabelStyle::Clinch;  // --labels: how the history columns are named
 };
 
 int run_deck(const RunCommandOptions& options);

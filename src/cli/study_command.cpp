@@ -249,7 +249,9 @@ int run_study(const StudyOptions& options) {
       if (s.run >= 0) scales.push_back(s.scale);
     }
     for (const CsvTable& t : tables) pointers.push_back(&t);
-    result.estimate = estimate_errors(pointers, scales, options.ratio, names, &error);
+    // Columns the user chose with --columns are estimated even when they are zero to round-off.
+    result.estimate =
+        estimate_errors(pointers, scales, options.ratio, names, pattern != nullptr, &error);
     if (!result.estimate) {
       std::cerr << fmt::format("clinch: error: {}\n", error);
       return kExitUsage;

@@ -205,6 +205,9 @@ struct ConnectorBehavior {
   // False for a behaviour whose NAME was a duplicate or invalid: it holds the sub-options of its
   // block so that they are still checked, but no section can refer to it.
   bool referable = true;
+  // A misspelt keyword stood among its sub-options: what that option would have defined is
+  // missing, so outputs that only it could produce are not reported "always 0" (a follow-up).
+  bool misspelt_option = false;
 
   // Owners in deck order; the last one receives the next potential.
   std::vector<PotentialOwner> potential_owners;

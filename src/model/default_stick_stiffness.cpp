@@ -1,6 +1,10 @@
 #include "src/model/default_stick_stiffness.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <utility>
+#include <vector>
 
 namespace clinch {
 namespace {
@@ -37,6 +41,50 @@ DefaultStickStiffness default_stick_stiffness(const ConnectorBehavior& behavior)
     }
   }
   return out;
+}
+
+std::string describe_stick_stiffness(const DefaultStickStiffness& stiffness, ComponentMask j) {
+  std::vector<std::pair<double, std::string>> groups;
+  for (int c = 1; c <= 6; ++c) {
+    if (!has_component(j, c)) continue;
+    const double value = stiffness.value[static_cast<std::size_t>(c - 1)];
+    auto it = std::find_if(groups.begin(), groups.end(),
+                           [&](const auto& g) { return g.first == value; });
+    if (it == groups.end()) {
+      groups.push_back({value, std::to_string(c)});
+    } else {
+      it->second += ", " + std::to_string(c);
+    }
+  }
+  std::string values;
+  for (const auto& [value, components] : groups) {
+    if (!values.empty()) values += "; ";
+    values += fmt::format("{:.6g} for component{} {}", value,
+                          components.find(',') == std::string::npos ? "" : "s", components);
+  }
+  return values;
+}
+
+std::optional<std::string> default_stick_stiffness_summary(const BehaviorModel& model) {
+  // A large model may have many behaviours: the first few name the values, a count the rest.
+  constexpr int kListed = 4;
+  std::string listed;
+  int count = 0;
+  for (const ConnectorBehavior& b : model.behaviors) {
+    for (const FrictionDefinition& f : b.frictions) {
+      if (f.stick_stiffness || f.friction_components == 0) continue;
+      if (++count > kListed) continue;
+      listed += fmt::format("{}behavior '{}': {}", listed.empty() ? "" : "; ", b.name.display,
+                            describe_stick_stiffness(default_stick_stiffness(b),
+                                                     f.friction_components));
+    }
+  }
+  if (count == 0) return std::nullopt;
+  return fmt::format(
+      "friction: STICK STIFFNESS omitted in {} *CONNECTOR FRICTION definition{}, so the stick "
+      "stiffness is 1000 times the connector's elastic stiffness (friction.md §5): {}{}",
+      count, count == 1 ? "" : "s", listed,
+      count > kListed ? fmt::format("; and {} more", count - kListed) : "");
 }
 
 }  // namespace clinch

@@ -22,7 +22,30 @@ namespace clinch {
 
 // ---- *AMPLITUDE (keywords.md §8) --------------------------------------------------------------
 
-enum class AmplitudeDefinition : std::uint8_t { Tabular, SmoothStep, EquallySpaced };
+enum class AmplitudeDefinition : std::uint8_t {
+  Tabular,
+  SmoothStep,
+  EquallySpaced,
+  Periodic,   // A0 + Σ [Aₙ cos nω(t − t0) + Bₙ sin nω(t − t0)] for t ≥ t0
+  Modulated,  // A0 + A sin ω1(t − t0) sin ω2(t − t0) for t > t0
+  Decay,      // A0 + A exp(−(t − t0)/td) for t ≥ t0
+};
+
+inline bool is_formula(AmplitudeDefinition d) {
+  return d == AmplitudeDefinition::Periodic || d == AmplitudeDefinition::Modulated ||
+         d == AmplitudeDefinition::Decay;
+}
+
+// The constants of an amplitude given by a formula (PERIODIC, MODULATED, DECAY); A0 before t0.
+struct AmplitudeFormula {
+  double start_time = 0;  // t0
+  double initial = 0;     // A0
+  double magnitude = 0;   // A (MODULATED, DECAY)
+  double omega = 0;       // ω (PERIODIC), ω1 (MODULATED)
+  double omega2 = 0;      // ω2 (MODULATED)
+  double decay_time = 0;  // td (DECAY)
+  std::vector<double> cosines, sines;  // Aₙ, Bₙ, n = 1…N (PERIODIC)
+};
 
 struct Amplitude {
   Name name;
@@ -34,8 +57,10 @@ struct Amplitude {
   double begin = 0;
   double scale_x = 1, scale_y = 1, shift_x = 0, shift_y = 0;
   // Points after SCALEX/SCALEY/SHIFTX/SHIFTY (and, for EQUALLY SPACED, after generating the
-  // times), in data order.
+  // times), in data order. Empty for a formula.
   std::vector<double> times, values;
+  // PERIODIC, MODULATED, DECAY: the constants after SCALEX/SCALEY/SHIFTX/SHIFTY.
+  AmplitudeFormula formula;
   std::int32_t step = -1;  // step it was defined in (−1: model data)
   bool valid = true;       // the data were read without error
   bool used = false;       // referenced by a condition or load (W0501 otherwise), set by validation

@@ -73,10 +73,7 @@ bool is_coupled_form(std::string_view v) {
 
 // Rotational aliases accepted in requests (output-variables.md §1.1: c for CTM/CEM/CNM/CDMGR/
 // CDIFR, b for the rest): the alias with n means component n + 3 of the canonical variable.
-struct Alias {
-  std::string_view alias, canonical;
-};
-constexpr std::array<Alias, 19> kRotationAliases{{
+constexpr std::array<OutputAlias, 19> kRotationAliases{{
     {"CTM", "CTF"},         {"CEM", "CEF"},    {"CVM", "CVF"},    {"CSM", "CSF"},
     {"CRM", "CRF"},         {"CCM", "CCF"},    {"CNM", "CNF"},    {"CUR", "CU"},
     {"CCUR", "CCU"},        {"CPR", "CP"},     {"CURE", "CUE"},   {"CURP", "CUP"},
@@ -288,6 +285,8 @@ IdentifierParse parse_output_identifier(std::string_view text, OutputContext con
   }
   return result;
 }
+
+std::span<const OutputAlias> rotation_aliases() { return kRotationAliases; }
 
 const OutputVariableInfo* output_variable_info(std::string_view canonical) {
   return find_in(canonical);

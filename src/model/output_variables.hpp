@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -58,6 +59,13 @@ IdentifierParse parse_output_identifier(std::string_view text, OutputContext con
 
 // Info of a canonical variable, or nullptr.
 const OutputVariableInfo* output_variable_info(std::string_view canonical);
+
+// Abaqus's separate letters for rotational components (output-variables.md §1.1): `alias` n is
+// component n + 3 of `canonical` (CTM1 ≡ CTF4, CUR3 ≡ CU6).
+struct OutputAlias {
+  std::string_view alias, canonical;
+};
+std::span<const OutputAlias> rotation_aliases();
 
 // Column label of component `component` (0 for a scalar) of canonical variable `variable`:
 // "CTF4", "UR2", "RM1", "S11", "CDMG", "CDERF-normal" (`derived_display` for CDERF/CDERU).

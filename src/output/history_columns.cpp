@@ -148,6 +148,16 @@ std::vector<HistoryColumns::Request> HistoryColumns::expand_step(
       const Element& eb = model_.elements[static_cast<std::size_t>(b)];
       return std::tie(ea.instance, ea.label) < std::tie(eb.instance, eb.label);
     });
+    // Elements a *CONNECTOR MOTION drives in some step: their reaction (CRF) is the force of the
+    // actuator, which the total force CTF no longer shows (output-variables.md §4).
+    std::vector<bool> driven(model_.elements.size(), false);
+    auto mark_driven = [&](const std::vector<ConnectorCondition>& motions) {
+      for (const ConnectorCondition& m : motions) {
+        for (std::int32_t e : m.resolved) driven[static_cast<std::size_t>(e)] = true;
+      }
+    };
+    mark_driven(model_.history.model_motions);
+    for (const Step& step : model_.history.steps) mark_driven(step.motions);
     // Per behaviour, once: its features (connectors share a few behaviours).
     std::vector<std::optional<BehaviorFeatures>> features_of(model_.behaviors.behaviors.size());
     std::vector<const char*> variables;
@@ -173,6 +183,7 @@ std::vector<HistoryColumns::Request> HistoryColumns::expand_step(
       bool stops = !r.locks.empty();
       stops |= r.stops != nullptr;
       if (stops) variables.insert(variables.end(), {"CRF", "CSLST"});
+      else if (driven[static_cast<std::size_t>(e)]) variables.push_back("CRF");
       if (features.friction) variables.insert(variables.end(), {"CSF", "CNF", "CASU"});
       if (features.kinematic_hardening) variables.push_back("CALPHAF");
       for (const char* v : variables) {

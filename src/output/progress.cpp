@@ -14,9 +14,10 @@ Progress Progress::for_stderr(bool quiet) {
   return Progress(!quiet && terminal ? &std::cerr : nullptr);
 }
 
-void Progress::update(int step, int increment, double total_time) {
+void Progress::update(int step, int increment, double total_time, std::string_view step_name) {
   if (out_ == nullptr) return;
-  draw(fmt::format("step {}  increment {}  time {:.6g}", step, increment, total_time));
+  const std::string name = step_name.empty() ? std::string() : fmt::format(" ({})", step_name);
+  draw(fmt::format("step {}{}  increment {}  time {:.6g}", step, name, increment, total_time));
 }
 
 void Progress::show(std::string_view text) {

@@ -26,7 +26,8 @@ class Progress {
 
   bool enabled() const { return out_ != nullptr; }
 
-  void update(int step, int increment, double total_time);
+  // `step_name`: the step's NAME= (or Step-<n>), shown after its number when not empty.
+  void update(int step, int increment, double total_time, std::string_view step_name = {});
   // Shows a free-form progress line.
   void show(std::string_view text);
   // Erases the progress line, e.g. before a message is printed on the same stream; the next

@@ -4,13 +4,24 @@
 
 namespace clinch {
 
+void RunOutputs::begin_step(std::size_t step) {
+  history_.begin_step(step);
+  if (step >= step_names_.size()) return;
+  const int number = static_cast<int>(step) + 1;
+  status_.write_step(number, step_names_[step]);
+  progress_.clear();
+  log_.info(fmt::format("step {}: {}", number, step_names_[step]));
+}
+
 void RunOutputs::increment_converged(const IncrementAttempt& attempt, bool last_of_step) {
   history_.converged(attempt.step, attempt.increment, attempt.step_time, attempt.total_time,
                      last_of_step);
   if (failed_file() != nullptr) return;
   status_.write_attempt(attempt);
   if (failed_file() != nullptr) return;
-  progress_.update(attempt.step, attempt.increment, attempt.total_time);
+  const auto step = static_cast<std::size_t>(attempt.step - 1);
+  progress_.update(attempt.step, attempt.increment, attempt.total_time,
+                   step < step_names_.size() ? std::string_view(step_names_[step]) : "");
 }
 
 bool RunOutputs::completed() {

@@ -8,6 +8,8 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "src/output/history_recorder.hpp"
 #include "src/output/progress.hpp"
@@ -21,7 +23,12 @@ class RunOutputs {
   RunOutputs(HistoryRecorder& history, StatusFile& status, RunLog& log, Progress& progress)
       : history_(history), status_(status), log_(log), progress_(progress) {}
 
-  void begin_step(std::size_t step) { history_.begin_step(step); }
+  // The steps' names (NAME= or Step-<n>), in deck order: the .sta, the log and the progress line
+  // name each step with them.
+  void set_step_names(std::vector<std::string> names) { step_names_ = std::move(names); }
+
+  // Step `step` (0-based) begins: its requests become current, its name goes to the .sta and log.
+  void begin_step(std::size_t step);
   // Row 0: the initial state, before any condition applies (output-variables.md §1.4).
   void initial_state() { history_.converged(1, 0, 0.0, 0.0, false); }
   // An attempt that failed, that a law abandoned, or that is solved again: its status line.
@@ -49,6 +56,7 @@ class RunOutputs {
   StatusFile& status_;
   RunLog& log_;
   Progress& progress_;
+  std::vector<std::string> step_names_;
 };
 
 }  // namespace clinch

@@ -30,6 +30,10 @@ bool StatusFile::write_attempt(const IncrementAttempt& a) {
                          a.time_increment));
 }
 
+bool StatusFile::write_step(int step, std::string_view name) {
+  return write_line(fmt::format("STEP {}: {}", step, name));
+}
+
 bool StatusFile::write_completed() { return write_line("COMPLETED"); }
 
 bool StatusFile::write_failed(std::string_view reason, int step, int increment, double total_time) {

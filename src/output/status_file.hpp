@@ -30,6 +30,9 @@ class StatusFile {
 
   // Each returns false when the line could not be written whole; file().error() says why.
   bool write_attempt(const IncrementAttempt& attempt);
+  // `STEP <n>: <name>` before the first attempt of step n (docs/study-and-report.md, "Step
+  // names"): not an attempt line, so readers that take lines of numbers pass over it.
+  bool write_step(int step, std::string_view name);
   bool write_completed();
   // `FAILED: <reason> (step S, increment I, time T)`.
   bool write_failed(std::string_view reason, int step, int increment, double total_time);

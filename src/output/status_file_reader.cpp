@@ -33,6 +33,17 @@ std::optional<StatusRecord> read_status_file(const std::string& path, std::strin
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {
     if (number == 1) continue;  // header
+    if (line.rfind("STEP ", 0) == 0) {
+      const std::size_t colon = line.find(": ");
+      try {
+        if (colon == std::string::npos) throw std::invalid_argument("no name");
+        record.step_names[std::stoi(line.substr(5, colon - 5))] = line.substr(colon + 2);
+      } catch (const std::exception&) {
+        *error = fmt::format("{}:{}: not a step line: '{}'", path, number, line);
+        return std::nullopt;
+      }
+      continue;
+    }
     if (line.rfind("COMPLETED", 0) == 0 || line.rfind("FAILED", 0) == 0) {
       record.ending = line;
       continue;

@@ -3,6 +3,7 @@
 // and `clinch report` (cutbacks marked on the plots).
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@ namespace clinch {
 
 struct StatusRecord {
   std::vector<IncrementAttempt> attempts;
+  std::map<int, std::string> step_names;  // from the `STEP <n>: <name>` lines
   std::string ending;  // "COMPLETED", "FAILED: ..." or "" when the run ended without one
 
   int converged_increments() const;

@@ -5,10 +5,12 @@
 #include <iterator>
 #include <limits>
 #include <set>
+#include <unordered_map>
 
 #include <fmt/format.h>
 #include <re2/re2.h>
 
+#include "src/output/abaqus_labels.hpp"
 #include "src/output/history_table.hpp"
 
 namespace clinch {
@@ -214,8 +216,18 @@ std::optional<TableComparison> compare_tables(const CsvTable& result, const CsvT
   matches.reserve(golden_times.size());
   for (double t : golden_times) matches.push_back(match_time(result_times, t, time_tol));
 
+  // A golden column is found in the result by its name, else by the same column in the other
+  // naming (CTM1@7 in one table, CTF4@7 in the other: output-variables.md §1.1).
+  std::unordered_map<std::string, std::size_t> result_by_canonical;
+  for (std::size_t i = 0; i < result.columns.size(); ++i) {
+    result_by_canonical.emplace(canonical_column_name(result.columns[i]), i);
+  }
   for (const std::string& name : names) {
-    const std::optional<std::size_t> in_result = result.column_index(name);
+    std::optional<std::size_t> in_result = result.column_index(name);
+    if (!in_result) {
+      const auto it = result_by_canonical.find(canonical_column_name(name));
+      if (it != result_by_canonical.end()) in_result = it->second;
+    }
     if (!in_result) {
       ColumnComparison missing;
       missing.name = name;
@@ -226,6 +238,9 @@ std::optional<TableComparison> compare_tables(const CsvTable& result, const CsvT
     comparison.columns.push_back(compare_column(name, column_values(result, *in_result),
                                                 column_values(golden, *golden.column_index(name)),
                                                 matches, golden_times, options));
+    if (result.columns[*in_result] != name) {
+      comparison.columns.back().result_name = result.columns[*in_result];
+    }
   }
   return comparison;
 }
@@ -261,6 +276,7 @@ std::string render_comparison(const TableComparison& comparison, const CompareOp
       fmt::format_to(line, "  (golden rows outside the result's times: {}, the first at {})",
                      c.out_of_range_rows, c.first_out_of_range_time);
     }
+    if (!c.result_name.empty()) fmt::format_to(line, "  (the result's {})", c.result_name);
     out += '\n';
   }
   for (const std::string& problem : comparison.problems) {

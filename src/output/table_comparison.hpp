@@ -41,6 +41,7 @@ enum class ColumnVerdict { Pass, Fail, Missing };
 
 struct ColumnComparison {
   std::string name;
+  std::string result_name;  // the result's column when it is named the other way (CTF4@7)
   ColumnVerdict verdict = ColumnVerdict::Pass;
   std::size_t failed_rows = 0;
   std::size_t compared_rows = 0;  // golden rows inside the result's time range

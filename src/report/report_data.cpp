@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "src/output/abaqus_labels.hpp"
+
 namespace clinch {
 namespace {
 
@@ -20,7 +22,21 @@ nlohmann::json table_json(const CsvTable& table) {
     for (double v : row) values.push_back(number(v));
     rows.push_back(std::move(values));
   }
-  return {{"path", table.path}, {"columns", table.columns}, {"rows", std::move(rows)}};
+  nlohmann::json labels = nlohmann::json::array();
+  for (const std::string& name : table.columns) {
+    const ColumnDescription d = describe_column(name);
+    labels.push_back({{"variable", d.variable},
+                      {"component", d.component},
+                      {"derived", d.derived},
+                      {"where", d.where},
+                      {"abaqus", d.abaqus_name},
+                      {"meaning", d.meaning},
+                      {"quantity", quantity_name(d.quantity)}});
+  }
+  return {{"path", table.path},
+          {"columns", table.columns},
+          {"labels", std::move(labels)},
+          {"rows", std::move(rows)}};
 }
 
 const char* verdict_text(ColumnVerdict verdict) {
@@ -42,6 +58,9 @@ nlohmann::json report_data(const ReportInputs& in) {
   data["job"] = in.job;
   data["max_connectors"] = in.max_connectors;
   data["history"] = table_json(*in.history);
+  data["choice"] = {{"elements", in.elements},
+                    {"components", in.components},
+                    {"variables", in.variables}};
   nlohmann::json attempts = nlohmann::json::array();
   if (in.status != nullptr) {
     for (const IncrementAttempt& a : in.status->attempts) {
@@ -54,6 +73,9 @@ nlohmann::json report_data(const ReportInputs& in) {
                           {"time_increment", number(a.time_increment)}});
     }
     data["ending"] = in.status->ending;
+    nlohmann::json names = nlohmann::json::object();
+    for (const auto& [step, name] : in.status->step_names) names[std::to_string(step)] = name;
+    data["step_names"] = std::move(names);
   }
   data["attempts"] = attempts;
   nlohmann::json iterations = nlohmann::json::array();

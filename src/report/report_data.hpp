@@ -26,9 +26,14 @@ struct ReportInputs {
   const TableComparison* comparison = nullptr;  // with golden
   CompareOptions compare_options;
   std::optional<std::string> study_csv;
-  int max_connectors = 0;  // connectors (and nodes) drawn, in history order
+  int max_connectors = 0;  // connectors (and nodes) drawn when none is chosen
+  // --elements, --components, --variables: what the user chose to see (empty: the default).
+  std::vector<std::string> elements, variables;
+  std::vector<int> components;
 };
 
+// Every history column is described (src/output/abaqus_labels.hpp: its Abaqus name, meaning and
+// quantity), so that the page names columns as Abaqus/Viewer does without a table of its own.
 // Numbers that are not finite are the strings "nan", "inf" and "-inf".
 nlohmann::json report_data(const ReportInputs& inputs);
 

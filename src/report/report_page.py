@@ -2,9 +2,9 @@
 matplotlib, no script, style or font fetched from anywhere) from the JSON document that
 `clinch report` writes (src/report/report_data.cpp).
 
-Sections: per connector, force-motion curves per component (CTF against CU, and against the
-elastic and plastic motions CUE and CUP where the run has them) and time histories; per node,
-time histories; the Newton convergence of every increment attempt (residual and correction
+Sections: per connector, the parts of each component's force (CEF, CVF, CSF, -CRF, CTF) against
+its motion, the components that carry nothing listed instead, and time histories with a panel per
+quantity and the step names; per node, time histories; the Newton convergence of every increment attempt (residual and correction
 norms, log scale) with cutbacks marked; per golden column, the result over the golden values
 with the tolerance band of `clinch compare` and the worst deviation marked; the work-precision
 plot of a study.
@@ -17,7 +17,6 @@ import io
 import json
 import math
 import os
-import re
 import sys
 
 try:
@@ -36,48 +35,41 @@ from work_precision_plot import plain  # noqa: E402
 matplotlib.rcParams["svg.fonttype"] = "none"
 
 KEYS = ("step", "increment", "step_time", "total_time")
-NODE_VARIABLES = ("U", "UR", "RF", "RM")
-# output-variables.md: what each identifier is.
-MEANING = {
-    "CTF": "total force", "CEF": "elastic force", "CVF": "viscous force",
-    "CRF": "constraint force", "CSF": "friction force", "CNF": "friction contact force",
-    "CCF": "concentrated force", "CU": "relative motion", "CUE": "elastic motion",
-    "CUP": "plastic motion", "CP": "position", "CUPEQ": "equivalent plastic motion",
-    "CUPEQC": "equivalent plastic motion (component)", "CALPHAF": "back force",
-    "CSLST": "stop/lock status", "CASU": "accumulated slip", "CSLIPST": "stick/slip status",
-    "CSFC": "friction force (potential)", "CNFC": "friction contact force (potential)",
-    "CASUC": "accumulated slip (potential)", "CDERF": "derived force",
-    "CDERU": "derived motion", "CDMG": "damage", "U": "displacement", "UR": "rotation",
-    "RF": "reaction force", "RM": "reaction moment",
-}
-MOTIONS = ("CU", "CUE", "CUP", "CP", "CASU")
-COLUMN = re.compile(r"^([A-Z]+?)([1-6]?)(-[^@]*)?@(.+)$")
+# A column whose largest |value| is at most this fraction of the largest of its quantity in the
+# model (force, moment, displacement, rotation) is zero to round-off: below the default rtol of
+# `clinch compare` (1e-6), so compare could not tell it from zero either. Such columns (the total
+# force of a driven component, the constraint residual of a HINGE) are listed, not plotted.
+NEGLIGIBLE = 1e-6
+# The parts of a component's force (output-variables.md §2), in the order they are drawn
+# against its motion, with what each is. CRF is drawn with its sign turned: -CRF is the force
+# that the motion's actuator (or the constraint) applies, which the other parts balance.
+PARTS = (("CEF", "elastic"), ("CVF", "damping"), ("CSF", "friction"),
+         ("CRF", "actuator or reaction, sign turned"), ("CTF", "total"))
+PANELS = (("force", "forces"), ("moment", "moments"), ("displacement", "displacements"),
+          ("rotation", "rotations"), ("ratio", "damage and criteria"), ("status", "status codes"))
 
 
 class Column:
-    def __init__(self, name, index):
+    """A history column with its description from clinch (src/output/abaqus_labels.hpp)."""
+
+    def __init__(self, name, index, label):
         self.name, self.index = name, index
-        m = COLUMN.match(name)
-        self.variable, self.component, self.derived, self.where = (
-            (m.group(1), int(m.group(2)) if m.group(2) else 0, m.group(3) or "", m.group(4))
-            if m else (name, 0, "", ""))
+        self.variable, self.component = label["variable"], label["component"]
+        self.derived, self.where = label["derived"], label["where"]
+        self.display, self.meaning = label["abaqus"], label["meaning"]
+        self.quantity = label["quantity"]
+        self.peak = 0.0
 
     @property
     def is_node(self):
-        return self.variable in NODE_VARIABLES
+        return self.variable in ("U", "RF", "CF")
 
     def unit(self):
-        """The unit clinch fixes (rotations in radians, cli-contract/README conventions); the
-        deck itself states no units."""
-        angular = (self.variable in MOTIONS and self.component >= 4) or self.variable == "UR"
-        return " [rad]" if angular else ""
+        """Rotations are in radians (output-variables.md §1.3); the deck states no other unit."""
+        return " [rad]" if self.quantity == "rotation" else ""
 
     def label(self):
-        what = MEANING.get(self.variable, self.variable)
-        if self.variable in ("CTF", "CEF", "CVF", "CRF", "CSF") and self.component >= 4:
-            what = what.replace("force", "moment")
-        part = f", component {self.component}" if self.component else ""
-        return plain(f"{self.name}: {what}{self.derived}{part}{self.unit()}")
+        return plain(f"{self.display}: {self.meaning}{self.unit()}")
 
 
 class Page:
@@ -89,7 +81,7 @@ class Page:
     def add(self, html_text):
         self.parts.append(html_text)
 
-    def figure(self, fig, kind, caption, **data):
+    def figure(self, fig, kind, caption, css="", **data):
         self.count += 1
         if self.progress:
             sys.stderr.write(f"\rreport: drawing plot {self.count} ({kind})".ljust(50))
@@ -101,7 +93,7 @@ class Page:
         svg = svg[svg.index("<svg"):]  # drop the XML declaration and DOCTYPE
         attributes = "".join(f' data-{k.replace("_", "-")}="{html.escape(str(v))}"'
                              for k, v in data.items())
-        self.add(f'<figure class="plot" data-kind="{kind}"{attributes}>{svg}'
+        self.add(f'<figure class="plot {css}" data-kind="{kind}"{attributes}>{svg}'
                  f"<figcaption>{html.escape(caption)}</figcaption></figure>")
 
 
@@ -110,73 +102,150 @@ def series(history, column):
     return t, [row[column.index] for row in history["rows"]]
 
 
-def step_ends(history):
-    """Total times at which a step ends (the last row of each step but the last)."""
-    rows, ends = history["rows"], []
+def finite_peak(values):
+    return max((abs(v) for v in values if v == v and abs(v) != math.inf), default=0.0)
+
+
+def step_marks(history, names):
+    """(total time, name) of each step's start after the first, and the first step's name."""
+    rows, marks = history["rows"], []
+    first = names.get(str(int(rows[0][0])), f"step {int(rows[0][0])}") if rows else ""
     for a, b in zip(rows, rows[1:]):
         if b[0] != a[0]:
-            ends.append(a[history["time"]])
-    return ends
+            marks.append((a[history["time"]], names.get(str(int(b[0])), f"step {int(b[0])}")))
+    return first, marks
 
 
-def force_motion(page, history, where, columns):
-    by_name = {(c.variable, c.component): c for c in columns}
-    for component in range(1, 7):
-        force = by_name.get(("CTF", component))
-        motion = by_name.get(("CU", component))
-        if force is None or motion is None:
+def mark_steps(ax, history, names, top):
+    """Grey lines where steps end, each step's name at its start (on the top panel only)."""
+    first, marks = step_marks(history, names)
+    for t_end, _ in marks:
+        ax.axvline(t_end, color="0.6", linewidth=0.8, linestyle="--")
+    if top:
+        transform = ax.get_xaxis_transform()
+        starts = [(history["rows"][0][history["time"]], first)] + marks if history["rows"] else []
+        for t, name in starts:
+            ax.text(t, 1.02, plain(f" {name}"), transform=transform, fontsize=8, color="0.3",
+                    va="bottom", ha="left", gid=f"step-name-{name}")
+
+
+def negligible(column, scales):
+    return column.peak <= NEGLIGIBLE * scales.get(column.quantity, 0.0)
+
+
+def force_motion(page, history, where, by_key, scales, choice):
+    """One plot per component that moves and carries force: each part of its force against its
+    motion. Returns the components left out, with why."""
+    left_out = []
+    for component in choice["components"] or range(1, 7):
+        motion = by_key.get(("CU", component))
+        parts = [(by_key.get((v, component)), v, what) for v, what in PARTS]
+        parts = [(c, v, what) for c, v, what in parts if c is not None]
+        if motion is None and not parts:
             continue
-        fig = Figure(figsize=(5.6, 3.8))
+        live = [(c, v, what) for c, v, what in parts if not negligible(c, scales)]
+        quiet = [c for c, _, _ in parts if negligible(c, scales)]
+        moves = motion is not None and not negligible(motion, scales)
+        if not moves or not live:
+            if motion is None:
+                why = "no motion column"
+            elif not moves and live:
+                why = (f"does not move ({motion.display} is zero to round-off): constrained; "
+                       + ", ".join(f"{c.display} up to {c.peak:.3g}" for c, _, _ in live))
+            elif moves:
+                why = f"moves ({motion.display} up to {motion.peak:.3g}) but carries no force"
+            else:
+                why = "carries nothing: every column zero to round-off"
+            left_out.append((component, why))
+            continue
+        fig = Figure(figsize=(4.6, 3.6))
         ax = fig.add_subplot()
-        _, f = series(history, force)
-        for variable, style, name in (("CU", "-", "total"), ("CUE", "--", "elastic part"),
-                                      ("CUP", ":", "plastic part")):
-            c = by_name.get((variable, component))
-            if c is None:
-                continue
-            _, u = series(history, c)
-            ax.plot(u, f, style, marker="." if variable == "CU" else None,
-                    label=f"{c.variable}{component} ({name})", gid=f"curve-{variable}")
-        ax.set_xlabel(motion.label())
-        ax.set_ylabel(force.label())
-        ax.set_title(plain(f"connector {where}: force against motion, component {component}"),
-                     fontsize=10)
+        _, u = series(history, motion)
+        names = []
+        for c, variable, what in live:
+            _, f = series(history, c)
+            if variable == "CRF":
+                f = [-x for x in f]
+                name = f"-{c.display.split('@')[0]} ({what})"
+            else:
+                name = f"{c.display.split('@')[0]} ({what})"
+            names.append(name)
+            ax.plot(u, f, "-", marker="." if variable == "CTF" else None, markersize=3,
+                    label=plain(name), gid=f"curve-{variable}")
+        quantity = live[0][0].quantity
+        ax.set_xlabel(motion.label(), fontsize=8)
+        ax.set_ylabel(quantity, fontsize=8)
+        ax.set_title(plain(f"connector {where}: {quantity}s against "
+                           f"{motion.display.split('@')[0]}"), fontsize=9)
         ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=8)
+        ax.legend(fontsize=7)
         fig.tight_layout()
-        page.figure(fig, "force-motion", f"Connector {where}, component {component}: "
-                    f"{force.name} against {motion.name} (one point per history row)",
-                    connector=where, component=component)
+        caption = (f"Connector {where}, component {component}: "
+                   + ", ".join(names) + f" against {motion.display} ({motion.meaning})")
+        if quiet:
+            caption += ("; zero to round-off, not drawn: "
+                        + ", ".join(f"{c.display} (largest {c.peak:.2g})" for c in quiet))
+        page.figure(fig, "force-motion", caption, connector=where, component=component,
+                    curves=" ".join(v for _, v, _ in live))
+    return left_out
 
 
-def time_histories(page, history, where, columns, kind):
-    families = []
-    for c in columns:
-        key = c.variable + c.derived
-        if key not in [f[0] for f in families]:
-            families.append((key, []))
-        next(f for f in families if f[0] == key)[1].append(c)
-    fig = Figure(figsize=(6.4, 1.0 + 1.9 * len(families)))
-    axes = fig.subplots(len(families), 1, sharex=True, squeeze=False)[:, 0]
-    ends = step_ends(history)
-    for ax, (key, members) in zip(axes, families):
+def time_histories(page, history, where, columns, kind, scales, names):
+    """One plot of the connector's (node's) columns against total time, a panel per quantity,
+    so that forces and moments, displacements and rotations each have their own axis."""
+    live = [c for c in columns if not negligible(c, scales) or c.quantity in ("ratio", "status")]
+    quiet = [c for c in columns if c not in live]
+    panels = [(q, title, [c for c in live if c.quantity == q]) for q, title in PANELS]
+    panels = [p for p in panels if p[2]]
+    what = "connector" if kind == "connector" else "node"
+    if not panels:
+        return quiet
+    fig = Figure(figsize=(13.0, 0.9 + 2.0 * len(panels)))
+    axes = fig.subplots(len(panels), 1, sharex=True, squeeze=False)[:, 0]
+    for i, (ax, (quantity, title, members)) in enumerate(zip(axes, panels)):
         for c in members:
             t, v = series(history, c)
-            ax.plot(t, v, label=plain(c.name), gid=f"history-{c.name}")
-        for t_end in ends:
-            ax.axvline(t_end, color="0.7", linewidth=0.8)
-        variable = members[0].variable
-        ax.set_ylabel(plain(f"{key}{members[0].unit()}"), fontsize=9)
-        ax.set_title(plain(MEANING.get(variable, variable)), fontsize=9)
+            ax.plot(t, v, label=plain(f"{c.display.split('@')[0]}: {c.meaning}"),
+                    gid=f"history-{c.name}")
+        mark_steps(ax, history, names, top=i == 0)
+        ax.set_ylabel(plain(f"{quantity}{members[0].unit()}"), fontsize=9)
         ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=7, loc="best")
-    axes[-1].set_xlabel("total time")
-    what = "connector" if kind == "connector" else "node"
-    axes[0].set_title(plain(f"{what} {where}: ") + axes[0].get_title(), fontsize=9)
+        ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.005, 0.5))
+    axes[-1].set_xlabel("total time (dashed lines: step ends; step names at the top)")
+    fig.suptitle(plain(f"{what} {where}: " + ", ".join(t for _, t, _ in panels)
+                       + " against total time"), fontsize=10)
     fig.tight_layout()
-    page.figure(fig, f"history-{kind}", f"{what.capitalize()} {where}: "
-                + ", ".join(c.name for c in columns) + " against total time (grey lines: step "
-                "ends)", where=where, panels=len(families))
+    caption = f"{what.capitalize()} {where}: " + ", ".join(c.display for c in live)
+    if quiet:
+        caption += "; zero to round-off, not drawn: " + ", ".join(c.display for c in quiet)
+    page.figure(fig, f"history-{kind}", caption, where=where, panels=len(panels),
+                css="wide")
+    return quiet
+
+
+def choose(group, limit, choice, kind):
+    """The connectors (nodes) to draw and a sentence that says how they were chosen."""
+    if choice["elements"]:
+        chosen = [w for w in choice["elements"] if w in group]
+        return chosen, (f"{len(chosen)} of {len(group)} {kind}s chosen with "
+                        "<code>--elements</code>.")
+    if len(group) <= limit:
+        return list(group), ""
+    if kind == "connector":
+        def load(where):
+            force = [c.peak for c in group[where] if c.quantity == "force"]
+            moment = [c.peak for c in group[where] if c.quantity == "moment"]
+            return (max(force, default=0.0), max(moment, default=0.0))
+        chosen = sorted(group, key=load, reverse=True)[:limit]
+        order = list(group)
+        chosen.sort(key=order.index)
+        return chosen, (f"{len(group)} connectors have history columns; the {limit} most "
+                        "loaded (largest |force| of any force column over the run, then largest "
+                        "|moment|) are drawn (<code>clinch report --connectors N</code> draws "
+                        "more, <code>--elements</code> chooses them).")
+    return list(group)[:limit], (f"{len(group)} {kind}s have history columns; the first {limit} "
+                                 "are drawn (<code>clinch report --connectors N</code> draws "
+                                 "more).")
 
 
 def drawable(norm):
@@ -197,7 +266,7 @@ def convergence(page, data):
         by_attempt.setdefault((r["step"], r["increment"], r["attempt"]), []).append(r)
     keys = [(a["step"], a["increment"], a["attempt"]) for a in attempts] or list(by_attempt)
     cut = {(a["step"], a["increment"], a["attempt"]) for a in attempts if a["cut_back"]}
-    fig = Figure(figsize=(7.2, 3.8))
+    fig = Figure(figsize=(13.0, 3.8))
     ax = fig.add_subplot()
     x, residual, correction, spans, slot = [], [], [], [], 0
     for key in keys:
@@ -236,9 +305,10 @@ def convergence(page, data):
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
-    page.figure(fig, "convergence", "Residual and correction norms of every Newton iteration "
-                "(from the .log); zero and non-finite norms are not drawn; red bands: attempts that were cut "
-                "back (from the .sta)", attempts=len(spans), cutbacks=cutbacks)
+    page.figure(fig, "convergence",
+                "Residual and correction norms of every Newton iteration (from the .log); zero "
+                "and non-finite norms are not drawn; red bands: attempts that were cut back "
+                "(from the .sta)", css="wide", attempts=len(spans), cutbacks=cutbacks)
 
 
 def interpolate(ts, vs, t):
@@ -259,8 +329,12 @@ def golden_overlays(page, history, golden, columns_by_name):
     rtol, atol = golden["rtol"], golden["atol"]
     for comparison in golden["comparison"]:
         name = comparison["name"]
-        column = columns_by_name.get(name)
         gi = golden["columns"].index(name)
+        # The run's column of the same name, or the same column in the other naming (CTM1@7
+        # is CTF4@7: the keys come from clinch's descriptions of both tables).
+        label = golden["labels"][gi]
+        column = columns_by_name.get(
+            (label["variable"], label["component"], label["derived"], label["where"]))
         gt = [row[g_time] for row in golden["rows"]]
         gv = [row[gi] for row in golden["rows"]]
         fig = Figure(figsize=(6.4, 4.6))
@@ -303,7 +377,7 @@ def golden_overlays(page, history, golden, columns_by_name):
                       f"(rtol {rtol:g}, atol {atol:g})", fontsize=9)
         top.grid(True, alpha=0.3)
         top.legend(fontsize=7)
-        bottom.set_ylabel(f"run - golden", fontsize=9)
+        bottom.set_ylabel("run - golden", fontsize=9)
         bottom.set_xlabel("total time")
         bottom.grid(True, alpha=0.3)
         fig.tight_layout()
@@ -347,10 +421,12 @@ def settings_table(settings):
     return f'<table class="study"><tr>{header}</tr>{"".join(rows)}</table>'
 
 
-STYLE = """body{font-family:sans-serif;max-width:1400px;margin:1em auto;color:#222}
-figure.plot{display:inline-block;margin:.5em;vertical-align:top;border:1px solid #ddd;
-padding:.3em;background:#fff}figure.plot svg{display:block;max-width:100%;height:auto}
-figcaption{font-size:.8em;max-width:40em;color:#444}table{border-collapse:collapse}
+STYLE = """body{font-family:sans-serif;margin:1em 1.5em;color:#222}
+figure.plot{display:inline-block;margin:.4em;vertical-align:top;border:1px solid #ddd;
+padding:.3em;background:#fff;width:calc(33% - 1.6em);box-sizing:border-box}
+figure.plot.wide{display:block;width:calc(100% - .8em)}
+figure.plot svg{display:block;width:100%;height:auto}
+figcaption{font-size:.8em;color:#444}table{border-collapse:collapse}
 td,th{border:1px solid #ccc;padding:.2em .6em;text-align:left;font-size:.9em}
 tr.chosen{background:#e3f4e3}"""
 
@@ -392,7 +468,15 @@ def main():
     data = read_data(args[0])
     history = data["history"]
     history["time"] = history["columns"].index("total_time")
-    columns = [Column(n, i) for i, n in enumerate(history["columns"]) if n not in KEYS]
+    labels = history["labels"]
+    columns = [Column(n, i, labels[i]) for i, n in enumerate(history["columns"]) if n not in KEYS]
+    # The scale of each quantity: the largest |value| of any column of it in the model.
+    scales = {}
+    for c in columns:
+        c.peak = finite_peak(series(history, c)[1])
+        scales[c.quantity] = max(scales.get(c.quantity, 0.0), c.peak)
+    choice = data["choice"]
+    step_names = data.get("step_names", {})
     # Progress as `clinch run` shows it: on a terminal only, and not with --quiet.
     page = Page(sys.stderr.isatty() and "--quiet" not in sys.argv)
     attempts = data["attempts"]
@@ -407,21 +491,40 @@ def main():
     ]))
     connectors, nodes = {}, {}
     for c in columns:
+        if choice["variables"] and c.variable not in choice["variables"] and c.variable != "CU":
+            continue
         (nodes if c.is_node else connectors).setdefault(c.where, []).append(c)
     limit = data["max_connectors"]
     for title, group, kind in (("Connectors", connectors, "connector"),
                                ("Nodes", nodes, "node")):
         if not group:
             continue
+        chosen, how = choose(group, limit, choice, kind)
+        if not chosen:
+            continue
         page.add(f"<h2>{title}</h2>")
-        if len(group) > limit:
-            page.add(f"<p>{len(group)} {kind}s have history columns; the first {limit} are drawn "
-                     "(<code>clinch report --connectors N</code> draws more).</p>")
-        for where, members in list(group.items())[:limit]:
+        if how:
+            page.add(f"<p>{how}</p>")
+        for where in chosen:
+            members = group[where]
+            if choice["variables"] and "CU" not in choice["variables"]:
+                shown = [c for c in members if c.variable != "CU"]
+            else:
+                shown = members
+            if choice["components"]:
+                shown = [c for c in shown if c.component in choice["components"]]
+            page.add(f"<h3>{kind} {html.escape(where)}</h3>")
+            left_out = []
             if kind == "connector":
-                page.add(f"<h3>connector {html.escape(where)}</h3>")
-                force_motion(page, history, where, members)
-            time_histories(page, history, where, members, kind)
+                by_key = {(c.variable, c.component): c for c in members}
+                left_out = force_motion(page, history, where, by_key, scales, choice)
+            time_histories(page, history, where, shown, kind, scales, step_names)
+            if left_out:
+                rows = "".join(f"<tr><td>{k}</td><td>{html.escape(why)}</td></tr>"
+                               for k, why in left_out)
+                page.add(f'<table class="left-out" data-connector="{html.escape(where)}">'
+                         "<tr><th>component</th><th>not plotted against its motion: why"
+                         f"</th></tr>{rows}</table>")
     if data["iterations"] or data["attempts"]:
         page.add("<h2>Newton convergence</h2>")
         convergence(page, data)
@@ -434,7 +537,8 @@ def main():
                  + f"; rtol {golden['rtol']:g}, atol {golden['atol']:g}; the band is "
                  "atol + rtol&middot;max(|g|, largest |g| of the column), as "
                  "<code>clinch compare</code>.</p>")
-        golden_overlays(page, history, golden, {c.name: c for c in columns})
+        golden_overlays(page, history, golden, {(c.variable, c.component, c.derived, c.where): c
+                                                for c in columns})
     if study_csv is not None:
         settings = work_precision_plot.read_settings(study_csv)
         page.add(f"<h2>Work precision: {html.escape(data['study_csv'])}</h2>")

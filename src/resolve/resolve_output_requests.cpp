@@ -302,10 +302,16 @@ class OutputValidator {
         features = behavior ? behavior_features(*behavior) : BehaviorFeatures{};
         last_behavior = behavior;
       }
-      if (!produces(features, info->producer)) ++without_producer;
+      // A section whose behaviour was refused or is undefined, or lost an option to a misspelt
+      // keyword, was reported there: its outputs are not "always 0" (input-syntax.md §10).
+      const bool behavior_lost =
+          behavior ? behavior->misspelt_option : !section->behavior.empty();
+      if (!produces(features, info->producer) && !behavior_lost) ++without_producer;
       if (info->producer == OutputProducer::Derived) {
         std::vector<std::string> names = derived_columns(id, behavior, reported_behaviors);
-        if (names.empty() && (id.derived_name.empty() || !behavior)) ++without_producer;
+        if (names.empty() && (id.derived_name.empty() || !behavior) && !behavior_lost) {
+          ++without_producer;
+        }
         for (const std::string& name : names) {
           if (!totals_only) {
             add_target_column(label_id(output_column_label(id.variable, 0, name)), false, e, id,

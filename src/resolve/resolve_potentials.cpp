@@ -68,9 +68,11 @@ struct SectionUse {
 
 enum class PredefinedSupport { Supported, Unsupported, Unavailable };
 
-// friction.md §2.3, connection-types.md §2.4: v1 supports PREDEFINED for SLOT and SLIDE-PLANE
-// alone or with a rotational type that does not make them an assembled type; the assembled types
-// with predefined friction (and their basic-pair equivalents) are v1-reject; the others have none.
+// friction.md §2.3, connection-types.md §2.4: PREDEFINED runs for SLOT and SLIDE-PLANE alone or
+// with a rotational type that does not make them an assembled type. The assembled types with
+// predefined friction (and their basic-pair equivalents) are refused: friction.md marks their
+// contact-force formulas and data-line layouts not confirmed, and the stored manual pages cut off
+// before them (docs/decisions.md, "Friction"). The others have none.
 PredefinedSupport predefined_support(const ConnectorSection& section, ComponentMask* j) {
   std::vector<std::string> keys;
   for (const std::string& n : section.type_names) keys.push_back(type_key(n));
@@ -624,8 +626,12 @@ class BehaviorChecker {
           support == PredefinedSupport::Unsupported
               ? sink_.report(DiagCode::unsupported_option, f.loc,
                              fmt::format("predefined friction for connection type {} is not "
-                                         "supported in this version; define it with COMPONENT= "
-                                         "or *CONNECTOR POTENTIAL and CONTACT FORCE=",
+                                         "supported: the manual text that gives its contact "
+                                         "force and the layout of its geometric data line (pin "
+                                         "radius, lengths) could not be found, and clinch does "
+                                         "not guess them; define it with COMPONENT= or "
+                                         "*CONNECTOR POTENTIAL and CONTACT FORCE= a *CONNECTOR "
+                                         "DERIVED COMPONENT that scales the constraint forces",
                                          s.type))
               : sink_.report(DiagCode::friction_predefined_unavailable, f.loc,
                              fmt::format("connection type {} has no predefined friction; use "
@@ -637,33 +643,17 @@ class BehaviorChecker {
     }
   }
 
-  // friction.md §5: the warning names the stick stiffness the run will use.
+  // friction.md §5: the run log states the default stick stiffness once per run
+  // (default_stick_stiffness_summary); only a value with no elastic stiffness to scale from is
+  // worth a warning, since 1e6 in the model's units may be far off (docs/decisions.md).
   void report_default_stick_stiffness(const FrictionDefinition& f, ComponentMask j) {
     const DefaultStickStiffness stiffness = default_stick_stiffness(b_);
-    const bool fallback = (stiffness.fallback & j) != 0;
-    // Name the value per component; components that share a value are listed together.
-    std::vector<std::pair<double, std::string>> groups;
-    for (int c = 1; c <= 6; ++c) {
-      if (!has_component(j, c)) continue;
-      const double value = stiffness.value[static_cast<std::size_t>(c - 1)];
-      auto it = std::find_if(groups.begin(), groups.end(),
-                             [&](const auto& g) { return g.first == value; });
-      if (it == groups.end()) {
-        groups.push_back({value, std::to_string(c)});
-      } else {
-        it->second += ", " + std::to_string(c);
-      }
-    }
-    std::string values;
-    for (const auto& [value, components] : groups) {
-      if (!values.empty()) values += "; ";
-      values += fmt::format("{:.6g} for component{} {}", value,
-                            components.find(',') == std::string::npos ? "" : "s", components);
-    }
-    if (values.empty()) values = "1000 times the connector elastic stiffness (1e+06 without one)";
+    if ((stiffness.fallback & j) == 0) return;
+    const std::string values = describe_stick_stiffness(stiffness, j);
     sink_.report(DiagCode::friction_default_stick_stiffness, f.loc,
-                 fmt::format("STICK STIFFNESS omitted; using {}{}", values,
-                             fallback ? " (no connector elasticity to scale from)" : ""));
+                 fmt::format("STICK STIFFNESS omitted; using {} (no connector elasticity to "
+                             "scale from)",
+                             values.empty() ? "1e+06" : values));
   }
 
   // --- unused -------------------------------------------------------------------------------

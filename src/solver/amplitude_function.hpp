@@ -1,6 +1,7 @@
 // Evaluation of an *AMPLITUDE (keywords.md §8) at a point of the step: the step driver scales the
 // magnitudes of boundary conditions and loads by it (§13). The reader has already applied the
-// SCALE/SHIFT parameters and generated the times of EQUALLY SPACED data.
+// SCALE/SHIFT parameters (to the points, or to the constants of a formula) and generated the
+// times of EQUALLY SPACED data.
 #pragma once
 
 #include <vector>
@@ -11,7 +12,8 @@ namespace clinch {
 
 class AmplitudeFunction {
  public:
-  // `amplitude` must be valid with at least one point; otherwise std::invalid_argument.
+  // `amplitude` must be valid, with at least one point unless it is a formula; otherwise
+  // std::invalid_argument.
   explicit AmplitudeFunction(const Amplitude& amplitude);
 
   // The value at the amplitude's own time variable (TIME=STEP TIME or TOTAL TIME).
@@ -25,6 +27,9 @@ class AmplitudeFunction {
   AmplitudeDefinition definition_;
   bool total_time_;
   std::vector<double> times_, values_;
+  AmplitudeFormula formula_;
+
+  double formula_value(double t) const;
 };
 
 }  // namespace clinch

@@ -169,6 +169,7 @@ class Driver {
   bool begin_step(const Step& step, const Procedure& procedure, int step_number) {
     controls_ = &step.controls;
     rules_ = procedure.increment_rules();
+    out_.begin_step(static_cast<std::size_t>(step_number - 1));  // its name first in the log
     step_problem_.begin_step(static_cast<std::size_t>(step_number - 1), step.nlgeom);
     if (!choose_storage(step, step_number)) return false;
     warned_.clear();
@@ -188,7 +189,6 @@ class Driver {
       out_.note(step_number, 0, note);
     }
     criteria_.start_step(step.controls);
-    out_.begin_step(static_cast<std::size_t>(step_number - 1));
     step_time_ = 0.0;
     return true;
   }

@@ -4,11 +4,23 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+
+#include "src/output/abaqus_labels.hpp"
 
 namespace clinch {
 namespace {
 
 constexpr std::size_t kKeyColumns = 4;  // step, increment, step_time, total_time
+
+// The kinds whose columns share a scale: forces with moments, displacements with rotations.
+enum class Kind { Load, Motion, Ratio, Own };
+Kind kind_of(const std::string& name) {
+  const Quantity q = column_quantity(name);
+  if (is_force_like(q)) return Kind::Load;
+  if (is_motion_like(q)) return Kind::Motion;
+  return q == Quantity::Ratio ? Kind::Ratio : Kind::Own;
+}
 
 }  // namespace
 
@@ -29,7 +41,7 @@ double value_at(const CsvTable& table, std::size_t time_column, std::size_t colu
 std::optional<StudyEstimate> estimate_errors(const std::vector<const CsvTable*>& tables,
                                              const std::vector<double>& scales, double ratio,
                                              const std::vector<std::string>& columns,
-                                             std::string* error) {
+                                             bool keep_negligible, std::string* error) {
   StudyEstimate estimate;
   const std::size_t runs = tables.size();
   if (runs == 0) {
@@ -65,23 +77,56 @@ std::optional<StudyEstimate> estimate_errors(const std::vector<const CsvTable*>&
   estimate.worst_column.assign(runs, "");
   estimate.estimate_is_bound.assign(runs, false);
 
-  for (const std::string& name : names) {
-    ColumnEstimate c;
-    c.name = name;
-    // values[run][time]
-    std::vector<std::vector<double>> values(runs);
+  // The scale of each kind over every column of the tables (the model's forces and motions,
+  // whatever --columns selects), then each selected column's values at the comparison times
+  // (values[run][time]) and its own peak.
+  const auto column_values = [&](const std::string& name, std::vector<std::vector<double>>& values,
+                                 double& peak) {
+    values.assign(runs, {});
+    peak = 0.0;
     for (std::size_t r = 0; r < runs; ++r) {
       const std::optional<std::size_t> index = tables[r]->column_index(name);
       if (!index) {
         *error = fmt::format("{}: no column '{}'", tables[r]->path, name);
-        return std::nullopt;
+        return false;
       }
       for (double t : estimate.times) {
         const double v = value_at(*tables[r], time_index[r], *index, t);
         values[r].push_back(v);
-        c.scale = std::max(c.scale, std::abs(v));
+        peak = std::max(peak, std::abs(v));
       }
     }
+    return true;
+  };
+  std::map<Kind, double> kind_scale{{Kind::Ratio, 1.0}};
+  for (std::size_t c = std::min(kKeyColumns, coarsest.columns.size()); c < coarsest.columns.size();
+       ++c) {
+    const std::string& name = coarsest.columns[c];
+    const Kind kind = kind_of(name);
+    if (kind == Kind::Own) continue;
+    double& scale = kind_scale[kind];
+    for (std::size_t r = 0; r < runs; ++r) {
+      const std::optional<std::size_t> index = tables[r]->column_index(name);
+      if (!index) continue;  // a selected column missing somewhere is reported below
+      for (const std::vector<double>& row : tables[r]->rows) {
+        if (std::isfinite(row[*index])) scale = std::max(scale, std::abs(row[*index]));
+      }
+    }
+  }
+  std::vector<std::vector<std::vector<double>>> all_values(names.size());
+  std::vector<double> peaks(names.size());
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    if (!column_values(names[k], all_values[k], peaks[k])) return std::nullopt;
+  }
+
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    const std::string& name = names[k];
+    ColumnEstimate c;
+    c.name = name;
+    c.peak = peaks[k];
+    const Kind kind = kind_of(name);
+    c.scale = kind == Kind::Own ? c.peak : kind_scale[kind];
+    const std::vector<std::vector<double>>& values = all_values[k];
     const auto distance = [&](const std::vector<double>& a, const std::vector<double>& b) {
       double d = 0.0;
       for (std::size_t i = 0; i < a.size(); ++i) d = std::max(d, std::abs(a[i] - b[i]));
@@ -90,8 +135,13 @@ std::optional<StudyEstimate> estimate_errors(const std::vector<const CsvTable*>&
     const std::vector<double>& finest = values[runs - 1];
     c.difference.assign(runs, 0.0);
     c.estimated.assign(runs, 0.0);
-    if (c.scale == 0.0) {
+    if (c.peak == 0.0) {
       c.status = OrderStatus::ZeroColumn;
+      estimate.columns.push_back(std::move(c));
+      continue;
+    }
+    if (!keep_negligible && c.peak <= kNegligibleColumn * c.scale) {
+      c.status = OrderStatus::Negligible;
       estimate.columns.push_back(std::move(c));
       continue;
     }

@@ -38,6 +38,8 @@ const char* order_text(OrderStatus status) {
       return "too-few-runs";
     case OrderStatus::ZeroColumn:
       return "zero-column";
+    case OrderStatus::Negligible:
+      return "negligible";
   }
   return "";
 }
@@ -88,10 +90,12 @@ std::string render_study_table(const StudyResult& result) {
                        state_text(s), result.chosen == i ? "  <- --rtol" : "");
   }
   if (e == nullptr) return out;
-  std::size_t counts[5] = {};
+  std::size_t counts[6] = {};
+  std::vector<std::string> negligible;
   const ColumnEstimate* least_converged = nullptr;
   for (const ColumnEstimate& c : e->columns) {
     ++counts[static_cast<int>(c.status)];
+    if (c.status == OrderStatus::Negligible) negligible.push_back(c.name);
     if (c.status == OrderStatus::Observed &&
         (least_converged == nullptr || c.estimated.back() > least_converged->estimated.back())) {
       least_converged = &c;
@@ -100,8 +104,10 @@ std::string render_study_table(const StudyResult& result) {
   out += "work: increment attempts + Newton iterations (residual assemblies)\n";
   out += fmt::format(
       "errors: largest over the history columns and the coarsest setting's {} times, relative "
-      "to each column's largest |value|;\n        'vs finest' against the finest completed "
-      "setting, 'est. error' against the Richardson limit\n",
+      "to the model's scale of each column's kind\n        (forces and moments: the largest "
+      "|force or moment|; motions: the largest |motion|; damage and criteria: 1);\n        "
+      "'vs finest' against the finest completed setting, 'est. error' against the Richardson "
+      "limit\n",
       e->times.size());
   out += fmt::format(
       "columns: {} with an observed order, {} agreeing to round-off, {} without an observed "
@@ -111,6 +117,26 @@ std::string render_study_table(const StudyResult& result) {
       counts[static_cast<int>(OrderStatus::NotObserved)],
       counts[static_cast<int>(OrderStatus::TooFewRuns)],
       counts[static_cast<int>(OrderStatus::ZeroColumn)]);
+  if (!negligible.empty()) {
+    // Said, so that a reader knows what the verdict does not cover.
+    constexpr std::size_t kListed = 8;
+    std::string names;
+    for (std::size_t i = 0; i < std::min(kListed, negligible.size()); ++i) {
+      names += (i > 0 ? ", " : "") + negligible[i];
+    }
+    if (negligible.size() > kListed) names += fmt::format(", ... ({} more)", negligible.size() - kListed);
+    out += fmt::format(
+        "left out: {} column{} zero to round-off (largest |value| at most {:g} of the scale of "
+        "its kind: totals balanced by a motion's reaction, constraint residuals): {}; --columns "
+        "estimates them\n",
+        negligible.size(), negligible.size() == 1 ? "" : "s", kNegligibleColumn, names);
+  }
+  const std::size_t estimated = e->columns.size() - counts[static_cast<int>(OrderStatus::ZeroColumn)] -
+                                counts[static_cast<int>(OrderStatus::Negligible)];
+  if (estimated > 0 && counts[static_cast<int>(OrderStatus::Agree)] == estimated) {
+    out += "every estimated column agrees to round-off in every setting: the deck's own "
+           "increments (setting 1) are exact\n";
+  }
   if (least_converged != nullptr) {
     out += fmt::format(
         "least converged column: {}, observed order {:.2f}, estimated error of the "

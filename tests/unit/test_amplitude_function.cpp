@@ -1,9 +1,12 @@
 // AmplitudeFunction (keywords.md §8): TABULAR interpolation with a jump at a repeated time,
 // constant values before the first and after the last point, SMOOTH STEP values and its zero
 // end slopes, EQUALLY SPACED on the points the reader generates, and the time variable chosen
-// by TIME=. Expected values are computed by hand.
+// by TIME=, and the formulas of PERIODIC, MODULATED and DECAY on either side of their start
+// time. Expected values are computed by hand.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -54,6 +57,34 @@ TEST(AmplitudeFunction, RepeatedTimeIsAJumpToTheLaterValue) {
   EXPECT_NEAR(end.value_at(0.5), 0.5, kTol);
   EXPECT_EQ(end.value_at(1.0), 7.0);
   EXPECT_EQ(end.value_at(2.0), 7.0);
+}
+
+// The formulas hold A0 up to the start time t0; PERIODIC and DECAY start with a jump there
+// (their value at t0 is the formula's), MODULATED starts continuously (sin 0 = 0).
+TEST(AmplitudeFunction, FormulasHoldTheInitialValueBeforeTheirStart) {
+  Amplitude periodic = make_amplitude(AmplitudeDefinition::Periodic, {}, {});
+  periodic.formula = {.start_time = 1.0, .initial = 0.5, .omega = 2.0, .cosines = {1.0, 0.25},
+                      .sines = {-1.0, 0.0}};
+  const AmplitudeFunction p(periodic);
+  EXPECT_EQ(p.value_at(0.999), 0.5);
+  EXPECT_NEAR(p.value_at(1.0), 0.5 + 1.0 + 0.25, kTol);  // every cosine is 1 at t0
+  // t − t0 = π/4: cos(π/2) = 0, sin(π/2) = 1, cos(π) = −1.
+  EXPECT_NEAR(p.value_at(1.0 + 0.25 * std::numbers::pi), 0.5 - 1.0 - 0.25, kTol);
+
+  Amplitude modulated = make_amplitude(AmplitudeDefinition::Modulated, {}, {});
+  modulated.formula = {.start_time = 0.5, .initial = 2.0, .magnitude = 3.0, .omega = 1.0,
+                       .omega2 = 0.5};
+  const AmplitudeFunction m(modulated);
+  EXPECT_EQ(m.value_at(0.5), 2.0);
+  // t − t0 = π: sin(π)·sin(π/2) = 0; t − t0 = π/2: sin(π/2)·sin(π/4) = √2/2.
+  EXPECT_NEAR(m.value_at(0.5 + 0.5 * std::numbers::pi), 2.0 + 3.0 * std::sqrt(0.5), kTol);
+
+  Amplitude decay = make_amplitude(AmplitudeDefinition::Decay, {}, {});
+  decay.formula = {.start_time = 1.0, .initial = 1.0, .magnitude = -2.0, .decay_time = 0.5};
+  const AmplitudeFunction d(decay);
+  EXPECT_EQ(d.value_at(0.5), 1.0);
+  EXPECT_EQ(d.value_at(1.0), -1.0);
+  EXPECT_NEAR(d.value_at(1.5), 1.0 - 2.0 * std::exp(-1.0), kTol);
 }
 
 TEST(AmplitudeFunction, SinglePointIsConstant) {

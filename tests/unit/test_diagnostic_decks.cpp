@@ -2,8 +2,10 @@
 // against the expectations written in its ** comments (ARCHITECTURE.md, testing habit 5):
 //   ** expected-error@+1 {{message substring}}      error on the next line
 //   ** expected-warning@-2:14 {{...}}              warning two lines up, at column 14
+//   ** expected-note@+1 {{...}}                    a note (of any diagnostic) on the next line
 // Offsets are relative to the comment line (none or @+0: that line). Every error and warning
-// produced must be expected, and every expectation must be met, in every file the deck reads.
+// produced must be expected, and every expectation must be met, in every file the deck reads;
+// notes that no expectation names are not checked.
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -32,7 +34,7 @@ struct Expectation {
 
 std::vector<Expectation> parse_expectations(const SourceManager& sources) {
   static const std::regex pattern(
-      R"(expected-(error|warning)(@([+-]?\d+))?(:(\d+))?\s*\{\{(.*?)\}\})");
+      R"(expected-(error|warning|note)(@([+-]?\d+))?(:(\d+))?\s*\{\{(.*?)\}\})");
   std::vector<Expectation> out;
   for (std::uint32_t f = 0; f < sources.file_count(); ++f) {
     std::istringstream text{std::string(sources.text(f))};
@@ -46,7 +48,9 @@ std::vector<Expectation> parse_expectations(const SourceManager& sources) {
         const std::smatch& m = *it;
         Expectation e;
         e.file = f;
-        e.severity = m[1] == "error" ? Severity::Error : Severity::Warning;
+        e.severity = m[1] == "error"     ? Severity::Error
+                     : m[1] == "warning" ? Severity::Warning
+                                         : Severity::Note;
         const long offset = m[3].matched ? std::stol(m[3]) : 0;
         e.line = static_cast<std::uint32_t>(static_cast<long>(number) + offset);
         e.column = m[5].matched ? static_cast<std::uint32_t>(std::stoul(m[5])) : 0;
@@ -95,9 +99,23 @@ TEST_P(DiagnosticDeck, ProducesExactlyTheExpectedDiagnostics) {
       break;
     }
     EXPECT_TRUE(matched) << "unexpected " << render_text(d, sources);
+    for (const DiagNote& note : d.notes) {
+      for (Expectation& e : expectations) {
+        if (e.met || e.severity != Severity::Note || e.file != note.loc.file ||
+            e.line != note.loc.line || (e.column && e.column != note.loc.column) ||
+            note.message.find(e.text) == std::string::npos) {
+          continue;
+        }
+        e.met = true;
+        break;
+      }
+    }
   }
   for (const Expectation& e : expectations) {
-    EXPECT_TRUE(e.met) << "expected " << (e.severity == Severity::Error ? "error" : "warning")
+    EXPECT_TRUE(e.met) << "expected "
+                       << (e.severity == Severity::Error     ? "error"
+                           : e.severity == Severity::Warning ? "warning"
+                                                             : "note")
                        << " not produced: " << sources.file(e.file).display_name << ":"
                        << e.line << (e.column ? fmt::format(":{}", e.column) : std::string())
                        << " {{" << e.text << "}}";

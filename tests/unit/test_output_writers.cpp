@@ -244,6 +244,13 @@ TEST_F(OutputWriters, ProgressRewritesOneLine) {
             "\rstep 1  increment 2  time 1   \n");
 }
 
+TEST_F(OutputWriters, ProgressNamesTheStep) {
+  std::ostringstream err;
+  Progress progress(&err);
+  progress.update(2, 4, 1.4, "Close");
+  EXPECT_EQ(err.str(), "\rstep 2 (Close)  increment 4  time 1.4");
+}
+
 TEST_F(OutputWriters, ProgressClearErasesTheLine) {
   std::ostringstream err;
   Progress progress(&err);

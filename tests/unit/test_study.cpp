@@ -139,17 +139,29 @@ CsvTable first_order_table(double h, double c) {
   return table;
 }
 
-TEST(ConvergenceEstimate, FirstOrderRichardsonRecoversTheExactError) {
+// Four settings, scales 1, 1/2, 1/4, 1/8, each table made by `table_at(scale)`.
+struct Ladder {
   std::vector<CsvTable> tables;
   std::vector<double> scales;
-  for (int k = 0; k < 4; ++k) {
-    scales.push_back(std::pow(0.5, k));
-    tables.push_back(first_order_table(scales.back(), 0.3));
-  }
   std::vector<const CsvTable*> pointers;
-  for (const CsvTable& t : tables) pointers.push_back(&t);
+  template <typename Make>
+  explicit Ladder(Make table_at) {
+    for (int k = 0; k < 4; ++k) {
+      scales.push_back(std::pow(0.5, k));
+      tables.push_back(table_at(scales.back()));
+    }
+    for (const CsvTable& t : tables) pointers.push_back(&t);
+  }
+  Ladder(const Ladder&) = delete;  // `pointers` point into `tables`
+  Ladder& operator=(const Ladder&) = delete;
+};
+
+TEST(ConvergenceEstimate, FirstOrderRichardsonRecoversTheExactError) {
+  const Ladder ladder([](double h) { return first_order_table(h, 0.3); });
+  const std::vector<double>& scales = ladder.scales;
+  const std::vector<const CsvTable*>& pointers = ladder.pointers;
   std::string error;
-  const std::optional<StudyEstimate> e = estimate_errors(pointers, scales, 2.0, {}, &error);
+  const std::optional<StudyEstimate> e = estimate_errors(pointers, scales, 2.0, {}, false, &error);
   ASSERT_TRUE(e) << error;
   ASSERT_EQ(e->columns.size(), 2u);
   const ColumnEstimate& v = e->columns[0];
@@ -175,7 +187,7 @@ TEST(ConvergenceEstimate, NoOrderWhenDifferencesDoNotShrink) {
   std::vector<const CsvTable*> pointers = {&tables[0], &tables[1], &tables[2]};
   std::string error;
   const std::optional<StudyEstimate> e =
-      estimate_errors(pointers, {1.0, 0.5, 0.25}, 2.0, {"V@1"}, &error);
+      estimate_errors(pointers, {1.0, 0.5, 0.25}, 2.0, {"V@1"}, false, &error);
   ASSERT_TRUE(e) << error;
   EXPECT_EQ(e->columns[0].status, OrderStatus::NotObserved);
   EXPECT_TRUE(e->estimate_is_bound[0]);
@@ -191,14 +203,61 @@ TEST(ConvergenceEstimate, TooFewRunsAndInterpolatedTimes) {
   for (int i = 0; i <= 8; ++i) fine.rows.push_back({1, double(i), i / 2.0, i / 2.0, i / 2.0, 0.0});
   std::string error;
   const std::optional<StudyEstimate> e =
-      estimate_errors({&coarse, &fine}, {1.0, 0.5}, 2.0, {"V@1"}, &error);
+      estimate_errors({&coarse, &fine}, {1.0, 0.5}, 2.0, {"V@1"}, false, &error);
   ASSERT_TRUE(e) << error;
   EXPECT_EQ(e->times.size(), 5u);
   EXPECT_EQ(e->columns[0].status, OrderStatus::TooFewRuns);
   EXPECT_EQ(e->columns[0].difference[0], 0.0);
   EXPECT_EQ(value_at(fine, 3, 4, 1.25), 1.25);
-  EXPECT_FALSE(estimate_errors({&coarse}, {1.0}, 2.0, {"W@1"}, &error));
+  EXPECT_FALSE(estimate_errors({&coarse}, {1.0}, 2.0, {"W@1"}, false, &error));
   EXPECT_NE(error.find("no column 'W@1'"), std::string::npos);
+}
+
+// A driven component: its total moment CTF4 is round-off (1e-9 h, changing with the increment),
+// its friction moment CSF4 = 10 + 0.2 h sin t has a first-order error, and a force CTF1 = 1000
+// sets the scale of forces and moments together.
+CsvTable driven_table(double h) {
+  CsvTable table;
+  table.columns = {"step", "increment", "step_time", "total_time", "CTF1@1", "CTF4@1", "CSF4@1",
+                   "CU4@1"};
+  for (int i = 0; i <= 4; ++i) {
+    const double t = i;
+    table.rows.push_back({1, double(i), t, t, 1000.0, 1e-9 * h * std::cos(t),
+                          10.0 + 0.2 * h * std::sin(t), 0.1 * t});
+  }
+  return table;
+}
+
+TEST(ConvergenceEstimate, ErrorsAgainstTheModelsScaleAndRoundOffColumnsLeftOut) {
+  const Ladder ladder(driven_table);
+  const std::vector<double>& scales = ladder.scales;
+  const std::vector<const CsvTable*>& pointers = ladder.pointers;
+  std::string error;
+  const std::optional<StudyEstimate> e = estimate_errors(pointers, scales, 2.0, {}, false, &error);
+  ASSERT_TRUE(e) << error;
+  ASSERT_EQ(e->columns.size(), 4u);
+  // CTF4: largest 1e-9 against the scale 1000 of forces and moments: left out.
+  EXPECT_EQ(e->columns[1].status, OrderStatus::Negligible);
+  EXPECT_EQ(e->columns[1].scale, 1000.0);
+  // CSF4: error 0.2 h |sin 2| against the force scale 1000, not against its own peak 10.2.
+  const ColumnEstimate& friction = e->columns[2];
+  EXPECT_EQ(friction.status, OrderStatus::Observed);
+  EXPECT_EQ(friction.scale, 1000.0);
+  for (std::size_t r = 0; r < 4; ++r) {
+    EXPECT_NEAR(friction.estimated[r], 0.2 * scales[r] * std::abs(std::sin(2.0)) / 1000.0, 1e-14)
+        << r;
+  }
+  EXPECT_EQ(e->worst_column[0], "CSF4@1");
+  // CU4 is exact: its motion scale is its own 0.4, and every setting agrees.
+  EXPECT_EQ(e->columns[3].status, OrderStatus::Agree);
+  EXPECT_EQ(e->columns[3].scale, 0.4);
+  // Chosen with --columns, the round-off column is estimated, against the model's force scale
+  // still: its differences (1e-12 of it at most) are round-off, the settings agree.
+  const std::optional<StudyEstimate> kept =
+      estimate_errors(pointers, scales, 2.0, {"CTF4@1"}, true, &error);
+  ASSERT_TRUE(kept) << error;
+  EXPECT_EQ(kept->columns[0].status, OrderStatus::Agree);
+  EXPECT_EQ(kept->columns[0].scale, 1000.0);
 }
 
 TEST(StudyResult, CheapestSettingBelowTheTolerance) {
@@ -237,6 +296,33 @@ TEST(StatusFileReader, AttemptsCutbacksAndEnding) {
   EXPECT_EQ(r->total_iterations(), 20);
   EXPECT_EQ(r->attempts[1].total_time, 0.25);
   EXPECT_EQ(r->ending, "FAILED: too many cutbacks (step 1, increment 2, time 0.25)");
+}
+
+TEST(StatusFileReader, StepNames) {
+  // What StatusFile writes: a STEP line before each step's attempts, a name with blanks and a
+  // colon kept whole (docs/study-and-report.md, "Abaqus names and step names").
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / "clinch-step-names.sta";
+  {
+    StatusFile sta;
+    std::string error;
+    ASSERT_TRUE(sta.open(path, &error)) << error;
+    ASSERT_TRUE(sta.write_step(1, "Open"));
+    ASSERT_TRUE(sta.write_attempt({1, 1, 1, false, 2, 2, 1.0, 1.0, 1.0}));
+    ASSERT_TRUE(sta.write_step(2, "Close: slowly"));
+    ASSERT_TRUE(sta.write_attempt({2, 1, 1, false, 1, 1, 2.0, 1.0, 1.0}));
+    ASSERT_TRUE(sta.write_completed());
+  }
+  std::string error;
+  const std::optional<StatusRecord> r = read_status_file(path.string(), &error);
+  ASSERT_TRUE(r) << error;
+  EXPECT_EQ(r->attempts.size(), 2u);
+  EXPECT_EQ(r->step_names.at(1), "Open");
+  EXPECT_EQ(r->step_names.at(2), "Close: slowly");
+  EXPECT_EQ(r->ending, "COMPLETED");
+  std::ofstream(path) << "header\nSTEP x: bad\n";
+  EXPECT_FALSE(read_status_file(path.string(), &error));
+  EXPECT_NE(error.find(":2: not a step line"), std::string::npos) << error;
 }
 
 }  // namespace
