@@ -21,8 +21,7 @@ void reserve_for_block(std::vector<T>& v, std::size_t lines) {
 
 // A node or element label 1…2147483647 in the first field of a line; nullopt after a report.
 std::optional<std::int32_t> line_label(BlockContext& ctx, const Field& field,
-                                       std::string_view what) {
-  const std::string field_name = fmt::format("{} label", what);
+                                       std::string_view field_name) {
   if (field.empty()) {
     ctx.missing(field.loc, field_name);
     return std::nullopt;
@@ -57,7 +56,7 @@ class NodeHandler : public KeywordHandler {
       ctx.check_field_count(line, fields, 7, "label, x, y, z, nx, ny, nz");
       return;
     }
-    auto label = line_label(ctx, fields[0], "node");
+    auto label = line_label(ctx, fields[0], "node label");
     if (!label) return;
     Node node;
     node.label = *label;
@@ -162,7 +161,7 @@ class ElementHandler : public KeywordHandler {
                             info_->nodes == 1 ? "label, node" : "label, node a, node b");
       return;
     }
-    auto label = line_label(ctx, fields[0], "element");
+    auto label = line_label(ctx, fields[0], "element label");
     if (!label) return;
     Element element;
     element.label = *label;
@@ -255,7 +254,7 @@ class ElementHandler : public KeywordHandler {
 
   void add_held_element(BlockContext& ctx, const DataLine& line, const std::vector<Field>& fields) {
     const std::size_t needed = 1 + static_cast<std::size_t>(info_->nodes);
-    auto label = line_label(ctx, fields[0], "element");
+    auto label = line_label(ctx, fields[0], "element label");
     if (!label) return;
     if (fields.size() < needed) {
       ctx.report(DiagCode::missing_field, BlockContext::end_of_line(line),
