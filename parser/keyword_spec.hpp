@@ -71,6 +71,9 @@ struct KeywordSpec {
   // Outside a behaviour block this keyword means something clinch does not support (*FRICTION
   // of surface contact): E0202 instead of E0608.
   bool unsupported_outside_behavior = false;
+  // A step procedure clinch does not run (*FREQUENCY, *DYNAMIC, ...): its refusal stands for the
+  // step, which is not reported again as a step without a procedure.
+  bool refused_procedure = false;
   // No-effect keywords: parameters that would change the analysis (*RESTART, READ); any of them
   // makes the keyword E0210 with `refused_reason` instead of W0201.
   std::vector<std::string_view> refused_params = {};

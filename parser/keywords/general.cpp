@@ -77,9 +77,7 @@ std::vector<KeywordSpec> general_keyword_specs() {
   // (input-syntax.md §9, keywords.md §1).
   for (std::string_view name :
        {"BEAM GENERAL SECTION", "EQUATION", "MPC", "COUPLING", "KINEMATIC", "DISTRIBUTING",
-        "TRANSFORM", "SYSTEM", "GAP",
-        "FREQUENCY", "DYNAMIC", "MODAL DYNAMIC", "STEADY STATE DYNAMICS", "BUCKLE",
-        "HEAT TRANSFER", "COUPLED TEMPERATURE-DISPLACEMENT", "VISCO", "DLOAD", "DSLOAD",
+        "TRANSFORM", "SYSTEM", "GAP", "DLOAD", "DSLOAD",
         "TEMPERATURE", "INITIAL CONDITIONS", "TIME POINTS", "NO ANALYSIS", "PARAMETER DEPENDENCE",
         "PARAMETER TABLE", "PARAMETER TABLE TYPE", "PARAMETER SHAPE VARIATION",
         "CONNECTOR UNIAXIAL BEHAVIOR", "CHANGE FRICTION", "SURFACE INTERACTION",
@@ -91,11 +89,19 @@ std::vector<KeywordSpec> general_keyword_specs() {
         "HYPERELASTIC", "VISCOELASTIC", "CREEP", "DAMAGE INITIATION", "DAMAGE EVOLUTION",
         "EMBEDDED ELEMENT", "PRE-TENSION SECTION", "FASTENER", "FASTENER PROPERTY",
         "CONTACT PROPERTY ASSIGNMENT", "CONTACT INCLUSIONS", "CONTACT CONTROLS", "CLEARANCE",
-        "GEOSTATIC", "SOILS", "RANDOM RESPONSE", "RESPONSE SPECTRUM",
-        "SUBSTRUCTURE GENERATE", "MATRIX GENERATE", "INERTIA RELIEF", "PHYSICAL CONSTANTS",
+        "INERTIA RELIEF", "PHYSICAL CONSTANTS",
         "BASE MOTION", "ELEMENT PROPERTIES", "NODAL ENERGY RATE", "ADAPTIVE MESH",
         "DSECURRENT", "RELEASE", "MOTION", "INITIAL STATE", "IMPORT", "MAP SOLUTION"}) {
     specs.push_back(not_supported(name));
+  }
+  // Step procedures that clinch does not run (keywords.md §15: *STATIC is the procedure).
+  for (std::string_view name :
+       {"FREQUENCY", "DYNAMIC", "MODAL DYNAMIC", "STEADY STATE DYNAMICS", "BUCKLE",
+        "HEAT TRANSFER", "COUPLED TEMPERATURE-DISPLACEMENT", "VISCO", "GEOSTATIC", "SOILS",
+        "RANDOM RESPONSE", "RESPONSE SPECTRUM", "SUBSTRUCTURE GENERATE", "MATRIX GENERATE"}) {
+    KeywordSpec spec = not_supported(name);
+    spec.refused_procedure = true;
+    specs.push_back(std::move(spec));
   }
   return specs;
 }

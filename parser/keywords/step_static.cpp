@@ -146,7 +146,7 @@ class EndStepHandler : public KeywordHandler {
     step.end_loc = ctx.keyword().loc;
     // input-syntax.md §8: exactly one procedure per step (the second one is reported where it
     // stands, by *STATIC).
-    if (!step.procedure) {
+    if (!step.procedure && !step.procedure_refused) {
       ctx.report(DiagCode::step_procedure, ctx.keyword().loc,
                  fmt::format("step '{}' has no procedure (expected *STATIC)", step.name.display))
           .notes.push_back({step.loc, "step defined here"});

@@ -54,6 +54,9 @@ void BlockDispatcher::open(KeywordLine line) {
   if (spec->keyword_class == KeywordClass::NotSupported) {
     sink_.report(DiagCode::unsupported_keyword, kl.loc,
                  fmt::format("keyword '*{}' is not supported by clinch", spec->name));
+    if (spec->refused_procedure && at.in_step && !model_.history.steps.empty()) {
+      model_.history.steps.back().procedure_refused = true;
+    }
     return;
   }
   if (!structure_.check_level(*spec, kl)) return;

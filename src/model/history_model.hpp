@@ -249,6 +249,7 @@ struct Step {
   bool extrapolation = true;  // EXTRAPOLATION=LINEAR (false: NO)
 
   std::optional<StaticProcedure> procedure;
+  bool procedure_refused = false;  // its procedure keyword is one clinch does not run (E0202)
   Controls controls;  // effective controls (carried over, §13)
 
   std::vector<ConditionBlock> blocks;

@@ -177,7 +177,7 @@ class HistoryValidator {
   void check_step_structure(const Step& step) {
     // A closed step without a procedure was reported at its *END STEP; an unclosed one (E0603)
     // is reported here (input-syntax.md §8).
-    if (!step.closed && !step.procedure) {
+    if (!step.closed && !step.procedure && !step.procedure_refused) {
       sink_.report(DiagCode::step_procedure, step.loc,
                    fmt::format("step '{}' has no procedure (expected *STATIC)", step.name.display));
     }
