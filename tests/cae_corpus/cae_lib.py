@@ -42,3 +42,15 @@ def coincident_response(frame, force, moment, stiff):
         u = g.add(u, g.scale(c[i], frame[i]))
         ur = g.add(ur, g.scale(c[3 + i], frame[i]))
     return f, c, u, ur
+
+
+# The displacement-driven AXIAL pull (connector 1 from Point-1.1, held, to Point-2.1, whose u1 is
+# prescribed): its history columns and, for each state (step, increment, step_time, total_time,
+# u1 of Point-2.1), the closed form CU1 = u, CP1 = l0 + u, CTF1 = CEF1 = k u, RF1 = ∓k u.
+AXIAL_PULL_COLUMNS = ["CP1@1", "CTF1@1", "CU1@1", "CEF1@1", "RF1@Point-1.1", "RF1@Point-2.1",
+                      "U1@Point-1.1", "U1@Point-2.1"]
+
+
+def axial_pull_rows(k, l0, states):
+    return [(step, inc, st, tt, [l0 + u, k * u, u, k * u, -k * u, k * u, 0.0, u])
+            for step, inc, st, tt, u in states]

@@ -5,22 +5,16 @@ import os
 import sys
 
 sys.dont_write_bytecode = True
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "decks", "verification"))
-import golden_lib as g  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from cae_lib import g, AXIAL_PULL_COLUMNS, axial_pull_rows  # noqa: E402
 
 K, L0 = 1000.0, 10.0
-names = ["CP1@1", "CTF1@1", "CU1@1", "CEF1@1", "RF1@Point-1.1", "RF1@Point-2.1",
-         "U1@Point-1.1", "U1@Point-2.1"]
 # (step, increment, step_time, total_time, u of node Point-2.1)
 states = [(1, 0, 0.0, 0.0, 0.0)]
 states += [(1, i, 0.25 * i, 0.25 * i, 0.2 * 0.25 * i) for i in (1, 2, 3, 4)]
-rows = []
-for step, inc, st, tt, u in states:
-    f = K * u
-    rows.append((step, inc, st, tt, [L0 + u, f, u, f, -f, f, 0.0, u]))
+rows = axial_pull_rows(K, L0, states)
 g.write_golden(__file__, [
     "axial_point_masses: AXIAL k = 1000, l0 = 10 along x, NLGEOM=NO, u1(b) prescribed;",
     "MASS 2.5 at both nodes and ROTARYI at b carry no stiffness and are not used by *STATIC",
     "closed form: CU1 = u1(b), CP1 = l0 + CU1, CTF1 = CEF1 = k CU1, RF1(a) = -k CU1, RF1(b) = +k CU1",
-], names, rows)
+], AXIAL_PULL_COLUMNS, rows)
