@@ -3,13 +3,12 @@
 namespace clinch {
 
 StaticStepProcedure::StaticStepProcedure(const Step& step)
-    : settings_(StaticTimeSettings::of(step.procedure.value_or(StaticProcedure{}),
-                                       step.max_increments, step.controls.time)),
-      extrapolation_(step.extrapolation) {
-  const StaticProcedure procedure = step.procedure.value_or(StaticProcedure{});
-  rules_.accept_unconverged = procedure.direct && procedure.no_stop;
-  rules_.fixed_increments = procedure.direct;
-}
+    : StaticStepProcedure(step, step.procedure.value_or(StaticProcedure{})) {}
+
+StaticStepProcedure::StaticStepProcedure(const Step& step, const StaticProcedure& procedure)
+    : settings_(StaticTimeSettings::of(procedure, step.max_increments, step.controls.time)),
+      rules_{procedure.direct && procedure.no_stop, procedure.direct},
+      extrapolation_(step.extrapolation) {}
 
 std::unique_ptr<TimeStepper> StaticStepProcedure::time_stepper() const {
   return std::make_unique<StaticTimeStepper>(settings_);

@@ -19,6 +19,8 @@ class StaticStepProcedure final : public Procedure {
   void begin_increment(StepProblem& problem, const IncrementTimes& times) const override;
 
  private:
+  StaticStepProcedure(const Step& step, const StaticProcedure& procedure);
+
   StaticTimeSettings settings_;
   IncrementRules rules_;
   bool extrapolation_ = true;
