@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "src/model/behavior_model.hpp"
+#include "src/model/constraint_model.hpp"
 #include "src/model/geometry.hpp"
 #include "src/model/history_model.hpp"
 #include "src/model/section_model.hpp"
@@ -32,6 +33,7 @@ struct Model {
 
   SectionModel sections;
   StructureModel structure;  // sections, materials, surfaces of held elements
+  ConstraintModel constraints;  // rigid bodies, couplings, MPCs, equations
   BehaviorModel behaviors;
   HistoryModel history;
 
