@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "base/diagnostic.hpp"
+#include "src/assembly/constrained_elements.hpp"
 #include "src/behavior/connector_laws.hpp"
 #include "src/behavior/elastic/elastic_behavior.hpp"
 #include "src/model/orientation_triad.hpp"
@@ -305,6 +306,8 @@ bool AnalysisPlan::laws_symmetric() const {
 std::optional<AnalysisPlan> build_analysis_plan(const Model& model, std::string* error) {
   AnalysisPlan plan;
   if (!PlanBuilder(model, plan).build(error)) return std::nullopt;
+  if (!build_dependent_dofs(model, plan.dofs, plan.dependents, error)) return std::nullopt;
+  expand_constrained_elements(plan);
   return plan;
 }
 

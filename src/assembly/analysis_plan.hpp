@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "src/assembly/dependent_dofs.hpp"
 #include "src/assembly/dof_map.hpp"
 #include "src/behavior/behavior.hpp"
 #include "src/behavior/elastic/spring_law.hpp"
@@ -28,6 +29,15 @@ constexpr int kMaxLocalEquations = 18;  // 12 nodal columns + 6 multipliers
 struct LocalEquations {
   std::array<int, kMaxLocalEquations> equation{};
   int count = 0;
+};
+
+// The equations of an element with dependent DOFs once they are condensed
+// (constrained_elements.hpp).
+struct ElementExpansion {
+  // Its independent nodal equations, those its dependent DOFs depend on, then its multipliers.
+  std::vector<int> equations;
+  std::vector<std::int16_t> place;       // per local row: its place in `equations`, −1 if dependent
+  std::vector<std::int16_t> term_place;  // the places of the dependent rows' gradients, in order
 };
 
 // A connector's laws in the order of behaviors.md §1.3, each with the offset of its history in
@@ -89,6 +99,7 @@ struct ConnectorRecord {
   std::array<std::int8_t, 6> multiplier_components{};
   int multiplier_count = 0;
   LocalEquations local;
+  std::int32_t expansion = -1;  // into AnalysisPlan::expansions when a DOF is dependent
 
   // The stop limits of component i (1…6); neither limit when the connector has no stops.
   const ConnectorStopLimits& stop(int i) const {
@@ -111,6 +122,7 @@ struct SpringRecord {
   std::array<Vector3, 2> direction{Vector3::Zero(), Vector3::Zero()};
   bool rotational = false;
   LocalEquations local;
+  std::int32_t expansion = -1;  // into AnalysisPlan::expansions when a DOF is dependent
   std::array<std::int8_t, 6> columns{};  // SPRINGA: 0–2 node 1, 3–5 node 2; SPRING1/2: 0–2 / 3–5
   int column_count = 0;
 };
@@ -130,6 +142,9 @@ struct AnalysisPlan {
   std::vector<std::optional<SpringLaw>> spring_laws;  // per *SPRING (empty when invalid)
   std::vector<SpringRecord> springs;
   std::vector<std::int32_t> spring_of_element;
+  // The DOFs kinematic constraints eliminate, and the elements that have some.
+  DependentDofs dependents;
+  std::vector<ElementExpansion> expansions;
   std::size_t history_size = 0;
   double length_scale = 1.0;  // L̄: largest initial connector length (keywords.md §16)
   bool two_d = false;

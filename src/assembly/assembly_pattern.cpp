@@ -1,5 +1,6 @@
 #include "src/assembly/assembly_pattern.hpp"
 
+#include "src/assembly/constrained_elements.hpp"
 #include "src/assembly/sparsity_pattern.hpp"
 
 namespace clinch {
@@ -9,41 +10,50 @@ AssemblyPattern build_assembly_pattern(const AnalysisPlan& plan, bool symmetric)
   p.symmetric = symmetric;
   SparsityBuilder builder(plan.dofs.equations(), symmetric);
   // An element's local entries: its upper triangle, or all of them; the vectors are sized once.
-  auto entries = [&](const LocalEquations& l) {
-    const auto n = static_cast<std::size_t>(l.count);
+  // An element's equations: its own, or those of its condensed system (constrained_elements.hpp).
+  auto equations = [&](const auto& r) { return scatter_equations(plan, r.local, r.expansion); };
+  auto entries = [&](std::span<const int> l) {
+    const auto n = l.size();
     return symmetric ? n * (n + 1) / 2 : n * n;
   };
   std::size_t local_entries = 0, local_diagonals = 0;
-  auto count = [&](const LocalEquations& l) {
+  auto count = [&](std::span<const int> l) {
     local_entries += entries(l);
-    local_diagonals += static_cast<std::size_t>(l.count);
+    local_diagonals += l.size();
   };
-  for (const ConnectorRecord& r : plan.connectors) count(r.local);
-  for (const SpringRecord& r : plan.springs) count(r.local);
+  for (const ConnectorRecord& r : plan.connectors) count(equations(r));
+  for (const SpringRecord& r : plan.springs) count(equations(r));
   builder.reserve(local_entries - local_diagonals);
-  auto couple = [&](const LocalEquations& l) {
-    builder.couple(std::span<const int>(l.equation.data(), static_cast<std::size_t>(l.count)));
-  };
-  for (const ConnectorRecord& r : plan.connectors) couple(r.local);
-  for (const SpringRecord& r : plan.springs) couple(r.local);
+  for (const ConnectorRecord& r : plan.connectors) builder.couple(equations(r));
+  for (const SpringRecord& r : plan.springs) builder.couple(equations(r));
+  // The curvature of rigid arms and links under NLGEOM couples the equations they read.
+  const DependentDofs& dependents = plan.dependents;
+  for (const DependentDof& d : dependents.dofs) {
+    if (!d.curved()) continue;
+    std::vector<int> read(dependents.term_equation.begin() + d.first_term,
+                          dependents.term_equation.begin() + d.first_term + d.term_count);
+    for (int i = 0; i < 3; ++i) read.push_back(plan.dofs.equation(d.reference, 4 + i));
+    builder.couple(read);
+  }
   p.matrix = builder.build();
   p.matrix.node_block = plan.dofs.uniform_node_block();
   p.positions.reserve(local_entries);
-  auto place = [&](const LocalEquations& l) {
+  auto place = [&](std::span<const int> l) {
     const std::size_t offset = p.positions.size();
-    for (int b = 0; b < l.count; ++b) {
-      const int last = symmetric ? b : l.count - 1;
+    const auto n = static_cast<int>(l.size());
+    for (int b = 0; b < n; ++b) {
+      const int last = symmetric ? b : n - 1;
       for (int a = 0; a <= last; ++a) {
-        p.positions.push_back(entry_position(p.matrix, l.equation[static_cast<std::size_t>(a)],
-                                             l.equation[static_cast<std::size_t>(b)]));
+        p.positions.push_back(entry_position(p.matrix, l[static_cast<std::size_t>(a)],
+                                             l[static_cast<std::size_t>(b)]));
       }
     }
     return offset;
   };
   p.connector_offset.reserve(plan.connectors.size());
-  for (const ConnectorRecord& r : plan.connectors) p.connector_offset.push_back(place(r.local));
+  for (const ConnectorRecord& r : plan.connectors) p.connector_offset.push_back(place(equations(r)));
   p.spring_offset.reserve(plan.springs.size());
-  for (const SpringRecord& r : plan.springs) p.spring_offset.push_back(place(r.local));
+  for (const SpringRecord& r : plan.springs) p.spring_offset.push_back(place(equations(r)));
   p.diagonal.resize(static_cast<std::size_t>(p.matrix.n));
   for (int i = 0; i < p.matrix.n; ++i) {
     p.diagonal[static_cast<std::size_t>(i)] = entry_position(p.matrix, i, i);

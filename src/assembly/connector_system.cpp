@@ -9,6 +9,7 @@
 
 #include "base/scaled_norm.hpp"
 #include "src/assembly/active_set_updates.hpp"
+#include "src/assembly/sparsity_pattern.hpp"
 #include "src/kinematics/rotation_math.hpp"
 
 namespace clinch {
@@ -60,7 +61,9 @@ ConnectorSystem::ConnectorSystem(const Model& model, const AnalysisPlan& plan)
       predictor_(internal_),
       deleted_(plan.connectors.size(), 0),
       owned_connectors_{0, plan.connectors.size()},
-      owned_springs_{0, plan.springs.size()} {
+      owned_springs_{0, plan.springs.size()},
+      motion_(plan.dependents, plan.dofs),
+      constraint_load_(Eigen::VectorXd::Zero(plan.dependents.empty() ? 0 : plan.dofs.equations())) {
   use_storage(true);
 }
 
@@ -71,8 +74,8 @@ void ConnectorSystem::use_storage(bool symmetric) {
 }
 
 ConnectorSystem::Snapshot ConnectorSystem::snapshot() const {
-  return {state_,      conditions_, internal_,          predictor_,
-          predicting_, springs_,    multiplier_active_, element_forces_};
+  return {state_,      conditions_, internal_,          predictor_,      predicting_,
+          springs_,    multiplier_active_, element_forces_, constraint_load_, dependent_failure_};
 }
 
 void ConnectorSystem::restore(const Snapshot& snapshot) {
@@ -84,6 +87,8 @@ void ConnectorSystem::restore(const Snapshot& snapshot) {
   springs_ = snapshot.springs;
   multiplier_active_ = snapshot.multiplier_active;
   element_forces_ = snapshot.element_forces;
+  constraint_load_ = snapshot.constraint_load;
+  dependent_failure_ = snapshot.dependent_failure;
 }
 
 void ConnectorSystem::set_nlgeom(bool nlgeom) {
@@ -102,6 +107,14 @@ void ConnectorSystem::set_nlgeom(bool nlgeom) {
     state_.rotation_n = state_.rotation;
   }
   context_.nlgeom = nlgeom;
+  update_dependents();
+  state_.rotation_n = state_.rotation;
+}
+
+void ConnectorSystem::update_dependents() {
+  if (plan_.dependents.empty()) return;
+  dependent_failure_.clear();
+  motion_.update_values(state_.x, state_.rotation, context_.nlgeom, &dependent_failure_);
 }
 
 void ConnectorSystem::start_increment(double extrapolate_scale) {
@@ -119,6 +132,7 @@ void ConnectorSystem::start_increment(double extrapolate_scale) {
   // with the free DOFs following on the tangent at the start of the increment (docs/decisions.md
   // "Prescribed increments"). Finite rotations are the exception: they jump to their targets.
   snap_prescribed_rotations();
+  update_dependents();
   update_prescribed_predictor();
 }
 
@@ -176,6 +190,10 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
   state_.request = {};
   const bool want_tangent = tangent != nullptr;
   LocalSystem& local = *local_;
+  if (!dependent_failure_.empty()) return {false, dependent_failure_};
+  if (!plan_.dependents.empty()) {
+    motion_.update_gradients(state_.x, state_.rotation, context_.nlgeom);
+  }
   // The first failure ends this process's share of the elements; a distributed run still
   // exchanges it, so that every rank fails the evaluation with it.
   EvalStatus failed;
@@ -193,7 +211,8 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
           r.local.equation[static_cast<std::size_t>(r.column_count + j)])] =
           local.active[static_cast<std::size_t>(j)];
     }
-    scatter(r.local, pattern_->connector_offset[c], local, !r.laws.symmetric, tangent);
+    scatter_element(r.local, r.expansion, pattern_->connector_offset[c], local,
+                    !r.laws.symmetric, tangent);
     add_force_entries(r.local, r.column_count, local);
     add_component_forces(state_.results[c]);
   }
@@ -209,13 +228,15 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
                                    qualified_label(model_, e.instance, e.label))};
       break;
     }
-    scatter(spring.local, pattern_->spring_offset[s], local, false, tangent);
+    scatter_element(spring.local, spring.expansion, pattern_->spring_offset[s], local, false,
+                    tangent);
     add_force_entries(spring.local, spring.local.count, local);
   }
   if (communicator_) exchange(tangent, failed);
   if (!failed.ok) return failed;
   residual = internal_ - conditions_.external();
   if (predicting_ && tangent) residual += predictor_;
+  if (!plan_.dependents.empty()) finish_dependent_rows(residual, tangent);
   for (int eq : conditions_.prescribed()) {
     // Newton's row of a prescribed DOF is Δu = target − u. A reaction that overflows takes the
     // row's place, so that Newton stops on it rather than report it (principle 8).
@@ -270,26 +291,40 @@ void ConnectorSystem::add_component_forces(const ConnectorResult& result) {
   }
 }
 
-void ConnectorSystem::scatter(const LocalEquations& l, std::size_t offset, const LocalSystem& local,
-                              bool symmetrize, SparseMatrix* tangent) {
-  for (int a = 0; a < l.count; ++a) {
-    internal_[l.equation[static_cast<std::size_t>(a)]] += local.r[a];
+void ConnectorSystem::scatter_element(const LocalEquations& l, std::int32_t expansion,
+                                      std::size_t offset, const LocalSystem& local,
+                                      bool symmetrize, SparseMatrix* tangent) {
+  if (expansion < 0) {
+    scatter({l.equation.data(), static_cast<std::size_t>(l.count)}, offset, local.r, local.k,
+            symmetrize, tangent);
+    return;
   }
+  const ElementExpansion& e = plan_.expansions[static_cast<std::size_t>(expansion)];
+  condense(e, l, plan_.dependents, motion_, local, tangent != nullptr, condensed_, internal_);
+  // The rigid arms make a condensed tangent unsymmetric away from equilibrium.
+  scatter(e.equations, offset, condensed_.r, condensed_.k, true, tangent);
+}
+
+template <typename Residual, typename Tangent>
+void ConnectorSystem::scatter(std::span<const int> l, std::size_t offset, const Residual& r,
+                              const Tangent& local_k, bool symmetrize, SparseMatrix* tangent) {
+  const auto count = static_cast<int>(l.size());
+  for (int a = 0; a < count; ++a) internal_[l[static_cast<std::size_t>(a)]] += r[a];
   if (!tangent) return;
   const int* position = pattern_->positions.data() + offset;
   double* values = tangent->values.data();
   const bool symmetric = pattern_->symmetric;
-  for (int b = 0; b < l.count; ++b) {
-    const int eb = l.equation[static_cast<std::size_t>(b)];
+  for (int b = 0; b < count; ++b) {
+    const int eb = l[static_cast<std::size_t>(b)];
     const bool fixed_b = conditions_.is_prescribed(eb);
-    const int last = symmetric ? b : l.count - 1;
+    const int last = symmetric ? b : count - 1;
     for (int a = 0; a <= last; ++a, ++position) {
-      const int ea = l.equation[static_cast<std::size_t>(a)];
+      const int ea = l[static_cast<std::size_t>(a)];
       const bool fixed_a = conditions_.is_prescribed(ea);
       // Upper storage holds K(a, b) for both triangles; an unsymmetric element gives its
       // symmetric part there (keywords.md §14, UNSYMM=NO).
       const double k =
-          symmetric && symmetrize ? 0.5 * (local.k(a, b) + local.k(b, a)) : local.k(a, b);
+          symmetric && symmetrize ? 0.5 * (local_k(a, b) + local_k(b, a)) : local_k(a, b);
       if (!fixed_a && !fixed_b) {
         values[*position] += k;
       } else if (predicting_ && fixed_a != fixed_b) {
@@ -303,9 +338,52 @@ void ConnectorSystem::scatter(const LocalEquations& l, std::size_t offset, const
   }
 }
 
+void ConnectorSystem::finish_dependent_rows(Eigen::VectorXd& residual, SparseMatrix* tangent) {
+  const DependentDofs& dependents = plan_.dependents;
+  const Eigen::VectorXd& external = conditions_.external();
+  constraint_load_.setZero();
+  curvature_.clear();
+  for (const DependentDof& d : dependents.dofs) {
+    const double load = external[d.equation];
+    if (load != 0.0) {
+      const std::span<const double> gradient = motion_.gradient(d);
+      for (std::uint32_t e = 0; e < d.resolved_count; ++e) {
+        const int eq = dependents.resolved_equation[d.first_resolved + e];
+        residual[eq] -= gradient[e] * load;
+        constraint_load_[eq] += gradient[e] * load;
+      }
+    }
+    if (tangent && context_.nlgeom) {
+      motion_.add_curvature(d, internal_[d.equation] - load, state_.x, state_.rotation,
+                            curvature_);
+    }
+    residual[d.equation] = 0.0;
+  }
+  if (!tangent) return;
+  for (const CurvatureEntry& entry : curvature_) add_curvature(entry, *tangent);
+  for (const DependentDof& d : dependents.dofs) {
+    tangent->values[static_cast<std::size_t>(pattern_->diagonal[static_cast<std::size_t>(
+        d.equation)])] = 1.0;
+  }
+}
+
+void ConnectorSystem::add_curvature(const CurvatureEntry& entry, SparseMatrix& tangent) {
+  const DependentDofs& dependents = plan_.dependents;
+  if (conditions_.is_prescribed(entry.row) || conditions_.is_prescribed(entry.column) ||
+      dependents.is_dependent(entry.row) || dependents.is_dependent(entry.column)) {
+    return;
+  }
+  // Upper storage: the slot of (i, j) stands for both triangles and takes the symmetric part,
+  // half of each (entry_position finds the slot of either).
+  const int position = entry_position(tangent, entry.row, entry.column);
+  const double share = pattern_->symmetric && entry.row != entry.column ? 0.5 : 1.0;
+  if (position >= 0) tangent.values[static_cast<std::size_t>(position)] += share * entry.value;
+}
+
 void ConnectorSystem::apply_correction(const Eigen::VectorXd& dx) {
   if (!context_.nlgeom) {
     state_.x += dx;
+    update_dependents();
     finish_prescribed_correction(dx);
     return;
   }
@@ -337,6 +415,7 @@ void ConnectorSystem::apply_correction(const Eigen::VectorXd& dx) {
     }
   }
   snap_prescribed_rotations();
+  update_dependents();
   finish_prescribed_correction(dx);
 }
 
@@ -530,7 +609,8 @@ double ConnectorSystem::nodal_value(std::int32_t node, int dof) const {
 double ConnectorSystem::reaction(std::int32_t node, int dof) const {
   const int eq = plan_.dofs.equation(node, dof);
   if (eq < 0 || !conditions_.is_prescribed(eq)) return 0.0;
-  return internal_[eq] - conditions_.external()[eq];
+  const double moved = constraint_load_.size() > 0 ? constraint_load_[eq] : 0.0;
+  return internal_[eq] - conditions_.external()[eq] - moved;
 }
 
 double ConnectorSystem::applied_load(std::int32_t node, int dof) const {

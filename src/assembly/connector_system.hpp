@@ -12,6 +12,8 @@
 #include "src/assembly/analysis_state.hpp"
 #include "src/assembly/assembly_pattern.hpp"
 #include "src/assembly/connector_element.hpp"
+#include "src/assembly/constrained_elements.hpp"
+#include "src/assembly/dependent_motion.hpp"
 #include "src/assembly/increment_conditions.hpp"
 #include "src/assembly/spring_element.hpp"
 #include "src/parallel/communicator.hpp"
@@ -97,6 +99,8 @@ class ConnectorSystem final : public NonlinearProblem {
     std::vector<SpringResult> springs;
     std::vector<std::uint8_t> multiplier_active;
     ForceEntries element_forces;
+    Eigen::VectorXd constraint_load;
+    std::string dependent_failure;
   };
   Snapshot snapshot() const;
   void restore(const Snapshot& snapshot);
@@ -113,8 +117,18 @@ class ConnectorSystem final : public NonlinearProblem {
   const AnalysisPlan& plan() const { return plan_; }
 
  private:
-  void scatter(const LocalEquations& l, std::size_t offset, const LocalSystem& local,
-               bool symmetrize, SparseMatrix* tangent);
+  template <typename Residual, typename Tangent>
+  void scatter(std::span<const int> equations, std::size_t offset, const Residual& r,
+               const Tangent& k, bool symmetrize, SparseMatrix* tangent);
+  // Scatters an element's local system, condensed first when it has dependent DOFs.
+  void scatter_element(const LocalEquations& l, std::int32_t expansion, std::size_t offset,
+                       const LocalSystem& local, bool symmetrize, SparseMatrix* tangent);
+  // After the sums: the loads on dependent DOFs move to the DOFs they depend on, the curvature
+  // of the maps (NLGEOM) joins the tangent, and the dependent rows become the identity.
+  void finish_dependent_rows(Eigen::VectorXd& residual, SparseMatrix* tangent);
+  void add_curvature(const CurvatureEntry& entry, SparseMatrix& tangent);
+  // The dependent DOFs (and followers' rotations) from the independent ones.
+  void update_dependents();
   bool connector_finite(std::size_t c, const LocalSystem& local) const;
   // The entries of q̃ (ForceEntries): an element's nodal contributions, and a connector's
   // component forces.
@@ -154,6 +168,13 @@ class ConnectorSystem final : public NonlinearProblem {
   ItemRange owned_connectors_, owned_springs_;  // the elements this process evaluates
   std::vector<std::size_t> history_bytes_;      // per rank: the bytes of its connectors' history
   std::vector<std::string> events_;
+  DependentMotion motion_;
+  CondensedLocal condensed_;
+  std::vector<CurvatureEntry> curvature_;
+  // The loads on dependent DOFs as they act on the DOFs they depend on (Tᵀ f): part of the
+  // reaction of a prescribed reference node.
+  Eigen::VectorXd constraint_load_;
+  std::string dependent_failure_;  // why the dependent DOFs could not follow the last correction
 };
 
 }  // namespace clinch

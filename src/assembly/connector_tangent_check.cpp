@@ -34,8 +34,11 @@ std::string check_tangent(ConnectorSystem& system, int step, int increment) {
   if (evaluated) {
     // Central differences with a step relative to each DOF's magnitude (behaviors.md §1.4).
     Eigen::VectorXd steps(n);
+    // A dependent DOF is no unknown: its value follows the others and its row is the identity.
     for (int j = 0; j < n; ++j) {
-      steps[j] = tangent_check_step(std::abs(system.value(j)), kMotionScale);
+      steps[j] = system.plan().dependents.is_dependent(j)
+                     ? 0.0
+                     : tangent_check_step(std::abs(system.value(j)), kMotionScale);
     }
     report = check_assembled_tangent(system, k, steps);
   }

@@ -1,5 +1,6 @@
 #include "src/model/active_dofs.hpp"
 
+#include <algorithm>
 #include <array>
 
 #include "src/model/connection_types.hpp"
@@ -100,6 +101,73 @@ DofMask element_dofs(const Model& model, const ConnectorDofs& connector_dofs,
   return 0;
 }
 
+// DOFs that *CLOAD lines load at each node (a load on a rigid body's node acts on the body).
+std::vector<DofMask> loaded_dofs(const Model& model) {
+  std::vector<DofMask> loaded(model.nodes.size(), 0);
+  for (const Step& step : model.history.steps) {
+    for (const ConcentratedLoad& load : step.loads) {
+      for (std::int32_t node : load.resolved) {
+        if (node >= 0 && static_cast<std::size_t>(node) < loaded.size()) {
+          loaded[static_cast<std::size_t>(node)] |= dof_bit(load.dof);
+        }
+      }
+    }
+  }
+  return loaded;
+}
+
+bool set_dofs(std::vector<DofMask>& active, std::int32_t node, DofMask mask) {
+  if (node < 0 || static_cast<std::size_t>(node) >= active.size()) return false;
+  DofMask& m = active[static_cast<std::size_t>(node)];
+  if ((m | mask) == m) return false;
+  m |= mask;
+  return true;
+}
+
+// docs/constraints.md "Which DOFs take part": a node that follows another eliminates the DOFs
+// that elements and loads use there, and the node it follows then needs the DOFs those depend
+// on (its rotations too, for a rigid arm); an equation or a link takes part as soon as one of
+// its DOFs does. Repeated until nothing changes, for chains of constraints.
+void add_constraint_dofs(const Model& model, std::vector<DofMask>& active) {
+  const ConstraintModel& c = model.constraints;
+  if (c.followers.empty() && c.equations.empty() && c.links.empty()) return;
+  const bool two_d = model.dimension == 2;
+  const DofMask translations = two_d ? kTranslations2D : kTranslations3D;
+  const DofMask rotations = two_d ? kAll2D & ~kTranslations2D : kAll3D & ~kTranslations3D;
+  const std::vector<DofMask> loaded = loaded_dofs(model);
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (const NodeFollower& f : c.followers) {
+      const auto node = static_cast<std::size_t>(f.node);
+      const DofMask dependent = (active[node] | loaded[node]) & f.dofs;
+      if (!dependent) continue;
+      changed |= set_dofs(active, f.node, dependent);
+      DofMask needed = dependent;
+      const Vec3& x = model.nodes[node].x;
+      const Vec3& x_ref = model.nodes[static_cast<std::size_t>(f.reference)].x;
+      if (f.rigid_arm && (dependent & translations) && x != x_ref) needed |= rotations;
+      changed |= set_dofs(active, f.reference, needed);
+    }
+    for (const LinearConstraint& equation : c.equations) {
+      const bool takes_part = std::any_of(
+          equation.terms.begin(), equation.terms.end(), [&](const LinearTerm& t) {
+            return active[static_cast<std::size_t>(t.node)] & dof_bit(t.dof);
+          });
+      if (!takes_part) continue;
+      for (const LinearTerm& t : equation.terms) changed |= set_dofs(active, t.node, dof_bit(t.dof));
+    }
+    for (const DistanceLink& link : c.links) {
+      if (!((active[static_cast<std::size_t>(link.node)] |
+             active[static_cast<std::size_t>(link.other)]) &
+            translations)) {
+        continue;
+      }
+      changed |= set_dofs(active, link.node, translations);
+      changed |= set_dofs(active, link.other, translations);
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<DofMask> active_dofs(const Model& model) {
@@ -114,6 +182,7 @@ std::vector<DofMask> active_dofs(const Model& model) {
           element_dofs(model, connector_dofs, static_cast<std::int32_t>(e), slot);
     }
   }
+  add_constraint_dofs(model, active);
   return active;
 }
 

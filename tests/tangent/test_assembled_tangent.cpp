@@ -18,27 +18,11 @@
 #include "src/solver/newton.hpp"
 #include "src/solver/tangent_check.hpp"
 #include "tests/tangent/contract_test_laws.hpp"
+#include "tests/tangent/assembled_system.hpp"
 #include "tests/unit/checked_deck.hpp"
 
 namespace clinch {
 namespace {
-
-struct Analysis {
-  CheckedDeck deck;
-  std::optional<AnalysisPlan> plan;
-  std::unique_ptr<ConnectorSystem> system;
-};
-
-std::unique_ptr<Analysis> analyse(const std::string& text) {
-  auto a = std::make_unique<Analysis>();
-  read_deck_text("deck.inp", text, a->deck.sources, a->deck.model, a->deck.sink);
-  EXPECT_FALSE(a->deck.sink.has_errors()) << a->deck.dump();
-  std::string error;
-  a->plan = build_analysis_plan(a->deck.model, &error);
-  EXPECT_TRUE(a->plan) << error;
-  if (a->plan) a->system = std::make_unique<ConnectorSystem>(a->deck.model, *a->plan);
-  return a;
-}
 
 // Two nodes, one connector of `type` (orientation at a, rotated off the global axes), an elastic
 // behaviour on every available component, node 1 held. Every DOF of node 2 is free.
@@ -53,24 +37,6 @@ std::string connector_deck(const std::string& type, bool nlgeom) {
          "0., 0., 0., 5., 25.\n"
          "*BOUNDARY\n1, 1, 6\n*STEP" +
          std::string(nlgeom ? ", NLGEOM" : "") + "\n*STATIC\n*END STEP\n";
-}
-
-// The tangent at the current state against central differences of the residual, with step
-// `step_of(j)` for equation j (prescribed equations are left out); `largest` receives the largest
-// stored entry of the tangent.
-JacobianReport tangent_against_differences(ConnectorSystem& s,
-                                           const std::function<double(int)>& step_of,
-                                           bool symmetric_part, double& largest) {
-  SparseMatrix k = s.pattern();
-  Eigen::VectorXd r(s.size());
-  largest = 0;
-  if (!s.evaluate(r, &k).ok) return {};
-  for (double v : k.values) largest = std::max(largest, std::abs(v));
-  Eigen::VectorXd steps = Eigen::VectorXd::Zero(s.size());
-  for (int j = 0; j < s.size(); ++j) {
-    if (!s.is_prescribed(j)) steps[j] = step_of(j);
-  }
-  return check_assembled_tangent(s, k, steps, symmetric_part);
 }
 
 // At a random state (displacements, finite rotations, multipliers), the assembled tangent equals
@@ -176,38 +142,6 @@ TEST(AssembledTangent, DashpotsMatchFiniteDifferences) {
       s.apply_correction(-state);
     }
   }
-}
-
-// Newton on the current increment with tolerances far below the defaults, so that it iterates
-// down to round-off.
-NewtonReport solve_tightly(ConnectorSystem& s) {
-  Controls tight;
-  tight.translation.residual = 1e-13;
-  tight.translation.correction = 1e-13;
-  tight.rotation.residual = 1e-13;
-  tight.rotation.correction = 1e-13;
-  ConvergenceCriteria criteria(tight);
-  auto solver = make_linear_solver(SolverChoice::Automatic, s.symmetric_storage(), true);
-  std::string message;
-  EXPECT_EQ(solver->analyze(s.pattern(), &message), LinearStatus::Ok) << message;
-  return solve_increment(s, *solver, criteria, NewtonOptions{});
-}
-
-// Each residual is at most C times the square of the previous one once the iterates are close
-// (C = 1 in the deck's units is generous), skipping the pre-asymptotic iterations (r > 1) and
-// round-off (r < `round_off`). `field` 0: forces, 1: moments.
-void expect_quadratic_convergence(const NewtonReport& report, int field,
-                                  double round_off = 1e-9) {
-  std::vector<double> r;
-  for (const IterationNorms& n : report.iterations) r.push_back(n.largest_residual[field]);
-  ASSERT_GE(r.size(), 3u);
-  int asserted = 0;
-  for (std::size_t i = 1; i < r.size(); ++i) {
-    if (r[i - 1] > 1.0 || r[i] < round_off) continue;
-    EXPECT_LE(r[i], 1.0 * r[i - 1] * r[i - 1]) << "iteration " << i;
-    ++asserted;
-  }
-  EXPECT_GE(asserted, 1);
 }
 
 // A pretensioned AXIAL spring (k = 1000, l0 = 1) whose free end is loaded by (100, 50) under
