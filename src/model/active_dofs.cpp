@@ -101,19 +101,27 @@ DofMask element_dofs(const Model& model, const ConnectorDofs& connector_dofs,
   return 0;
 }
 
-// DOFs that *CLOAD lines load at each node (a load on a rigid body's node acts on the body).
-std::vector<DofMask> loaded_dofs(const Model& model) {
-  std::vector<DofMask> loaded(model.nodes.size(), 0);
-  for (const Step& step : model.history.steps) {
-    for (const ConcentratedLoad& load : step.loads) {
-      for (std::int32_t node : load.resolved) {
-        if (node >= 0 && static_cast<std::size_t>(node) < loaded.size()) {
-          loaded[static_cast<std::size_t>(node)] |= dof_bit(load.dof);
-        }
+// DOFs that *CLOAD lines load at each node (a load on a rigid body's node acts on the body), and
+// every DOF of the nodes that nodal output names (a rigid body's node reports how it moves).
+std::vector<DofMask> named_dofs(const Model& model) {
+  std::vector<DofMask> named(model.nodes.size(), 0);
+  auto name = [&named](const std::vector<std::int32_t>& nodes, DofMask mask) {
+    for (std::int32_t node : nodes) {
+      if (node >= 0 && static_cast<std::size_t>(node) < named.size()) {
+        named[static_cast<std::size_t>(node)] |= mask;
       }
     }
+  };
+  for (const Step& step : model.history.steps) {
+    for (const ConcentratedLoad& load : step.loads) name(load.resolved, dof_bit(load.dof));
+    for (const OutputRequest& output : step.outputs) {
+      for (const NodeOutputRequest& request : output.nodes) name(request.resolved, kAll3D);
+    }
+    for (const PrintRequest& print : step.prints) {
+      if (print.node) name(print.resolved, kAll3D);
+    }
   }
-  return loaded;
+  return named;
 }
 
 bool set_dofs(std::vector<DofMask>& active, std::int32_t node, DofMask mask) {
@@ -125,7 +133,7 @@ bool set_dofs(std::vector<DofMask>& active, std::int32_t node, DofMask mask) {
 }
 
 // docs/constraints.md "Which DOFs take part": a node that follows another eliminates the DOFs
-// that elements and loads use there, and the node it follows then needs the DOFs those depend
+// that elements, loads and nodal output use there, and the node it follows then needs the DOFs those depend
 // on (its rotations too, for a rigid arm); an equation or a link takes part as soon as one of
 // its DOFs does. Repeated until nothing changes, for chains of constraints.
 void add_constraint_dofs(const Model& model, std::vector<DofMask>& active) {
@@ -134,12 +142,12 @@ void add_constraint_dofs(const Model& model, std::vector<DofMask>& active) {
   const bool two_d = model.dimension == 2;
   const DofMask translations = two_d ? kTranslations2D : kTranslations3D;
   const DofMask rotations = two_d ? kAll2D & ~kTranslations2D : kAll3D & ~kTranslations3D;
-  const std::vector<DofMask> loaded = loaded_dofs(model);
+  const std::vector<DofMask> named = named_dofs(model);
   for (bool changed = true; changed;) {
     changed = false;
     for (const NodeFollower& f : c.followers) {
       const auto node = static_cast<std::size_t>(f.node);
-      const DofMask dependent = (active[node] | loaded[node]) & f.dofs;
+      const DofMask dependent = (active[node] | named[node]) & f.dofs;
       if (!dependent) continue;
       changed |= set_dofs(active, f.node, dependent);
       DofMask needed = dependent;
