@@ -184,6 +184,11 @@ int run_deck(const RunCommandOptions& options) {
                        plan->springs.size(), node_equations,
                        model.nodes.empty() ? 0.0 : double(node_equations) / model.nodes.size(),
                        plan->dofs.equations() - node_equations));
+  if (!plan->dependents.empty()) {
+    log.info(fmt::format("{} of the active DOFs follow others through kinematic constraints "
+                         "(eliminated: {} condensed elements)",
+                         plan->dependents.dofs.size(), plan->expansions.size()));
+  }
   if (auto stick = default_stick_stiffness_summary(model.behaviors)) log.info(*stick);
   ConnectorSystem system(model, *plan);
   if (communicator) {

@@ -2,11 +2,14 @@
 """Runs a CalculiX test deck through `clinch run` and checks the history table against the
 deck's upstream golden `.dat` output, value by value, to the digits CalculiX prints.
 
-usage: ccx_reference.py CLINCH DECK.inp REFERENCE.dat.ref
+usage: ccx_reference.py CLINCH DECK.inp REFERENCE.dat.ref [SCALE_TOLERANCE]
 
 CalculiX prints 7 significant digits (%.6E). A value passes when clinch's value, rounded the same
-way, equals the printed one (a difference below half a unit of the last printed digit). Nodal
-components that are not active in clinch (no column) must be printed as 0 by CalculiX.
+way, equals the printed one (a difference below half a unit of the last printed digit). With
+SCALE_TOLERANCE, a value also passes within that fraction of the largest printed magnitude of
+its block: the components that are round-off of a larger solution (1e-8 of a reaction of 5)
+are compared at the scale of the solution, not at their own. Nodal components that are not
+active in clinch (no column) must be printed as 0 by CalculiX.
 """
 import csv
 import os
@@ -36,12 +39,14 @@ def read_reference(path):
     return blocks
 
 
-def matches(value, printed):
-    return float(f"{value:.6E}") == printed or abs(value - printed) <= 5e-7 * abs(printed)
+def matches(value, printed, floor=0.0):
+    return (float(f"{value:.6E}") == printed or
+            abs(value - printed) <= max(5e-7 * abs(printed), floor))
 
 
 def main():
     clinch, deck, reference = sys.argv[1:4]
+    scale_tolerance = float(sys.argv[4]) if len(sys.argv) > 4 else 0.0
     # The decks live beside the repository, not in it: without them the test is skipped (77).
     if not os.path.exists(deck):
         print(f"skipped: {deck} is not there")
@@ -65,12 +70,13 @@ def main():
         if row is None:
             print(f"no clinch row at total_time {block['time']}")
             return 1
+        largest = max((abs(v) for _, values in block["rows"] for v in values), default=0.0)
         for node, values in block["rows"]:
             for k, printed in enumerate(values, start=1):
                 column = f"{block['variable']}{k}@{node}"
                 value = float(row[column]) if column in row else 0.0
                 checked += 1
-                if not matches(value, printed):
+                if not matches(value, printed, scale_tolerance * largest):
                     failures += 1
                     print(f"FAIL {column} at t={block['time']}: clinch {value!r}, CalculiX {printed:.6E}")
     print(f"{checked - failures} of {checked} values match {os.path.basename(reference)}")

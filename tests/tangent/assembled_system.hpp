@@ -9,6 +9,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,15 @@ inline JacobianReport tangent_against_differences(ConnectorSystem& s,
     if (!s.is_prescribed(j) && !s.plan().dependents.is_dependent(j)) steps[j] = step_of(j);
   }
   return check_assembled_tangent(s, k, steps, symmetric_part);
+}
+
+// A state of `size` values drawn uniformly from [−amplitude, amplitude] (the same for a seed).
+inline Eigen::VectorXd random_state(int size, unsigned seed, double amplitude) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-amplitude, amplitude);
+  Eigen::VectorXd state(size);
+  for (int i = 0; i < size; ++i) state[i] = u(rng);
+  return state;
 }
 
 // Newton on the current increment with tolerances far below the defaults, so that it iterates

@@ -127,10 +127,7 @@ TEST(AssembledTangent, DashpotsMatchFiniteDifferences) {
     s.set_time(0.1, 0.1);
     s.start_increment(0.0);
     for (unsigned seed : {5u, 6u}) {
-      std::mt19937 rng(seed);
-      std::uniform_real_distribution<double> u(-0.2, 0.2);
-      Eigen::VectorXd state = Eigen::VectorXd::Zero(s.size());
-      for (int i = 0; i < s.size(); ++i) state[i] = u(rng);
+      const Eigen::VectorXd state = random_state(s.size(), seed, 0.2);
       s.apply_correction(state);
       double largest = 0;
       const JacobianReport report =

@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
 
 #include "tests/tangent/assembled_system.hpp"
 
@@ -70,10 +69,7 @@ TEST(ConstraintElimination, CondensedTangentMatchesFiniteDifferences) {
     s.conditions().add_load(dofs.equation(4, 3), 25.0);   // the pin node
     s.start_increment(0.0);
     for (unsigned seed : {7u, 8u}) {
-      std::mt19937 rng(seed);
-      std::uniform_real_distribution<double> u(-0.15, 0.15);
-      Eigen::VectorXd state = Eigen::VectorXd::Zero(s.size());
-      for (int i = 0; i < s.size(); ++i) state[i] = u(rng);
+      const Eigen::VectorXd state = random_state(s.size(), seed, 0.15);
       s.apply_correction(state);
       double largest = 0;
       const JacobianReport report =
