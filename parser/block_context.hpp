@@ -32,6 +32,7 @@ struct ReaderPosition {
   bool in_behavior = false;     // a *CONNECTOR BEHAVIOR block is open (its sub-options follow)
   SourceLoc behavior_loc;       // keyword line of the open (or last) *CONNECTOR BEHAVIOR block
   bool in_material = false;     // a *MATERIAL block is open (its sub-options follow)
+  bool in_coupling = false;     // the last keyword was *COUPLING (*KINEMATIC, *DISTRIBUTING follow)
 };
 
 class BlockContext {

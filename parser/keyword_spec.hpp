@@ -68,6 +68,8 @@ struct KeywordSpec {
   // A sub-option of *MATERIAL (*ELASTIC, *DENSITY, ...): valid only right after the *MATERIAL
   // line or another of its sub-options.
   bool material_suboption = false;
+  // *KINEMATIC and *DISTRIBUTING: valid only right after a *COUPLING line.
+  bool coupling_suboption = false;
   // Outside a behaviour block this keyword means something clinch does not support (*FRICTION
   // of surface contact): E0202 instead of E0608.
   bool unsupported_outside_behavior = false;

@@ -19,6 +19,10 @@ std::vector<KeywordSpec> section_keyword_specs();
 // The sections of held elements, *MATERIAL and its sub-options, *SURFACE, *DISPLAY BODY
 // (structure.cpp).
 std::vector<KeywordSpec> structure_keyword_specs();
+// *RIGID BODY (rigid_body.cpp).
+std::vector<KeywordSpec> rigid_body_keyword_specs();
+// *KINEMATIC COUPLING, *COUPLING, *KINEMATIC, *DISTRIBUTING (coupling.cpp).
+std::vector<KeywordSpec> coupling_keyword_specs();
 // *CONNECTOR BEHAVIOR and its sub-options except derived components, potentials and friction.
 std::vector<KeywordSpec> behavior_keyword_specs();
 // *CONNECTOR DERIVED COMPONENT, *CONNECTOR POTENTIAL, *CONNECTOR FRICTION, *FRICTION.

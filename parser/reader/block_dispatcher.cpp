@@ -28,6 +28,10 @@ void BlockDispatcher::open(KeywordLine line) {
       (!stands_as->material_suboption && stands_as->level != KeywordLevel::Anywhere)) {
     structure_.leave_material();
   }
+  if (!stands_as ||
+      (!stands_as->coupling_suboption && stands_as->level != KeywordLevel::Anywhere)) {
+    structure_.leave_coupling();
+  }
   const ReaderPosition& at = structure_.position();
   const std::string_view as = stands_as ? std::string_view(stands_as->name) : kl.name;
   misspelt_.keyword(

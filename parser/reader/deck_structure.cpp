@@ -33,6 +33,9 @@ bool DeckStructure::check_level(const KeywordSpec& spec, const KeywordLine& line
     return wrong_level(
         fmt::format("'{}' must follow *MATERIAL (it is one of its sub-options)", kw));
   }
+  if (spec.coupling_suboption && !p.in_coupling) {
+    return wrong_level(fmt::format("'{}' must follow *COUPLING right after its line", kw));
+  }
   if (p.in_instance && spec.name != "END INSTANCE" && spec.level != KeywordLevel::Anywhere) {
     sink_.report(DiagCode::unsupported_keyword, line.loc,
                  fmt::format("'{}' inside *INSTANCE: definitions inside an instance are not "
@@ -97,6 +100,8 @@ bool DeckStructure::enter(const KeywordSpec& spec, const KeywordLine& line,
     p.behavior_loc = line.loc;
   } else if (n == "MATERIAL") {
     p.in_material = true;
+  } else if (n == "COUPLING") {
+    p.in_coupling = true;
   } else if (n == "STEP") {
     if (p.in_step) {
       sink_.report(DiagCode::missing_end_step, open_step_loc_,

@@ -27,6 +27,8 @@ class DeckStructure {
   void leave_behavior() { position_.in_behavior = false; }
   // Any keyword that is not a material sub-option closes the material block.
   void leave_material() { position_.in_material = false; }
+  // Any keyword closes the *COUPLING block: *KINEMATIC or *DISTRIBUTING follows it at once.
+  void leave_coupling() { position_.in_coupling = false; }
 
   // Checks where a keyword stands (input-syntax.md §7.1, §8); false when the block is skipped.
   bool check_level(const KeywordSpec& spec, const KeywordLine& line);

@@ -45,9 +45,11 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
        "ground) and is absent for SPRING1 and DASHPOT1. Other types: `label`, then every node of "
        "the element; an element with more than 15 nodes goes on over lines that end with a "
        "comma (16 entries a line).",
-       {{"a block of solid, shell, membrane, rigid, beam, truss or planar elements",
-         "refused once per block at TYPE=: clinch has no formulation for a deformable element; "
-         "make its part a rigid body (*RIGID BODY) or remove it"},
+       {{"a block of solid, shell, membrane, rigid, beam, truss or planar elements outside a "
+         "rigid body",
+         "refused once per block at TYPE= (for the elements no *RIGID BODY carries): clinch has "
+         "no formulation for a deformable element; make its part a rigid body (*RIGID BODY) or "
+         "remove it"},
         {"TYPE= other types (cohesive, gasket, gap, heat transfer, acoustic, user elements, ...)",
          "not read"}},
        {{"TYPE=MASS, ROTARYI", "inertia only, which a *STATIC step does not use"}}},
@@ -75,7 +77,8 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
       {"SPRING", "Properties of SPRINGA, SPRING1 and SPRING2 elements.",
        "Line 1: the degrees of freedom (SPRING1: `dof`; SPRING2: `dof1, dof2`; SPRINGA: blank). "
        "Then the stiffness, or with NONLINEAR rows of `force, relative displacement`.",
-       {kFieldDependence, kTemperatureDependence}},
+       {kFieldDependence, kTemperatureDependence},
+       {{"a DOF line of SPRINGA", "Abaqus ignores it: the direction is the line between the nodes"}}},
       {"DASHPOT", "Properties of DASHPOTA, DASHPOT1 and DASHPOT2 elements.",
        "Line 1: the degrees of freedom (DASHPOT1: `dof`; DASHPOT2: `dof1, dof2`; DASHPOTA: "
        "blank). Then the coefficient, or with NONLINEAR rows of `force, relative velocity`.",
@@ -131,6 +134,43 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
       {"DISPLAY BODY",
        "Shows an instance as a display body that follows up to three nodes; read and kept.",
        "Optional: `node 1[, node 2, node 3]`."},
+      {"RIGID BODY",
+       "Makes nodes and elements a rigid body that follows its reference node: nodes of the "
+       "ELSET's elements, TIE NSET and NSET (CalculiX) in translation and rotation, PIN NSET in "
+       "translation; the ELSET's elements need no section then. REF NODE= is required (as in "
+       "Abaqus/Standard: clinch does not generate a node as CalculiX does without it).",
+       "Abaqus/Explicit's rigid element thickness (ignored with a warning).",
+       {{"POSITION=CENTER OF MASS",
+         "needs the masses of the body, which a static analysis does not have"}},
+       {{"ISOTHERMAL, ALPHA", "temperatures play no part in clinch's mechanical steps"},
+        {"DENSITY, NODAL THICKNESS, OFFSET", "Abaqus/Explicit only"},
+        {"ANALYTICAL SURFACE", "an analytical surface has no nodes: no effect on the motion"}}},
+      {"KINEMATIC COUPLING",
+       "Makes DOFs of nodes follow the rigid motion of a reference node (REF NODE=).",
+       "`node or node set, first DOF[, last DOF]` (last DOF: the first when blank).",
+       {{"ORIENTATION= with some but not all translations or rotations",
+         "the constrained DOFs would depend on the local system, which clinch does not "
+         "transform"}}},
+      {"COUPLING",
+       "Couples the nodes of a surface (SURFACE=, within INFLUENCE RADIUS=) to a reference node "
+       "(REF NODE=); *KINEMATIC or *DISTRIBUTING follows at once.",
+       "",
+       {{"ORIENTATION= with some but not all translations or rotations",
+         "the constrained DOFs would depend on the local system, which clinch does not "
+         "transform"},
+        {"a face without a node table (C3D5, C3D15, SC6R, ..., or the whole exterior)",
+         "clinch knows the faces of C3D4/6/8/10/20, shells and R3D3/R3D4"}}},
+      {"KINEMATIC",
+       "The method of the *COUPLING above: the coupling nodes follow the reference node's rigid "
+       "motion in the DOFs listed.",
+       "Optional: `first DOF[, last DOF]` (none: every DOF)."},
+      {"DISTRIBUTING",
+       "The method of the *COUPLING above: the reference node moves with the weighted average "
+       "motion of the coupling nodes (small displacements).",
+       "Optional: `first DOF[, last DOF]`; every translation is always coupled (none or a blank "
+       "first field: every DOF).",
+       {{"COUPLING=STRUCTURAL", "it also couples the rotations of the coupling nodes"},
+        {"an element-based SURFACE=", "its weights need the faces' tributary areas"}}},
       {"CONNECTOR BEHAVIOR",
        "Opens a named connector behaviour; the options that follow (elasticity, damping, stops, "
        "plasticity, friction, damage, ...) belong to it.",

@@ -89,6 +89,59 @@ const ElementTypeInfo* find_element_type(std::string_view name) {
 
 std::span<const ElementTypeInfo> element_types() { return kTypes; }
 
+namespace {
+
+// Tetrahedra (C3D4, C3D10): corners, then the mid-side nodes of the face's edges.
+constexpr int kTet[4][6] = {{1, 2, 3, 5, 6, 7}, {1, 4, 2, 8, 9, 5},
+                            {2, 4, 3, 9, 10, 6}, {3, 4, 1, 10, 8, 7}};
+// Wedges (C3D6): two triangles and three quadrilaterals.
+constexpr int kWedgeTri[2][3] = {{1, 2, 3}, {4, 6, 5}};
+constexpr int kWedgeQuad[3][4] = {{1, 4, 5, 2}, {2, 5, 6, 3}, {3, 6, 4, 1}};
+// Hexahedra (C3D8, C3D20): corners, then the mid-side nodes.
+constexpr int kHex[6][8] = {{1, 2, 3, 4, 9, 10, 11, 12},   {5, 8, 7, 6, 16, 15, 14, 13},
+                            {1, 5, 6, 2, 17, 13, 18, 9},   {2, 6, 7, 3, 18, 14, 19, 10},
+                            {3, 7, 8, 4, 19, 15, 20, 11},  {4, 8, 5, 1, 20, 16, 17, 12}};
+constexpr int kAllNodes[9] = {1, 2, 3, 4, 5, 6, 7, 8, 9};
+
+int face_number(std::string_view face) {
+  if (face.size() == 2 && face[0] == 'S' && face[1] >= '1' && face[1] <= '6') {
+    return face[1] - '0';
+  }
+  return 0;
+}
+
+}  // namespace
+
+std::span<const int> face_node_positions(const ElementTypeInfo& info, std::string_view face) {
+  const bool side = face == "SPOS" || face == "SNEG";
+  const int n = face_number(face);
+  switch (info.family) {
+    case F::Shell:
+    case F::Membrane:
+    case F::Rigid:
+      // Surface elements of three-dimensional models: both sides hold every node.
+      if (side && info.nodes <= 9 && (info.family != F::Rigid || info.name.substr(0, 3) == "R3D")) {
+        return std::span<const int>(kAllNodes, static_cast<std::size_t>(info.nodes));
+      }
+      return {};
+    case F::Solid:
+      if (n == 0) return {};
+      if ((info.nodes == 4 || info.nodes == 10) && n <= 4 && info.name.substr(0, 3) == "C3D") {
+        return std::span<const int>(kTet[n - 1], info.nodes == 4 ? 3 : 6);
+      }
+      if (info.nodes == 6 && info.name.substr(0, 3) == "C3D" && n <= 5) {
+        return n <= 2 ? std::span<const int>(kWedgeTri[n - 1], 3)
+                      : std::span<const int>(kWedgeQuad[n - 3], 4);
+      }
+      if ((info.nodes == 8 || info.nodes == 20) && info.name.substr(0, 3) == "C3D") {
+        return std::span<const int>(kHex[n - 1], info.nodes == 8 ? 4 : 8);
+      }
+      return {};
+    default:
+      return {};
+  }
+}
+
 std::string_view element_family_name(ElementFamily family) {
   switch (family) {
     case F::Analysed: return "connector";

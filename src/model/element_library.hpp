@@ -35,6 +35,14 @@ std::span<const ElementTypeInfo> element_types();
 // "solid", "shell", "mass", ... for messages.
 std::string_view element_family_name(ElementFamily family);
 
+// The positions (1-based, in the element's node order) of the nodes of face `face` ("S1"…"S6",
+// "SPOS", "SNEG") of an element of `info`'s type (the manual's face numbering of the solid,
+// shell and rigid element libraries): the linear and quadratic tetrahedra, wedges and hexahedra
+// (C3D4, C3D10, C3D6, C3D8, C3D20 and their variants), and the two sides SPOS/SNEG of shells,
+// membranes and R3D3/R3D4 (every node). Empty when the type has no such face, or when clinch
+// does not know the type's faces (C3D5, C3D15, SC6R, ...).
+std::span<const int> face_node_positions(const ElementTypeInfo& info, std::string_view face);
+
 // MASS and ROTARYI: inertia only, no stiffness (Abaqus: no role in a *STATIC step).
 inline bool is_inertia_only(ElementFamily family) {
   return family == ElementFamily::Mass || family == ElementFamily::RotaryInertia;

@@ -6,6 +6,7 @@ void resolve_model(Model& model, DiagnosticSink& sink) {
   resolve_geometry(model, sink);
   resolve_sections(model, sink);
   resolve_structure(model, sink);
+  resolve_rigid_bodies(model, sink);
   resolve_potentials_and_friction(model, sink);
   resolve_history(model, sink);
 }

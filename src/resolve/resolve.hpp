@@ -18,6 +18,9 @@ void resolve_geometry(Model& model, DiagnosticSink& sink);
 void resolve_sections(Model& model, DiagnosticSink& sink);
 // The sections, materials, surfaces and display bodies of held elements (structure_model.hpp).
 void resolve_structure(Model& model, DiagnosticSink& sink);
+// *RIGID BODY and the couplings into the followers and equations of constraint_model.hpp; before
+// resolve_history, whose active_dofs() reads them (src/resolve/resolve_rigid_bodies.cpp).
+void resolve_rigid_bodies(Model& model, DiagnosticSink& sink);
 // Derived components, potentials and friction (derived-components-and-potentials.md, friction.md):
 // names inside each behaviour block, classification, and the rules that need it.
 void resolve_potentials_and_friction(Model& model, DiagnosticSink& sink);

@@ -537,13 +537,14 @@ class SectionValidator {
         properties.push_back(&spring.first_line_as_property);
         return true;
       }
-      if (spring.first_line_ok) {
-        sink_.report(DiagCode::spring_dof_line, spring.first_line_loc,
-                     fmt::format("{} takes a blank DOF line after {} (its direction is the line "
-                                 "between its nodes)",
-                                 type_name, words.keyword));
-      }
-      return false;
+      // Abaqus ignores the DOF line of SPRINGA and DASHPOTA (the manual's *SPRING: "this line
+      // can be left blank"): their direction is the line between their nodes.
+      if (!spring.first_line_ok) return false;
+      sink_.report(DiagCode::springa_dof_line_ignored, spring.first_line_loc,
+                   fmt::format("the DOF line of {} after {} is ignored (its direction is the "
+                               "line between its nodes)",
+                               type_name, words.keyword));
+      return true;
     }
     const std::size_t needed = spring_form(spring.type) == ElementType::Spring1 ? 1 : 2;
     if (!spring.first_line_ok) return false;
