@@ -50,10 +50,13 @@ std::string check_tangent(ConnectorSystem& system, int step, int increment) {
     return fmt::format("tangent check at step {} increment {}: {}", step, increment,
                        report.summary());
   }
+  const std::size_t dependent = system.plan().dependents.dofs.size();
   return fmt::format(
-             "tangent check at step {} increment {}: {} equations, {} entries compared, largest "
-             "entry {:.6g}, {} storage",
-             step, increment, n, report.compared, report.largest_analytic,
+             "tangent check at step {} increment {}: {} equations{}, {} entries compared, "
+             "largest entry {:.6g}, {} storage",
+             step, increment, n,
+             dependent ? fmt::format(" ({} dependent left out)", dependent) : std::string(),
+             report.compared, report.largest_analytic,
              k.symmetric_upper ? "symmetric-upper" : "full") +
          report.table(kReported, "K");
 }
