@@ -8,10 +8,23 @@ namespace clinch {
 AssemblyPattern build_assembly_pattern(const AnalysisPlan& plan, bool symmetric) {
   AssemblyPattern p;
   p.symmetric = symmetric;
-  SparsityBuilder builder(plan.dofs.equations(), symmetric);
+  // The pattern is over the solved equations: the dependent ones have no row
+  // (dependent_dofs.hpp).
+  const DependentDofs& dependents = plan.dependents;
+  SparsityBuilder builder(dependents.solved_count(plan.dofs), symmetric);
+  // An element's equations: its own, or those of its condensed system (constrained_elements.hpp),
+  // in the solved numbering.
+  std::vector<int> solved;
+  auto in_solved_numbering = [&](std::span<const int> l) -> std::span<const int> {
+    if (dependents.empty()) return l;
+    solved.clear();
+    for (int eq : l) solved.push_back(eq < 0 ? eq : dependents.solved(eq));
+    return solved;
+  };
+  auto equations = [&](const auto& r) {
+    return in_solved_numbering(scatter_equations(plan, r.local, r.expansion));
+  };
   // An element's local entries: its upper triangle, or all of them; the vectors are sized once.
-  // An element's equations: its own, or those of its condensed system (constrained_elements.hpp).
-  auto equations = [&](const auto& r) { return scatter_equations(plan, r.local, r.expansion); };
   auto entries = [&](std::span<const int> l) {
     const auto n = l.size();
     return symmetric ? n * (n + 1) / 2 : n * n;
@@ -27,16 +40,16 @@ AssemblyPattern build_assembly_pattern(const AnalysisPlan& plan, bool symmetric)
   for (const ConnectorRecord& r : plan.connectors) builder.couple(equations(r));
   for (const SpringRecord& r : plan.springs) builder.couple(equations(r));
   // The curvature of rigid arms and links under NLGEOM couples the equations they read.
-  const DependentDofs& dependents = plan.dependents;
   for (const DependentDof& d : dependents.dofs) {
     if (!d.curved()) continue;
     std::vector<int> read(dependents.term_equation.begin() + d.first_term,
                           dependents.term_equation.begin() + d.first_term + d.term_count);
     for (int i = 0; i < 3; ++i) read.push_back(plan.dofs.equation(d.reference, 4 + i));
-    builder.couple(read);
+    std::erase_if(read, [&dependents](int eq) { return eq < 0 || dependents.is_dependent(eq); });
+    builder.couple(in_solved_numbering(read));
   }
   p.matrix = builder.build();
-  p.matrix.node_block = plan.dofs.uniform_node_block();
+  p.matrix.node_block = dependents.solved_node_block(plan.dofs);
   p.positions.reserve(local_entries);
   auto place = [&](std::span<const int> l) {
     const std::size_t offset = p.positions.size();

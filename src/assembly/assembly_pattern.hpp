@@ -17,7 +17,7 @@ struct AssemblyPattern {
   // first, then springs, each from its offset below.
   std::vector<int> positions;
   std::vector<std::size_t> connector_offset, spring_offset;
-  std::vector<int> diagonal;  // position of each equation's diagonal entry
+  std::vector<int> diagonal;  // position of each solved equation's diagonal entry
 };
 
 AssemblyPattern build_assembly_pattern(const AnalysisPlan& plan, bool symmetric);

@@ -29,7 +29,11 @@ std::string ConnectorStepProblem::check_tangent(int step, int increment) {
 }
 
 std::string ConnectorStepProblem::describe_failure(const NewtonReport& report) const {
-  return clinch::describe_failure(model_, system_.plan(), report);
+  NewtonReport named = report;  // Newton names a solved equation
+  if (named.failed_equation >= 0) {
+    named.failed_equation = system_.equation_of_solved(named.failed_equation);
+  }
+  return clinch::describe_failure(model_, system_.plan(), named);
 }
 
 }  // namespace clinch

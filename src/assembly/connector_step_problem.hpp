@@ -36,8 +36,10 @@ class ConnectorStepProblem final : public StepProblem {
   StepRequest step_request() const override { return system_.step_request(); }
 
   std::string describe_failure(const NewtonReport& report) const override;
+  // Newton names a solved equation (connector_system.hpp).
   std::string failure_note(int failed_equation) const override {
-    return system_.failure_note(failed_equation);
+    return system_.failure_note(failed_equation < 0 ? failed_equation
+                                                    : system_.equation_of_solved(failed_equation));
   }
 
  private:

@@ -234,18 +234,25 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
   }
   if (communicator_) exchange(tangent, failed);
   if (!failed.ok) return failed;
-  residual = internal_ - conditions_.external();
-  if (predicting_ && tangent) residual += predictor_;
-  if (!plan_.dependents.empty()) finish_dependent_rows(residual, tangent);
+  // Over every equation; Newton sees the solved ones (dependent_dofs.hpp).
+  const DependentDofs& dependents = plan_.dependents;
+  Eigen::VectorXd& full = dependents.empty() ? residual : full_residual_;
+  full = internal_ - conditions_.external();
+  if (predicting_ && tangent) full += predictor_;
+  if (!dependents.empty()) finish_dependent_rows(full, tangent);
   for (int eq : conditions_.prescribed()) {
     // Newton's row of a prescribed DOF is Δu = target − u. A reaction that overflows takes the
     // row's place, so that Newton stops on it rather than report it (principle 8).
-    residual[eq] =
+    full[eq] =
         std::isfinite(internal_[eq]) ? state_.x[eq] - conditions_.target(eq) : internal_[eq];
     if (tangent) {
-      tangent->values[static_cast<std::size_t>(pattern_->diagonal[static_cast<std::size_t>(eq)])] =
-          1.0;
+      tangent->values[static_cast<std::size_t>(
+          pattern_->diagonal[static_cast<std::size_t>(dependents.solved(eq))])] = 1.0;
     }
+  }
+  if (!dependents.empty()) {
+    residual.resize(size());
+    for (int i = 0; i < size(); ++i) residual[i] = full[dependents.equation(i)];
   }
   return {};
 }
@@ -361,10 +368,6 @@ void ConnectorSystem::finish_dependent_rows(Eigen::VectorXd& residual, SparseMat
   }
   if (!tangent) return;
   for (const CurvatureEntry& entry : curvature_) add_curvature(entry, *tangent);
-  for (const DependentDof& d : dependents.dofs) {
-    tangent->values[static_cast<std::size_t>(pattern_->diagonal[static_cast<std::size_t>(
-        d.equation)])] = 1.0;
-  }
 }
 
 void ConnectorSystem::add_curvature(const CurvatureEntry& entry, SparseMatrix& tangent) {
@@ -375,19 +378,27 @@ void ConnectorSystem::add_curvature(const CurvatureEntry& entry, SparseMatrix& t
   }
   // Upper storage: the slot of (i, j) stands for both triangles and takes the symmetric part,
   // half of each (entry_position finds the slot of either).
-  const int position = entry_position(tangent, entry.row, entry.column);
+  const int position =
+      entry_position(tangent, dependents.solved(entry.row), dependents.solved(entry.column));
   const double share = pattern_->symmetric && entry.row != entry.column ? 0.5 : 1.0;
   if (position >= 0) tangent.values[static_cast<std::size_t>(position)] += share * entry.value;
 }
 
-void ConnectorSystem::apply_correction(const Eigen::VectorXd& dx) {
+void ConnectorSystem::apply_correction(const Eigen::VectorXd& solved_dx) {
+  // A correction of the solved equations; the dependent ones follow in update_dependents.
+  const DependentDofs& dependents = plan_.dependents;
+  if (!dependents.empty()) {
+    full_correction_.setZero(plan_.dofs.equations());
+    for (int i = 0; i < size(); ++i) full_correction_[dependents.equation(i)] = solved_dx[i];
+  }
+  const Eigen::VectorXd& dx = dependents.empty() ? solved_dx : full_correction_;
   if (!context_.nlgeom) {
     state_.x += dx;
     update_dependents();
     finish_prescribed_correction(dx);
     return;
   }
-  for (int eq = 0; eq < size(); ++eq) {
+  for (int eq = 0; eq < plan_.dofs.equations(); ++eq) {
     if (plan_.dofs.field(eq) != EquationField::Rotation) state_.x[eq] += dx[eq];
   }
   // Finite rotations: R ← exp(Δθ̂) R with Δθ a spatial spin (connection-types.md §3.2); the
@@ -429,7 +440,12 @@ void ConnectorSystem::measure(const Eigen::VectorXd& residual, const Eigen::Vect
   // q̃ (keywords.md §16 field 1): the entries of the elements, then the applied loads.
   ForceEntries entries = element_forces_;
   ScaledNorm residual_norm, correction_norm;
-  for (int eq = 0; eq < size(); ++eq) {
+  const DependentDofs& dependents = plan_.dependents;
+  for (const DependentDof& d : dependents.dofs) {  // loads on dependent DOFs, which have no row
+    entries.add(force_field(d.equation), std::abs(conditions_.external()[d.equation]));
+  }
+  for (int i = 0; i < size(); ++i) {
+    const int eq = dependents.equation(i);
     const EquationField field = plan_.dofs.field(eq);
     if (field == EquationField::TranslationalMultiplier ||
         field == EquationField::RotationalMultiplier) {
@@ -438,18 +454,18 @@ void ConnectorSystem::measure(const Eigen::VectorXd& residual, const Eigen::Vect
       const double tolerance =
           1e-8 * (field == EquationField::TranslationalMultiplier ? plan_.length_scale : 1.0);
       norms.constraint_violation =
-          std::max(norms.constraint_violation, std::abs(residual[eq]) / tolerance);
+          std::max(norms.constraint_violation, std::abs(residual[i]) / tolerance);
       continue;
     }
     const int f = field == EquationField::Translation ? 0 : 1;
     entries.add(f, std::abs(conditions_.external()[eq]));
     if (conditions_.is_prescribed(eq)) continue;
-    norms.largest_residual[f] = max_keeping_nan(norms.largest_residual[f], std::abs(residual[eq]));
-    residual_norm.add(residual[eq]);
+    norms.largest_residual[f] = max_keeping_nan(norms.largest_residual[f], std::abs(residual[i]));
+    residual_norm.add(residual[i]);
     norms.largest_increment[f] =
         max_keeping_nan(norms.largest_increment[f], std::abs(state_.x[eq] - state_.x_n[eq]));
     if (correction) {
-      const double dx = (*correction)[eq];
+      const double dx = (*correction)[i];
       norms.largest_correction[f] = max_keeping_nan(norms.largest_correction[f], std::abs(dx));
       correction_norm.add(dx);
     }

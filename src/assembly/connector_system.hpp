@@ -61,7 +61,10 @@ class ConnectorSystem final : public NonlinearProblem {
   bool is_prescribed(int equation) const { return conditions_.is_prescribed(equation); }
 
   // ---- NonlinearProblem ----
-  int size() const override { return plan_.dofs.equations(); }
+  // The solved equations: every equation but the dependent ones (dependent_dofs.hpp); residuals
+  // and corrections are in this numbering, the state and the conditions in the equations'.
+  int size() const override { return plan_.dependents.solved_count(plan_.dofs); }
+  int equation_of_solved(int solved) const { return plan_.dependents.equation(solved); }
   const SparseMatrix& pattern() const override { return pattern_->matrix; }
   EvalStatus evaluate(Eigen::VectorXd& residual, SparseMatrix* tangent) override;
   void apply_correction(const Eigen::VectorXd& correction) override;
@@ -174,7 +177,9 @@ class ConnectorSystem final : public NonlinearProblem {
   // The loads on dependent DOFs as they act on the DOFs they depend on (Tᵀ f): part of the
   // reaction of a prescribed reference node.
   Eigen::VectorXd constraint_load_;
-  std::string dependent_failure_;  // why the dependent DOFs could not follow the last correction
+  std::string dependent_failure_;
+  // With dependent DOFs: the residual over every equation, and a correction expanded to them.
+  Eigen::VectorXd full_residual_, full_correction_;  // why the dependent DOFs could not follow the last correction
 };
 
 }  // namespace clinch

@@ -34,11 +34,9 @@ std::string check_tangent(ConnectorSystem& system, int step, int increment) {
   if (evaluated) {
     // Central differences with a step relative to each DOF's magnitude (behaviors.md §1.4).
     Eigen::VectorXd steps(n);
-    // A dependent DOF is no unknown: its value follows the others and its row is the identity.
     for (int j = 0; j < n; ++j) {
-      steps[j] = system.plan().dependents.is_dependent(j)
-                     ? 0.0
-                     : tangent_check_step(std::abs(system.value(j)), kMotionScale);
+      steps[j] = tangent_check_step(std::abs(system.value(system.equation_of_solved(j))),
+                                    kMotionScale);
     }
     report = check_assembled_tangent(system, k, steps);
   }
@@ -55,7 +53,8 @@ std::string check_tangent(ConnectorSystem& system, int step, int increment) {
              "tangent check at step {} increment {}: {} equations{}, {} entries compared, "
              "largest entry {:.6g}, {} storage",
              step, increment, n,
-             dependent ? fmt::format(" ({} dependent left out)", dependent) : std::string(),
+             dependent ? fmt::format(" (and {} eliminated by constraints)", dependent)
+                       : std::string(),
              report.compared, report.largest_analytic,
              k.symmetric_upper ? "symmetric-upper" : "full") +
          report.table(kReported, "K");

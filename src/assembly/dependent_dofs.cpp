@@ -203,6 +203,23 @@ bool DependentDofs::any_curved() const {
   return std::any_of(dofs.begin(), dofs.end(), [](const DependentDof& d) { return d.curved(); });
 }
 
+int DependentDofs::solved_node_block(const DofMap& map) const {
+  if (dofs.empty()) return map.uniform_node_block();
+  if (map.equations() != map.node_equations()) return 1;  // multipliers
+  int common = 0;
+  for (std::size_t node = 0; node < map.nodes(); ++node) {
+    int solved = 0;
+    for (int dof = 1; dof <= 6; ++dof) {
+      const int eq = map.equation(static_cast<std::int32_t>(node), dof);
+      if (eq >= 0 && !is_dependent(eq)) ++solved;
+    }
+    if (solved == 0) continue;
+    if (common != 0 && solved != common) return 1;
+    common = solved;
+  }
+  return common == 0 ? 1 : common;
+}
+
 bool build_dependent_dofs(const Model& model, const DofMap& dofs, DependentDofs& out,
                           std::string* error) {
   out = {};
@@ -212,7 +229,14 @@ bool build_dependent_dofs(const Model& model, const DofMap& dofs, DependentDofs&
     out.of_equation.clear();
     return true;
   }
-  return builder.order(error);
+  if (!builder.order(error)) return false;
+  out.solved_of_equation.assign(out.of_equation.size(), -1);
+  for (std::size_t eq = 0; eq < out.of_equation.size(); ++eq) {
+    if (out.of_equation[eq] >= 0) continue;
+    out.solved_of_equation[eq] = static_cast<int>(out.equation_of_solved.size());
+    out.equation_of_solved.push_back(static_cast<int>(eq));
+  }
+  return true;
 }
 
 }  // namespace clinch

@@ -58,12 +58,30 @@ struct DependentDofs {
   std::vector<std::int32_t> resolved_via_entry;
   // Nodes whose rotation is the rotation of another (NLGEOM: R_node = R_reference).
   std::vector<std::pair<std::int32_t, std::int32_t>> rotation_followers;
+  // The equations Newton solves: every equation but the dependent ones, in their order. Both
+  // empty when no DOF is dependent: then the solved numbering is the equation numbering.
+  std::vector<int> solved_of_equation;  // −1 for a dependent equation
+  std::vector<int> equation_of_solved;
 
   bool empty() const { return dofs.empty(); }
   bool is_dependent(int equation) const {
     return !of_equation.empty() && of_equation[static_cast<std::size_t>(equation)] >= 0;
   }
   bool any_curved() const;
+  int solved(int equation) const {
+    return solved_of_equation.empty() ? equation
+                                      : solved_of_equation[static_cast<std::size_t>(equation)];
+  }
+  int equation(int solved) const {
+    return equation_of_solved.empty() ? solved
+                                      : equation_of_solved[static_cast<std::size_t>(solved)];
+  }
+  int solved_count(const DofMap& map) const {
+    return map.equations() - static_cast<int>(dofs.size());
+  }
+  // SparseMatrix::node_block of the solved system: DofMap::uniform_node_block without the
+  // dependent DOFs (1 when the nodes keep different numbers of solved DOFs).
+  int solved_node_block(const DofMap& map) const;
 };
 
 // The dependent DOFs of the model's resolved constraints over the DOF map. Returns false with

@@ -44,8 +44,8 @@ inline std::unique_ptr<Analysis> analyse(const std::string& text,
 }
 
 // The tangent at the current state against central differences of the residual, with step
-// `step_of(j)` for equation j (prescribed and dependent equations are left out); `largest`
-// receives the largest stored entry of the tangent.
+// `step_of(j)` for equation j (prescribed equations are left out; the dependent ones are not
+// solved for); `largest` receives the largest stored entry of the tangent.
 inline JacobianReport tangent_against_differences(ConnectorSystem& s,
                                                   const std::function<double(int)>& step_of,
                                                   bool symmetric_part, double& largest) {
@@ -56,7 +56,8 @@ inline JacobianReport tangent_against_differences(ConnectorSystem& s,
   for (double v : k.values) largest = std::max(largest, std::abs(v));
   Eigen::VectorXd steps = Eigen::VectorXd::Zero(s.size());
   for (int j = 0; j < s.size(); ++j) {
-    if (!s.is_prescribed(j) && !s.plan().dependents.is_dependent(j)) steps[j] = step_of(j);
+    const int equation = s.equation_of_solved(j);
+    if (!s.is_prescribed(equation)) steps[j] = step_of(equation);
   }
   return check_assembled_tangent(s, k, steps, symmetric_part);
 }
