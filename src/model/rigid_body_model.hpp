@@ -61,10 +61,12 @@ struct CouplingDefinition {
   std::optional<Name> surface;
   std::optional<double> influence_radius;
   // ORIENTATION=: accepted when the constrained DOFs do not depend on it (checked in resolve).
-  std::optional<SourceLoc> orientation_loc;
+  std::optional<Name> orientation;
+  SourceLoc orientation_loc;  // the parameter's name
   // *KINEMATIC / *DISTRIBUTING data lines; none: every DOF.
   std::vector<DofRange> dof_ranges;
   Weighting weighting = Weighting::Uniform;
+  bool refused = false;  // a data line was refused (reported): resolve leaves it out
   // Resolved.
   std::int32_t reference = -1;
   std::vector<std::int32_t> nodes;    // coupling nodes (global), without the reference node

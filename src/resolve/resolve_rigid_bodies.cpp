@@ -81,9 +81,10 @@ class ConstraintResolver {
       const ConstraintSource& there = constraints_.sources[static_cast<std::size_t>(other.source)];
       sink_
           .report(DiagCode::constraint_conflict, here.loc,
-                  fmt::format("node {} is already constrained by the {} (DOF{} {}); a DOF can "
+                  fmt::format("node {} is already constrained by {} {} (DOF{} {}); a DOF can "
                               "follow one definition only",
-                              node_name(model_, node), there.keyword,
+                              node_name(model_, node),
+                              there.keyword == here.keyword ? "another" : "a", there.keyword,
                               std::has_single_bit(both) ? "" : "s", dof_list(both)))
           .notes.push_back({there.loc, fmt::format("the {} is here", there.keyword)});
       return false;
@@ -210,6 +211,15 @@ class ConstraintResolver {
                                node_name(model_, body.rotation_node)));
       return;
     }
+    if (body.rotation_node >= 0 && model_.dimension == 2) {
+      // The rotation about z would be the ROT NODE's third translation, which a
+      // two-dimensional model does not have.
+      sink_.report(DiagCode::unsupported_option, body.rot_node->loc,
+                   "ROT NODE is not supported in a two-dimensional model (its third translation "
+                   "would carry the rotation); leave it out: the reference node's rotation is "
+                   "DOF 6");
+      return;
+    }
     const std::int32_t source = add_source("*RIGID BODY", body.keyword_loc);
     const DofMask all = static_cast<DofMask>(translations(model_) | rotations(model_));
     for (std::int32_t n : body.tie_nodes) add_follower(n, body.reference, all, source);
@@ -229,10 +239,8 @@ class ConstraintResolver {
   // CalculiX's ROT NODE: its translations are the body's rotations, θ_ref,k − u_rot,k = 0, so
   // that the reference node's rotations are eliminated in favour of them.
   void add_rotation_node(const RigidBodyDefinition& body, std::int32_t source) {
-    const int count = model_.dimension == 2 ? 1 : 3;
-    for (int k = 0; k < count; ++k) {
-      const int rotation = model_.dimension == 2 ? 6 : 4 + k;
-      const int translation = model_.dimension == 2 ? 3 : 1 + k;
+    for (int k = 0; k < 3; ++k) {
+      const int rotation = 4 + k, translation = 1 + k;
       if (!claim(body.reference, static_cast<DofMask>(1u << (rotation - 1)), source)) return;
       LinearConstraint equation;
       equation.terms = {{body.reference, rotation, 1.0}, {body.rotation_node, translation, -1.0}};
@@ -253,8 +261,8 @@ class ConstraintResolver {
       const ConstraintSource& there = constraints_.sources[static_cast<std::size_t>(other.source)];
       sink_
           .report(DiagCode::constraint_conflict, body.ref_node->loc,
-                  fmt::format("the reference node {} of this rigid body is a node of the {}; a "
-                              "node can belong to one rigid body only",
+                  fmt::format("the reference node {} of this rigid body is a node of another {}; "
+                              "a node can belong to one rigid body only",
                               node_name(model_, body.reference), there.keyword))
           .notes.push_back({there.loc, fmt::format("the {} is here", there.keyword)});
       return;
@@ -375,6 +383,7 @@ class ConstraintResolver {
   }
 
   void resolve_coupling(CouplingDefinition& coupling) {
+    if (coupling.refused) return;
     if (coupling.kind != CouplingDefinition::Kind::KinematicCoupling && !coupling.method_given) {
       sink_.report(DiagCode::missing_parameter, coupling.keyword_loc,
                    fmt::format("{} needs *KINEMATIC or *DISTRIBUTING right after it",
@@ -440,7 +449,8 @@ class ConstraintResolver {
       return;
     }
     const DofMask method_dofs = coupling_dofs(coupling.dof_ranges);
-    if (coupling.orientation_loc) {
+    if (coupling.orientation && !find_orientation(coupling)) return;
+    if (coupling.orientation) {
       // The DOFs in a local system are the same set as in the global one only for all
       // translations, all rotations or all six (the manual's *KINEMATIC COUPLING, ORIENTATION).
       DofMask used = 0;
@@ -455,7 +465,7 @@ class ConstraintResolver {
         for (const auto& [n, entry] : chosen) uniform = uniform && entry.first == used;
       }
       if (!uniform || (used != t && used != r && used != (t | r))) {
-        sink_.report(DiagCode::unsupported_option, *coupling.orientation_loc,
+        sink_.report(DiagCode::unsupported_option, coupling.orientation_loc,
                      fmt::format("ORIENTATION with DOFs {} is not supported by clinch: a local "
                                  "system matters only when some but not all translations or "
                                  "rotations are coupled; couple all translations, all rotations "
@@ -469,6 +479,21 @@ class ConstraintResolver {
           coupling.kind == CouplingDefinition::Kind::KinematicCoupling ? entry.first : method_dofs;
       if (mask) add_follower(n, coupling.reference, mask, source);
     }
+  }
+
+  // The *ORIENTATION that ORIENTATION= names (in the coupling's scope), marked used; false after
+  // reporting an undefined one.
+  bool find_orientation(const CouplingDefinition& coupling) {
+    SectionModel& sections = model_.sections;
+    auto it = sections.orientation_by_key.find(
+        scoped_name_key(coupling.part, coupling.orientation->key));
+    if (it == sections.orientation_by_key.end()) {
+      sink_.report(DiagCode::undefined_orientation, coupling.orientation->loc,
+                   fmt::format("undefined orientation '{}'", coupling.orientation->display));
+      return false;
+    }
+    sections.orientations[static_cast<std::size_t>(it->second)].used = true;
+    return true;
   }
 
   static double distance(const Vec3& a, const Vec3& b) {
