@@ -27,7 +27,8 @@ struct RigidBodyDefinition {
   std::optional<TargetRef> pin_nset;
   std::optional<TargetRef> tie_nset;
   std::optional<TargetRef> nset;  // NSET= (CalculiX): tie nodes
-  // Resolved: global indices.
+  // Resolved: global indices. A body written inside a part is resolved once per instance:
+  // `elements` holds every instance's, the nodes those of the last instance.
   std::int32_t reference = -1;
   std::int32_t rotation_node = -1;
   std::vector<std::int32_t> elements;
@@ -67,7 +68,7 @@ struct CouplingDefinition {
   std::vector<DofRange> dof_ranges;
   Weighting weighting = Weighting::Uniform;
   bool refused = false;  // a data line was refused (reported): resolve leaves it out
-  // Resolved.
+  // Resolved (for a coupling written inside a part: its last instance's).
   std::int32_t reference = -1;
   std::vector<std::int32_t> nodes;    // coupling nodes (global), without the reference node
   std::vector<double> weights;        // *DISTRIBUTING: the weight factor of each node

@@ -50,11 +50,13 @@ class ConstraintResolver {
       : model_(model), constraints_(model.constraints), sink_(sink) {}
 
   void run() {
-    for (RigidBodyDefinition& body : constraints_.rigid_bodies) resolve_body(body);
     for (RigidBodyDefinition& body : constraints_.rigid_bodies) {
-      if (body.reference >= 0) check_reference_in_other_body(body);
+      for_each_copy(body.part, [&] { resolve_body(body); });
     }
-    for (CouplingDefinition& coupling : constraints_.couplings) resolve_coupling(coupling);
+    for (const ReferenceRecord& record : references_) check_reference_in_other_body(record);
+    for (CouplingDefinition& coupling : constraints_.couplings) {
+      for_each_copy(coupling.part, [&] { resolve_coupling(coupling); });
+    }
   }
 
  private:
@@ -63,6 +65,51 @@ class ConstraintResolver {
     std::int32_t source;
     DofMask dofs;
   };
+  // A body's reference node, for the check that no other body holds it.
+  struct ReferenceRecord {
+    std::int32_t node, source;
+    SourceLoc loc;
+  };
+
+  // A definition written inside a part holds for each instance of the part (input-syntax.md
+  // §7): it is resolved once per instance, its references narrowed to that instance's copies.
+  // After an error in one copy the others are left out (they would repeat it).
+  template <typename F>
+  void for_each_copy(std::int32_t part, F resolve) {
+    if (part == 0) {
+      instance_ = -1;
+      resolve();
+      return;
+    }
+    for (std::size_t i = 1; i < model_.instances.size(); ++i) {
+      if (model_.instances[i].part != part) continue;
+      instance_ = static_cast<std::int32_t>(i);
+      const std::size_t errors = sink_.error_count();
+      resolve();
+      if (sink_.error_count() != errors) break;
+    }
+    instance_ = -1;
+  }
+
+  // The nodes (elements) a reference denotes, narrowed to the instance being resolved.
+  bool nodes_of(const TargetRef& ref, std::vector<std::int32_t>& out) {
+    if (!resolve_nodes(model_, ref, out, sink_)) return false;
+    narrow(out, false);
+    return true;
+  }
+  bool elements_of(const TargetRef& ref, std::vector<std::int32_t>& out) {
+    if (!resolve_elements(model_, ref, out, sink_)) return false;
+    narrow(out, true);
+    return true;
+  }
+  void narrow(std::vector<std::int32_t>& v, bool elements) const {
+    if (instance_ < 0) return;
+    std::erase_if(v, [&](std::int32_t i) {
+      const std::int32_t owner = elements ? model_.elements[static_cast<std::size_t>(i)].instance
+                                          : model_.nodes[static_cast<std::size_t>(i)].instance;
+      return owner != instance_;
+    });
+  }
 
   std::int32_t add_source(std::string keyword, SourceLoc loc) {
     constraints_.sources.push_back({std::move(keyword), loc});
@@ -96,7 +143,7 @@ class ConstraintResolver {
   // REF NODE= and ROT NODE=: a node, or a node set of exactly one node.
   std::int32_t single_node(const TargetRef& ref, std::string_view param) {
     std::vector<std::int32_t> nodes;
-    if (!resolve_nodes(model_, ref, nodes, sink_)) return -1;
+    if (!nodes_of(ref, nodes)) return -1;
     std::sort(nodes.begin(), nodes.end());
     nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
     if (nodes.size() != 1) {
@@ -126,7 +173,7 @@ class ConstraintResolver {
   bool collect_nodes(const std::optional<TargetRef>& ref, std::vector<std::int32_t>& out) {
     if (!ref) return true;
     std::vector<std::int32_t> nodes;
-    if (!resolve_nodes(model_, *ref, nodes, sink_)) return false;
+    if (!nodes_of(*ref, nodes)) return false;
     if (nodes.empty()) {
       sink_.report(DiagCode::empty_set, ref->loc, fmt::format("{} is empty", describe(*ref, false)));
       return false;
@@ -146,15 +193,16 @@ class ConstraintResolver {
     if (body.rot_node) body.rotation_node = single_node(*body.rot_node, "ROT NODE");
     ok = body.reference >= 0 && (!body.rot_node || body.rotation_node >= 0);
     std::vector<std::int32_t> tie, pin;
+    std::vector<std::int32_t> elements;
     if (body.elset) {
-      if (!resolve_elements(model_, *body.elset, body.elements, sink_)) {
+      if (!elements_of(*body.elset, elements)) {
         ok = false;
-      } else if (body.elements.empty()) {
+      } else if (elements.empty()) {
         sink_.report(DiagCode::empty_set, body.elset->loc,
                      fmt::format("{} is empty", describe(*body.elset, true)));
         ok = false;
       }
-      for (std::int32_t e : body.elements) {
+      for (std::int32_t e : elements) {
         if (element_nodes(e, tie)) continue;
         const Element& element = model_.elements[static_cast<std::size_t>(e)];
         sink_.report(DiagCode::wrong_element_kind, body.elset->loc,
@@ -171,6 +219,7 @@ class ConstraintResolver {
     ok = collect_nodes(body.nset, tie) && ok;
     ok = collect_nodes(body.pin_nset, pin) && ok;
     if (!ok) return;
+    body.elements.insert(body.elements.end(), elements.begin(), elements.end());
     sort_unique(tie);
     sort_unique(pin);
     // A PIN NSET node redefines a node of the ELSET's elements as a pin node (the manual's
@@ -226,7 +275,7 @@ class ConstraintResolver {
     for (std::int32_t n : body.pin_nodes) {
       add_follower(n, body.reference, translations(model_), source);
     }
-    owner_of_node_.emplace(body.reference, source);
+    references_.push_back({body.reference, source, body.ref_node->loc});
     if (body.rotation_node >= 0) add_rotation_node(body, source);
   }
 
@@ -252,18 +301,17 @@ class ConstraintResolver {
 
   // A reference node of one body that is a node of another body appears in two rigid body
   // definitions, which the manual's *RIGID BODY forbids.
-  void check_reference_in_other_body(const RigidBodyDefinition& body) {
-    auto it = claims_.find(body.reference);
+  void check_reference_in_other_body(const ReferenceRecord& record) {
+    auto it = claims_.find(record.node);
     if (it == claims_.end()) return;
-    const std::int32_t own = owner_of_node_.at(body.reference);
     for (const Claim& other : it->second) {
-      if (other.source == own) continue;
+      if (other.source == record.source) continue;
       const ConstraintSource& there = constraints_.sources[static_cast<std::size_t>(other.source)];
       sink_
-          .report(DiagCode::constraint_conflict, body.ref_node->loc,
+          .report(DiagCode::constraint_conflict, record.loc,
                   fmt::format("the reference node {} of this rigid body is a node of another {}; "
                               "a node can belong to one rigid body only",
-                              node_name(model_, body.reference), there.keyword))
+                              node_name(model_, record.node), there.keyword))
           .notes.push_back({there.loc, fmt::format("the {} is here", there.keyword)});
       return;
     }
@@ -288,7 +336,6 @@ class ConstraintResolver {
   const Surface* find_surface(const CouplingDefinition& coupling, std::int32_t& instance) {
     const StructureModel& structure = model_.structure;
     const Name& name = *coupling.surface;
-    instance = -1;
     auto it = structure.surface_by_key.find(scoped_name_key(coupling.part, name.key));
     if (it == structure.surface_by_key.end()) {
       const std::size_t dot = name.key.rfind('.');
@@ -318,7 +365,7 @@ class ConstraintResolver {
       std::vector<std::int32_t> members;
       for (const Surface::Item& item : surface.items) {
         members.clear();
-        if (!resolve_nodes(model_, item.target, members, sink_)) return false;
+        if (!nodes_of(item.target, members)) return false;
         for (std::int32_t n : members) {
           nodes.push_back(n);
           areas.push_back(item.area);
@@ -399,7 +446,7 @@ class ConstraintResolver {
       std::vector<std::int32_t> members;
       for (const auto& line : coupling.node_lines) {
         members.clear();
-        if (!resolve_nodes(model_, line.target, members, sink_)) return;
+        if (!nodes_of(line.target, members)) return;
         const DofMask mask = coupling_dofs({line.dofs});
         for (std::int32_t n : members) {
           nodes.push_back(n);
@@ -407,7 +454,7 @@ class ConstraintResolver {
         }
       }
     } else {
-      std::int32_t instance = -1;
+      std::int32_t instance = instance_;
       const Surface* surface = find_surface(coupling, instance);
       if (!surface || !surface_nodes(coupling, *surface, instance, nodes, areas)) return;
     }
@@ -672,7 +719,8 @@ class ConstraintResolver {
   ConstraintModel& constraints_;
   DiagnosticSink& sink_;
   std::map<std::int32_t, std::vector<Claim>> claims_;
-  std::map<std::int32_t, std::int32_t> owner_of_node_;  // reference node → its body's source
+  std::vector<ReferenceRecord> references_;  // every body's (each instance's copy)
+  std::int32_t instance_ = -1;  // the instance a part-level definition is resolved for
 };
 
 }  // namespace

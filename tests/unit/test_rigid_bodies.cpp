@@ -149,6 +149,29 @@ TEST(RigidBodies, TheReferenceNodeOfOneBodyInAnotherIsAnError) {
   EXPECT_NE(d.message.find("reference node 11"), std::string::npos) << d.message;
 }
 
+// A *RIGID BODY written inside a part holds for each instance: two instances, two bodies, each
+// with its own reference node (input-syntax.md §7).
+TEST(RigidBodies, APartLevelBodyHoldsForEachInstance) {
+  auto deck = read(
+      "*PART, NAME=P\n*NODE\n1, 0.\n2, 1.\n3, 1., 1.\n4, 0., 1.\n10, .5, .5, 1.\n"
+      "*ELEMENT, TYPE=R3D4, ELSET=SKIN\n1, 1, 2, 3, 4\n"
+      "*RIGID BODY, REF NODE=10, ELSET=SKIN\n*END PART\n"
+      "*ASSEMBLY, NAME=A\n*INSTANCE, NAME=I1, PART=P\n*END INSTANCE\n"
+      "*INSTANCE, NAME=I2, PART=P\n5., 0., 0.\n*END INSTANCE\n*END ASSEMBLY\n" +
+      std::string(kStep));
+  EXPECT_TRUE(deck->sink.diagnostics().empty()) << deck->dump();
+  const auto& followers = deck->model.constraints.followers;
+  ASSERT_EQ(followers.size(), 8u);
+  for (const NodeFollower& f : followers) {
+    const Node& node = deck->model.nodes[static_cast<std::size_t>(f.node)];
+    const Node& reference = deck->model.nodes[static_cast<std::size_t>(f.reference)];
+    EXPECT_EQ(reference.label, 10);
+    EXPECT_EQ(reference.instance, node.instance);  // each copy follows its own reference node
+    EXPECT_EQ(f.dofs, DofMask{0x3F});
+  }
+  EXPECT_EQ(deck->model.constraints.rigid_bodies[0].elements.size(), 2u);
+}
+
 TEST(Couplings, KinematicCouplingLinesGiveTheirDofs) {
   auto deck = read(std::string(kCube) + "*NSET, NSET=TOP\n5, 6\n"
                    "*KINEMATIC COUPLING, REF NODE=10\nTOP, 1, 3\n7, 4\n5, 6, 6\n" + kStep);
