@@ -51,18 +51,6 @@ void report_run_refusals(const Model& model, DiagnosticSink& sink) {
       }
     }
   }
-  // The analysis does not eliminate the dependent DOFs of rigid bodies and couplings
-  // (docs/constraints.md) yet: a run would leave them free. One refusal, at the first definition.
-  const ConstraintModel& constraints = model.constraints;
-  if (!constraints.sources.empty() &&
-      (!constraints.followers.empty() || !constraints.equations.empty())) {
-    const ConstraintSource& first = constraints.sources.front();
-    sink.report(DiagCode::unsupported_option, first.loc,
-                fmt::format("{} is read and checked, but clinch run does not enforce rigid "
-                            "bodies and couplings yet ({} definition{} in the deck)",
-                            first.keyword, constraints.sources.size(),
-                            constraints.sources.size() == 1 ? "" : "s"));
-  }
 }
 
 }  // namespace clinch
