@@ -45,6 +45,12 @@ std::optional<DofRange> dof_range(BlockContext& ctx, const std::vector<Field>& f
   return range;
 }
 
+void read_orientation(BlockContext& ctx, CouplingDefinition& coupling) {
+  if (!ctx.params().has("ORIENTATION")) return;
+  coupling.orientation = ctx.name_param("ORIENTATION");
+  coupling.orientation_loc = ctx.params().loc("ORIENTATION");
+}
+
 // *KINEMATIC COUPLING, REF NODE=: data lines `node or node set, first DOF[, last DOF]`.
 class KinematicCouplingHandler : public KeywordHandler {
  public:
@@ -55,7 +61,7 @@ class KinematicCouplingHandler : public KeywordHandler {
     coupling.part = ctx.position().part;
     coupling.ref_node = node_param(ctx, "REF NODE");
     if (!coupling.ref_node) return;
-    if (ctx.params().has("ORIENTATION")) coupling.orientation_loc = ctx.params().loc("ORIENTATION");
+    read_orientation(ctx, coupling);
     auto& couplings = ctx.model().constraints.couplings;
     couplings.push_back(std::move(coupling));
     index_ = static_cast<std::int32_t>(couplings.size()) - 1;
@@ -63,35 +69,46 @@ class KinematicCouplingHandler : public KeywordHandler {
 
   void data_line(BlockContext& ctx, const DataLine& line, std::vector<Field>& fields) override {
     if (index_ < 0 || line.blank || fields.empty()) return;
-    if (!ctx.check_field_count(line, fields, 3, "node or node set, first DOF, last DOF")) return;
-    if (fields[0].empty()) {
-      ctx.missing(fields[0].loc, "node or node set");
-      return;
-    }
-    if (fields.size() < 2 || fields[1].empty()) {
-      ctx.missing(fields.size() < 2 ? BlockContext::end_of_line(line) : fields[1].loc,
-                  "first DOF");
-      return;
-    }
-    auto target = ctx.target(fields[0], "node");
-    if (!target) return;
-    auto range = dof_range(ctx, fields, 1);
-    if (!range) return;
     auto& coupling = ctx.model().constraints.couplings[static_cast<std::size_t>(index_)];
-    coupling.node_lines.push_back({*target, *range});
+    lines_seen_ = true;
+    if (!read_line(ctx, line, fields, coupling)) coupling.refused = true;
   }
 
   void end(BlockContext& ctx) override {
     if (index_ < 0) return;
-    const auto& coupling = ctx.model().constraints.couplings[static_cast<std::size_t>(index_)];
-    if (coupling.node_lines.empty()) {
+    auto& coupling = ctx.model().constraints.couplings[static_cast<std::size_t>(index_)];
+    if (!lines_seen_) {
       ctx.report(DiagCode::missing_field, coupling.keyword_loc,
                  "*KINEMATIC COUPLING needs data lines 'node or node set, first DOF, last DOF'");
+      coupling.refused = true;
     }
   }
 
  private:
+  static bool read_line(BlockContext& ctx, const DataLine& line, std::vector<Field>& fields,
+                        CouplingDefinition& coupling) {
+    if (!ctx.check_field_count(line, fields, 3, "node or node set, first DOF, last DOF")) {
+      return false;
+    }
+    if (fields[0].empty()) {
+      ctx.missing(fields[0].loc, "node or node set");
+      return false;
+    }
+    if (fields.size() < 2 || fields[1].empty()) {
+      ctx.missing(fields.size() < 2 ? BlockContext::end_of_line(line) : fields[1].loc,
+                  "first DOF");
+      return false;
+    }
+    auto target = ctx.target(fields[0], "node");
+    if (!target) return false;
+    auto range = dof_range(ctx, fields, 1);
+    if (!range) return false;
+    coupling.node_lines.push_back({*target, *range});
+    return true;
+  }
+
   std::int32_t index_ = -1;
+  bool lines_seen_ = false;
 };
 
 // *COUPLING, CONSTRAINT NAME=, REF NODE=, SURFACE=: the method follows.
@@ -116,7 +133,7 @@ class CouplingHandler : public KeywordHandler {
       }
       coupling.influence_radius = *radius;
     }
-    if (params.has("ORIENTATION")) coupling.orientation_loc = params.loc("ORIENTATION");
+    read_orientation(ctx, coupling);
     if (!coupling.ref_node || !coupling.surface) return;
     ctx.model().constraints.couplings.push_back(std::move(coupling));
   }
@@ -154,6 +171,7 @@ class CouplingMethodHandler : public KeywordHandler {
       ctx.report(DiagCode::unsupported_option, params.loc("COUPLING", true),
                  "*DISTRIBUTING, COUPLING=STRUCTURAL is not supported by clinch (it couples the "
                  "rotations of the coupling nodes too); COUPLING=CONTINUUM is");
+      ctx.model().constraints.couplings.pop_back();  // the open *COUPLING: nothing to resolve
       coupling_ = nullptr;
       return;
     }
@@ -167,13 +185,20 @@ class CouplingMethodHandler : public KeywordHandler {
 
   void data_line(BlockContext& ctx, const DataLine& line, std::vector<Field>& fields) override {
     if (!coupling_ || line.blank || fields.empty()) return;
-    if (!ctx.check_field_count(line, fields, 2, "first DOF, last DOF")) return;
+    if (!ctx.check_field_count(line, fields, 2, "first DOF, last DOF")) {
+      coupling_->refused = true;
+      return;
+    }
     if (fields[0].empty()) {
       // A blank first field: every DOF (the manual's *DISTRIBUTING data line).
       coupling_->dof_ranges.push_back({1, 6, fields[0].loc});
       return;
     }
-    if (auto range = dof_range(ctx, fields, 0)) coupling_->dof_ranges.push_back(*range);
+    if (auto range = dof_range(ctx, fields, 0)) {
+      coupling_->dof_ranges.push_back(*range);
+    } else {
+      coupling_->refused = true;
+    }
   }
 
  private:

@@ -141,7 +141,9 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
        "Abaqus/Standard: clinch does not generate a node as CalculiX does without it).",
        "Abaqus/Explicit's rigid element thickness (ignored with a warning).",
        {{"POSITION=CENTER OF MASS",
-         "needs the masses of the body, which a static analysis does not have"}},
+         "needs the masses of the body, which a static analysis does not have"},
+        {"ROT NODE= in a deck with a step under NLGEOM",
+         "its equations are linearised (small rotations)"}},
        {{"ISOTHERMAL, ALPHA", "temperatures play no part in clinch's mechanical steps"},
         {"DENSITY, NODAL THICKNESS, OFFSET", "Abaqus/Explicit only"},
         {"ANALYTICAL SURFACE", "an analytical surface has no nodes: no effect on the motion"}}},
@@ -170,7 +172,8 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
        "Optional: `first DOF[, last DOF]`; every translation is always coupled (none or a blank "
        "first field: every DOF).",
        {{"COUPLING=STRUCTURAL", "it also couples the rotations of the coupling nodes"},
-        {"an element-based SURFACE=", "its weights need the faces' tributary areas"}}},
+        {"an element-based SURFACE=", "its weights need the faces' tributary areas"},
+        {"a deck with a step under NLGEOM", "the distributing map is linearised"}}},
       {"CONNECTOR BEHAVIOR",
        "Opens a named connector behaviour; the options that follow (elasticity, damping, stops, "
        "plasticity, friction, damage, ...) belong to it.",

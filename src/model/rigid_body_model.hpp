@@ -27,7 +27,8 @@ struct RigidBodyDefinition {
   std::optional<TargetRef> pin_nset;
   std::optional<TargetRef> tie_nset;
   std::optional<TargetRef> nset;  // NSET= (CalculiX): tie nodes
-  // Resolved: global indices.
+  // Resolved: global indices. A body written inside a part is resolved once per instance:
+  // `elements` holds every instance's, the nodes those of the last instance.
   std::int32_t reference = -1;
   std::int32_t rotation_node = -1;
   std::vector<std::int32_t> elements;
@@ -61,11 +62,13 @@ struct CouplingDefinition {
   std::optional<Name> surface;
   std::optional<double> influence_radius;
   // ORIENTATION=: accepted when the constrained DOFs do not depend on it (checked in resolve).
-  std::optional<SourceLoc> orientation_loc;
+  std::optional<Name> orientation;
+  SourceLoc orientation_loc;  // the parameter's name
   // *KINEMATIC / *DISTRIBUTING data lines; none: every DOF.
   std::vector<DofRange> dof_ranges;
   Weighting weighting = Weighting::Uniform;
-  // Resolved.
+  bool refused = false;  // a data line was refused (reported): resolve leaves it out
+  // Resolved (for a coupling written inside a part: its last instance's).
   std::int32_t reference = -1;
   std::vector<std::int32_t> nodes;    // coupling nodes (global), without the reference node
   std::vector<double> weights;        // *DISTRIBUTING: the weight factor of each node

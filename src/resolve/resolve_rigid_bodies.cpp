@@ -50,11 +50,13 @@ class ConstraintResolver {
       : model_(model), constraints_(model.constraints), sink_(sink) {}
 
   void run() {
-    for (RigidBodyDefinition& body : constraints_.rigid_bodies) resolve_body(body);
     for (RigidBodyDefinition& body : constraints_.rigid_bodies) {
-      if (body.reference >= 0) check_reference_in_other_body(body);
+      for_each_copy(body.part, [&] { resolve_body(body); });
     }
-    for (CouplingDefinition& coupling : constraints_.couplings) resolve_coupling(coupling);
+    for (const ReferenceRecord& record : references_) check_reference_in_other_body(record);
+    for (CouplingDefinition& coupling : constraints_.couplings) {
+      for_each_copy(coupling.part, [&] { resolve_coupling(coupling); });
+    }
   }
 
  private:
@@ -63,6 +65,51 @@ class ConstraintResolver {
     std::int32_t source;
     DofMask dofs;
   };
+  // A body's reference node, for the check that no other body holds it.
+  struct ReferenceRecord {
+    std::int32_t node, source;
+    SourceLoc loc;
+  };
+
+  // A definition written inside a part holds for each instance of the part (input-syntax.md
+  // §7): it is resolved once per instance, its references narrowed to that instance's copies.
+  // After an error in one copy the others are left out (they would repeat it).
+  template <typename F>
+  void for_each_copy(std::int32_t part, F resolve) {
+    if (part == 0) {
+      instance_ = -1;
+      resolve();
+      return;
+    }
+    for (std::size_t i = 1; i < model_.instances.size(); ++i) {
+      if (model_.instances[i].part != part) continue;
+      instance_ = static_cast<std::int32_t>(i);
+      const std::size_t errors = sink_.error_count();
+      resolve();
+      if (sink_.error_count() != errors) break;
+    }
+    instance_ = -1;
+  }
+
+  // The nodes (elements) a reference denotes, narrowed to the instance being resolved.
+  bool nodes_of(const TargetRef& ref, std::vector<std::int32_t>& out) {
+    if (!resolve_nodes(model_, ref, out, sink_)) return false;
+    narrow(out, false);
+    return true;
+  }
+  bool elements_of(const TargetRef& ref, std::vector<std::int32_t>& out) {
+    if (!resolve_elements(model_, ref, out, sink_)) return false;
+    narrow(out, true);
+    return true;
+  }
+  void narrow(std::vector<std::int32_t>& v, bool elements) const {
+    if (instance_ < 0) return;
+    std::erase_if(v, [&](std::int32_t i) {
+      const std::int32_t owner = elements ? model_.elements[static_cast<std::size_t>(i)].instance
+                                          : model_.nodes[static_cast<std::size_t>(i)].instance;
+      return owner != instance_;
+    });
+  }
 
   std::int32_t add_source(std::string keyword, SourceLoc loc) {
     constraints_.sources.push_back({std::move(keyword), loc});
@@ -81,9 +128,10 @@ class ConstraintResolver {
       const ConstraintSource& there = constraints_.sources[static_cast<std::size_t>(other.source)];
       sink_
           .report(DiagCode::constraint_conflict, here.loc,
-                  fmt::format("node {} is already constrained by the {} (DOF{} {}); a DOF can "
+                  fmt::format("node {} is already constrained by {} {} (DOF{} {}); a DOF can "
                               "follow one definition only",
-                              node_name(model_, node), there.keyword,
+                              node_name(model_, node),
+                              there.keyword == here.keyword ? "another" : "a", there.keyword,
                               std::has_single_bit(both) ? "" : "s", dof_list(both)))
           .notes.push_back({there.loc, fmt::format("the {} is here", there.keyword)});
       return false;
@@ -95,7 +143,7 @@ class ConstraintResolver {
   // REF NODE= and ROT NODE=: a node, or a node set of exactly one node.
   std::int32_t single_node(const TargetRef& ref, std::string_view param) {
     std::vector<std::int32_t> nodes;
-    if (!resolve_nodes(model_, ref, nodes, sink_)) return -1;
+    if (!nodes_of(ref, nodes)) return -1;
     std::sort(nodes.begin(), nodes.end());
     nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
     if (nodes.size() != 1) {
@@ -125,7 +173,7 @@ class ConstraintResolver {
   bool collect_nodes(const std::optional<TargetRef>& ref, std::vector<std::int32_t>& out) {
     if (!ref) return true;
     std::vector<std::int32_t> nodes;
-    if (!resolve_nodes(model_, *ref, nodes, sink_)) return false;
+    if (!nodes_of(*ref, nodes)) return false;
     if (nodes.empty()) {
       sink_.report(DiagCode::empty_set, ref->loc, fmt::format("{} is empty", describe(*ref, false)));
       return false;
@@ -145,15 +193,16 @@ class ConstraintResolver {
     if (body.rot_node) body.rotation_node = single_node(*body.rot_node, "ROT NODE");
     ok = body.reference >= 0 && (!body.rot_node || body.rotation_node >= 0);
     std::vector<std::int32_t> tie, pin;
+    std::vector<std::int32_t> elements;
     if (body.elset) {
-      if (!resolve_elements(model_, *body.elset, body.elements, sink_)) {
+      if (!elements_of(*body.elset, elements)) {
         ok = false;
-      } else if (body.elements.empty()) {
+      } else if (elements.empty()) {
         sink_.report(DiagCode::empty_set, body.elset->loc,
                      fmt::format("{} is empty", describe(*body.elset, true)));
         ok = false;
       }
-      for (std::int32_t e : body.elements) {
+      for (std::int32_t e : elements) {
         if (element_nodes(e, tie)) continue;
         const Element& element = model_.elements[static_cast<std::size_t>(e)];
         sink_.report(DiagCode::wrong_element_kind, body.elset->loc,
@@ -170,6 +219,7 @@ class ConstraintResolver {
     ok = collect_nodes(body.nset, tie) && ok;
     ok = collect_nodes(body.pin_nset, pin) && ok;
     if (!ok) return;
+    body.elements.insert(body.elements.end(), elements.begin(), elements.end());
     sort_unique(tie);
     sort_unique(pin);
     // A PIN NSET node redefines a node of the ELSET's elements as a pin node (the manual's
@@ -210,13 +260,22 @@ class ConstraintResolver {
                                node_name(model_, body.rotation_node)));
       return;
     }
+    if (body.rotation_node >= 0 && model_.dimension == 2) {
+      // The rotation about z would be the ROT NODE's third translation, which a
+      // two-dimensional model does not have.
+      sink_.report(DiagCode::unsupported_option, body.rot_node->loc,
+                   "ROT NODE is not supported in a two-dimensional model (its third translation "
+                   "would carry the rotation); leave it out: the reference node's rotation is "
+                   "DOF 6");
+      return;
+    }
     const std::int32_t source = add_source("*RIGID BODY", body.keyword_loc);
     const DofMask all = static_cast<DofMask>(translations(model_) | rotations(model_));
     for (std::int32_t n : body.tie_nodes) add_follower(n, body.reference, all, source);
     for (std::int32_t n : body.pin_nodes) {
       add_follower(n, body.reference, translations(model_), source);
     }
-    owner_of_node_.emplace(body.reference, source);
+    references_.push_back({body.reference, source, body.ref_node->loc});
     if (body.rotation_node >= 0) add_rotation_node(body, source);
   }
 
@@ -229,10 +288,8 @@ class ConstraintResolver {
   // CalculiX's ROT NODE: its translations are the body's rotations, θ_ref,k − u_rot,k = 0, so
   // that the reference node's rotations are eliminated in favour of them.
   void add_rotation_node(const RigidBodyDefinition& body, std::int32_t source) {
-    const int count = model_.dimension == 2 ? 1 : 3;
-    for (int k = 0; k < count; ++k) {
-      const int rotation = model_.dimension == 2 ? 6 : 4 + k;
-      const int translation = model_.dimension == 2 ? 3 : 1 + k;
+    for (int k = 0; k < 3; ++k) {
+      const int rotation = 4 + k, translation = 1 + k;
       if (!claim(body.reference, static_cast<DofMask>(1u << (rotation - 1)), source)) return;
       LinearConstraint equation;
       equation.terms = {{body.reference, rotation, 1.0}, {body.rotation_node, translation, -1.0}};
@@ -244,18 +301,17 @@ class ConstraintResolver {
 
   // A reference node of one body that is a node of another body appears in two rigid body
   // definitions, which the manual's *RIGID BODY forbids.
-  void check_reference_in_other_body(const RigidBodyDefinition& body) {
-    auto it = claims_.find(body.reference);
+  void check_reference_in_other_body(const ReferenceRecord& record) {
+    auto it = claims_.find(record.node);
     if (it == claims_.end()) return;
-    const std::int32_t own = owner_of_node_.at(body.reference);
     for (const Claim& other : it->second) {
-      if (other.source == own) continue;
+      if (other.source == record.source) continue;
       const ConstraintSource& there = constraints_.sources[static_cast<std::size_t>(other.source)];
       sink_
-          .report(DiagCode::constraint_conflict, body.ref_node->loc,
-                  fmt::format("the reference node {} of this rigid body is a node of the {}; a "
-                              "node can belong to one rigid body only",
-                              node_name(model_, body.reference), there.keyword))
+          .report(DiagCode::constraint_conflict, record.loc,
+                  fmt::format("the reference node {} of this rigid body is a node of another {}; "
+                              "a node can belong to one rigid body only",
+                              node_name(model_, record.node), there.keyword))
           .notes.push_back({there.loc, fmt::format("the {} is here", there.keyword)});
       return;
     }
@@ -280,7 +336,6 @@ class ConstraintResolver {
   const Surface* find_surface(const CouplingDefinition& coupling, std::int32_t& instance) {
     const StructureModel& structure = model_.structure;
     const Name& name = *coupling.surface;
-    instance = -1;
     auto it = structure.surface_by_key.find(scoped_name_key(coupling.part, name.key));
     if (it == structure.surface_by_key.end()) {
       const std::size_t dot = name.key.rfind('.');
@@ -310,7 +365,7 @@ class ConstraintResolver {
       std::vector<std::int32_t> members;
       for (const Surface::Item& item : surface.items) {
         members.clear();
-        if (!resolve_nodes(model_, item.target, members, sink_)) return false;
+        if (!nodes_of(item.target, members)) return false;
         for (std::int32_t n : members) {
           nodes.push_back(n);
           areas.push_back(item.area);
@@ -375,6 +430,7 @@ class ConstraintResolver {
   }
 
   void resolve_coupling(CouplingDefinition& coupling) {
+    if (coupling.refused) return;
     if (coupling.kind != CouplingDefinition::Kind::KinematicCoupling && !coupling.method_given) {
       sink_.report(DiagCode::missing_parameter, coupling.keyword_loc,
                    fmt::format("{} needs *KINEMATIC or *DISTRIBUTING right after it",
@@ -390,7 +446,7 @@ class ConstraintResolver {
       std::vector<std::int32_t> members;
       for (const auto& line : coupling.node_lines) {
         members.clear();
-        if (!resolve_nodes(model_, line.target, members, sink_)) return;
+        if (!nodes_of(line.target, members)) return;
         const DofMask mask = coupling_dofs({line.dofs});
         for (std::int32_t n : members) {
           nodes.push_back(n);
@@ -398,7 +454,7 @@ class ConstraintResolver {
         }
       }
     } else {
-      std::int32_t instance = -1;
+      std::int32_t instance = instance_;
       const Surface* surface = find_surface(coupling, instance);
       if (!surface || !surface_nodes(coupling, *surface, instance, nodes, areas)) return;
     }
@@ -440,7 +496,8 @@ class ConstraintResolver {
       return;
     }
     const DofMask method_dofs = coupling_dofs(coupling.dof_ranges);
-    if (coupling.orientation_loc) {
+    if (coupling.orientation && !find_orientation(coupling)) return;
+    if (coupling.orientation) {
       // The DOFs in a local system are the same set as in the global one only for all
       // translations, all rotations or all six (the manual's *KINEMATIC COUPLING, ORIENTATION).
       DofMask used = 0;
@@ -455,7 +512,7 @@ class ConstraintResolver {
         for (const auto& [n, entry] : chosen) uniform = uniform && entry.first == used;
       }
       if (!uniform || (used != t && used != r && used != (t | r))) {
-        sink_.report(DiagCode::unsupported_option, *coupling.orientation_loc,
+        sink_.report(DiagCode::unsupported_option, coupling.orientation_loc,
                      fmt::format("ORIENTATION with DOFs {} is not supported by clinch: a local "
                                  "system matters only when some but not all translations or "
                                  "rotations are coupled; couple all translations, all rotations "
@@ -469,6 +526,21 @@ class ConstraintResolver {
           coupling.kind == CouplingDefinition::Kind::KinematicCoupling ? entry.first : method_dofs;
       if (mask) add_follower(n, coupling.reference, mask, source);
     }
+  }
+
+  // The *ORIENTATION that ORIENTATION= names (in the coupling's scope), marked used; false after
+  // reporting an undefined one.
+  bool find_orientation(const CouplingDefinition& coupling) {
+    SectionModel& sections = model_.sections;
+    auto it = sections.orientation_by_key.find(
+        scoped_name_key(coupling.part, coupling.orientation->key));
+    if (it == sections.orientation_by_key.end()) {
+      sink_.report(DiagCode::undefined_orientation, coupling.orientation->loc,
+                   fmt::format("undefined orientation '{}'", coupling.orientation->display));
+      return false;
+    }
+    sections.orientations[static_cast<std::size_t>(it->second)].used = true;
+    return true;
   }
 
   static double distance(const Vec3& a, const Vec3& b) {
@@ -647,7 +719,8 @@ class ConstraintResolver {
   ConstraintModel& constraints_;
   DiagnosticSink& sink_;
   std::map<std::int32_t, std::vector<Claim>> claims_;
-  std::map<std::int32_t, std::int32_t> owner_of_node_;  // reference node → its body's source
+  std::vector<ReferenceRecord> references_;  // every body's (each instance's copy)
+  std::int32_t instance_ = -1;  // the instance a part-level definition is resolved for
 };
 
 }  // namespace

@@ -83,6 +83,15 @@ class SectionValidator {
     for (std::size_t s = 0; s < springs.size(); ++s) validate_spring(s);
     check_springa_geometry();
     check_missing_sections();
+    // An orientation a coupling names is used (resolve_rigid_bodies reports an undefined one).
+    for (const CouplingDefinition& coupling : model_.constraints.couplings) {
+      if (!coupling.orientation) continue;
+      auto it = model_.sections.orientation_by_key.find(
+          scoped_name_key(coupling.part, coupling.orientation->key));
+      if (it != model_.sections.orientation_by_key.end()) {
+        model_.sections.orientations[static_cast<std::size_t>(it->second)].used = true;
+      }
+    }
     for (const Orientation& orientation : model_.sections.orientations) {
       if (!orientation.used && !orientation.name.empty()) {
         sink_.report(DiagCode::defined_but_unused, orientation.keyword_loc,

@@ -1,8 +1,9 @@
 // Element types clinch holds as their nodes (src/model/element_library.hpp): every type reads with
 // the node count of the Abaqus element library, long elements go on over lines ending with a
-// comma, a wrong count is an error at its line, a deformable block is refused once, and the
-// sections, materials and surfaces around them are kept. The expected node counts below are typed
-// from the Abaqus Analysis User's Guide element tables, independently of the library table.
+// comma, a wrong count is an error at its line, a deformable block is refused once (for the
+// elements no rigid body carries), and the sections, materials and surfaces around them are
+// kept. The expected node counts below are typed from the Abaqus Analysis User's Guide element
+// tables, independently of the library table.
 #include <string>
 #include <utility>
 #include <vector>
@@ -146,6 +147,33 @@ TEST(HeldElements, InstancesCopyTheNodesAndSetsNameThem) {
   EXPECT_FALSE(held[4] || held[9]);
   // One refusal for the part's block, not one per instance or per element.
   EXPECT_EQ(deck->with(DiagCode::deformable_element).size(), 1u) << deck->dump();
+}
+
+// *RIGID BODY lifts the refusal for the elements its ELSET carries: an instance made rigid needs
+// no formulation, while the other instance of the same part is still refused, once, for its
+// copy of the block (1 of 2 elements), naming the type and the rigid body that would make it run.
+TEST(HeldElements, ARigidBodyLiftsTheRefusalForItsElementsOnly) {
+  const std::string part =
+      "*PART, NAME=P\n*NODE\n1, 0.\n2, 1.\n3, 1., 1.\n4, 0., 1.\n"
+      "*ELEMENT, TYPE=R3D4, ELSET=SKIN\n1, 1, 2, 3, 4\n*END PART\n"
+      "*ASSEMBLY, NAME=A\n*INSTANCE, NAME=I1, PART=P\n*END INSTANCE\n"
+      "*INSTANCE, NAME=I2, PART=P\n*END INSTANCE\n*NODE\n100, 0., 0., 5.\n";
+  auto both = read(part +
+                   "*NSET, NSET=R1\n100\n*RIGID BODY, REF NODE=R1, ELSET=I1.SKIN\n"
+                   "*NODE\n101, 1., 0., 5.\n*RIGID BODY, REF NODE=101, ELSET=I2.SKIN\n"
+                   "*END ASSEMBLY\n" + std::string(kStep));
+  EXPECT_TRUE(both->with(DiagCode::deformable_element).empty()) << both->dump();
+  EXPECT_EQ(both->model.constraints.followers.size(), 8u);
+
+  auto one = read(part + "*RIGID BODY, REF NODE=100, ELSET=I1.SKIN\n*END ASSEMBLY\n" +
+                  std::string(kStep));
+  const Diagnostic& d = one->one(DiagCode::deformable_element);
+  EXPECT_EQ(d.loc.line, 7u);  // the part's *ELEMENT line
+  EXPECT_NE(d.message.find("1 rigid element (of 2, the others in a rigid body) of type R3D4 "
+                           "would be deformable"),
+            std::string::npos)
+      << d.message;
+  EXPECT_NE(d.message.find("make its part a rigid body (*RIGID BODY)"), std::string::npos);
 }
 
 TEST(HeldElements, SectionsMaterialsAndSurfacesAreKept) {

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "parser/deck_reader.hpp"
+#include "src/model/element_library.hpp"
 #include "tests/unit/checked_deck.hpp"
 
 namespace clinch {
@@ -132,7 +133,7 @@ TEST(RigidBodies, ANodeInTwoBodiesNamesBoth) {
                    "3, 11, 20\n*CONNECTOR SECTION, ELSET=W2\nBEAM\n" + kStep);
   const Diagnostic& d = deck->one(DiagCode::constraint_conflict);
   EXPECT_EQ(d.loc.line, 25u);
-  EXPECT_NE(d.message.find("node 2 is already constrained by the *RIGID BODY (DOFs 1, 2, 3)"),
+  EXPECT_NE(d.message.find("node 2 is already constrained by another *RIGID BODY (DOFs 1, 2, 3)"),
             std::string::npos)
       << d.message;
   ASSERT_EQ(d.notes.size(), 1u);
@@ -149,12 +150,35 @@ TEST(RigidBodies, TheReferenceNodeOfOneBodyInAnotherIsAnError) {
   EXPECT_NE(d.message.find("reference node 11"), std::string::npos) << d.message;
 }
 
+// A *RIGID BODY written inside a part holds for each instance: two instances, two bodies, each
+// with its own reference node (input-syntax.md §7).
+TEST(RigidBodies, APartLevelBodyHoldsForEachInstance) {
+  auto deck = read(
+      "*PART, NAME=P\n*NODE\n1, 0.\n2, 1.\n3, 1., 1.\n4, 0., 1.\n10, .5, .5, 1.\n"
+      "*ELEMENT, TYPE=R3D4, ELSET=SKIN\n1, 1, 2, 3, 4\n"
+      "*RIGID BODY, REF NODE=10, ELSET=SKIN\n*END PART\n"
+      "*ASSEMBLY, NAME=A\n*INSTANCE, NAME=I1, PART=P\n*END INSTANCE\n"
+      "*INSTANCE, NAME=I2, PART=P\n5., 0., 0.\n*END INSTANCE\n*END ASSEMBLY\n" +
+      std::string(kStep));
+  EXPECT_TRUE(deck->sink.diagnostics().empty()) << deck->dump();
+  const auto& followers = deck->model.constraints.followers;
+  ASSERT_EQ(followers.size(), 8u);
+  for (const NodeFollower& f : followers) {
+    const Node& node = deck->model.nodes[static_cast<std::size_t>(f.node)];
+    const Node& reference = deck->model.nodes[static_cast<std::size_t>(f.reference)];
+    EXPECT_EQ(reference.label, 10);
+    EXPECT_EQ(reference.instance, node.instance);  // each copy follows its own reference node
+    EXPECT_EQ(f.dofs, DofMask{0x3F});
+  }
+  EXPECT_EQ(deck->model.constraints.rigid_bodies[0].elements.size(), 2u);
+}
+
 TEST(Couplings, KinematicCouplingLinesGiveTheirDofs) {
   auto deck = read(std::string(kCube) + "*NSET, NSET=TOP\n5, 6\n"
                    "*KINEMATIC COUPLING, REF NODE=10\nTOP, 1, 3\n7, 4\n5, 6, 6\n" + kStep);
-  EXPECT_TRUE(deck->sink.diagnostics().empty() ||
-              deck->with(DiagCode::deformable_element).size() == deck->sink.diagnostics().size())
-      << deck->dump();
+  // The cube is not a rigid body here: its block alone is refused.
+  EXPECT_EQ(deck->sink.diagnostics().size(), 1u) << deck->dump();
+  deck->one(DiagCode::deformable_element);
   auto f = followers(*deck);
   ASSERT_EQ(f.size(), 3u);
   EXPECT_EQ(f[5].second, DofMask{0x27});  // DOFs 1-3 and 6 (two lines)
@@ -268,6 +292,44 @@ TEST(Couplings, DistributingLinearWeights) {
   EXPECT_NEAR(coefficient(*deck, *t3, 4, 1), -0.4 / 2.2, 1e-14);
 }
 
+// Two dimensions (a CONN2D2 makes the model 2-D): u1, u2 and θ3 only. Uniform weights on A (1, 0),
+// B (−1, 0), C (0, 1), D (0, −1), reference node R at (0, 2): ŵ = 1/4, x̄ = 0, T33 = Σ ŵ |r|² = 1,
+//   θ = (u_A2 − u_B2 − u_C1 + u_D1) / 4,  u_R = ū + θ e3 × r_R = (ū1 − 2θ, ū2).
+// So u_R1 = .25 u_A1 − .5 u_A2 + .25 u_B1 + .5 u_B2 + .75 u_C1 − .25 u_D1 (terms: the negatives).
+// Tolerance 1e-15: a few roundings of numbers of order 1.
+TEST(Couplings, DistributingInTwoDimensions) {
+  auto deck = read(
+      "*NODE\n1, 1, 0\n2, -1, 0\n3, 0, 1\n4, 0, -1\n10, 0, 2\n20, 0, 3\n"
+      "*ELEMENT, TYPE=CONN2D2, ELSET=W\n1, 10, 20\n*CONNECTOR SECTION, ELSET=W\nBEAM\n"
+      "*NSET, NSET=X\n1, 2, 3, 4\n*SURFACE, NAME=S, TYPE=NODE\nX\n"
+      "*COUPLING, CONSTRAINT NAME=D, REF NODE=10, SURFACE=S\n*DISTRIBUTING\n" +
+      std::string(kStep));
+  EXPECT_TRUE(deck->sink.diagnostics().empty()) << deck->dump();
+  ASSERT_EQ(deck->model.constraints.equations.size(), 3u);  // u1, u2, θ3
+  const LinearConstraint* u1 = equation_of(*deck, 10, 1);
+  const LinearConstraint* u2 = equation_of(*deck, 10, 2);
+  const LinearConstraint* t3 = equation_of(*deck, 10, 6);
+  ASSERT_TRUE(u1 && u2 && t3);
+  const std::pair<std::pair<int, int>, double> expected_u1[] = {
+      {{1, 1}, -0.25}, {{1, 2}, 0.5}, {{2, 1}, -0.25}, {{2, 2}, -0.5},
+      {{3, 1}, -0.75}, {{3, 2}, 0.0}, {{4, 1}, 0.25},  {{4, 2}, 0.0}};
+  for (const auto& [term, value] : expected_u1) {
+    EXPECT_NEAR(coefficient(*deck, *u1, term.first, term.second), value, 1e-15)
+        << term.first << "." << term.second;
+  }
+  for (int n = 1; n <= 4; ++n) {
+    EXPECT_NEAR(coefficient(*deck, *u2, n, 2), -0.25, 1e-15);
+    EXPECT_NEAR(coefficient(*deck, *u2, n, 1), 0.0, 1e-15);
+  }
+  EXPECT_NEAR(coefficient(*deck, *t3, 1, 2), -0.25, 1e-15);
+  EXPECT_NEAR(coefficient(*deck, *t3, 2, 2), 0.25, 1e-15);
+  EXPECT_NEAR(coefficient(*deck, *t3, 3, 1), 0.25, 1e-15);
+  EXPECT_NEAR(coefficient(*deck, *t3, 4, 1), -0.25, 1e-15);
+  for (const LinearConstraint& e : deck->model.constraints.equations) {
+    for (const LinearTerm& t : e.terms) EXPECT_TRUE(t.dof == 1 || t.dof == 2 || t.dof == 6);
+  }
+}
+
 TEST(Couplings, CollinearNodesCannotCarryRotations) {
   auto deck = read(
       "*NODE\n1, 1, 0, 0\n2, -1, 0, 0\n10, 0, 0, 0\n20, 0, 0, 3\n"
@@ -294,9 +356,33 @@ TEST(Couplings, AKinematicCouplingNodeOfARigidBodyIsTiedTwice) {
                    "*NODE\n11, 3, 3, 3\n*KINEMATIC COUPLING, REF NODE=11\n1, 1, 1\n" + kStep);
   const Diagnostic& d = deck->one(DiagCode::constraint_conflict);
   EXPECT_EQ(d.loc.line, 21u);
-  EXPECT_NE(d.message.find("node 1 is already constrained by the *RIGID BODY (DOF 1)"),
+  EXPECT_NE(d.message.find("node 1 is already constrained by a *RIGID BODY (DOF 1)"),
             std::string::npos)
       << d.message;
+}
+
+// The face nodes of the manual's element library ("Three-dimensional solid element library",
+// face numbering; shells: SPOS/SNEG hold every node), typed from its tables.
+TEST(Couplings, FaceNodesFollowTheManualsNumbering) {
+  const std::pair<std::pair<const char*, const char*>, std::vector<int>> cases[] = {
+      {{"C3D4", "S3"}, {2, 4, 3}},
+      {{"C3D10", "S3"}, {2, 4, 3, 9, 10, 6}},
+      {{"C3D6", "S2"}, {4, 6, 5}},
+      {{"C3D6", "S4"}, {2, 5, 6, 3}},
+      {{"C3D8R", "S5"}, {3, 7, 8, 4}},
+      {{"C3D20", "S2"}, {5, 8, 7, 6, 16, 15, 14, 13}},
+      {{"S4R", "SPOS"}, {1, 2, 3, 4}},
+      {{"R3D3", "SNEG"}, {1, 2, 3}},
+      {{"C3D15", "S1"}, {}},
+      {{"C3D8", "SPOS"}, {}},
+      {{"R2D2", "SPOS"}, {}},
+  };
+  for (const auto& [key, nodes] : cases) {
+    const ElementTypeInfo* info = find_element_type(key.first);
+    ASSERT_NE(info, nullptr) << key.first;
+    auto found = face_node_positions(*info, key.second);
+    EXPECT_EQ(std::vector<int>(found.begin(), found.end()), nodes) << key.first << " " << key.second;
+  }
 }
 
 }  // namespace
