@@ -157,6 +157,7 @@ class MpcEquationResolver {
       }
     }
     bool ok = true;
+    bool rotation_refused = false;
     for (std::size_t t = 0; t < definition.terms.size(); ++t) {
       const EquationTermDefinition& term = definition.terms[t];
       if (nodes[t].size() != 1 && nodes[t].size() != copies) {
@@ -168,7 +169,7 @@ class MpcEquationResolver {
                                  describe(*widest, false), copies));
         ok = false;
       }
-      ok = check_dof(term) && ok;
+      ok = check_dof(term, rotation_refused) && ok;
     }
     if (!ok) return;
     if (copies > 1 && nodes[0].size() == 1) {
@@ -204,8 +205,9 @@ class MpcEquationResolver {
     }
   }
 
-  // DOFs 1, 2 and 6 in a 2-D model; no rotation when a step has NLGEOM=YES.
-  bool check_dof(const EquationTermDefinition& term) {
+  // DOFs 1, 2 and 6 in a 2-D model; no rotation when a step has NLGEOM=YES (refused once per
+  // equation: `rotation_refused`).
+  bool check_dof(const EquationTermDefinition& term, bool& rotation_refused) {
     if (model_.dimension == 2 && term.dof != 1 && term.dof != 2 && term.dof != 6) {
       sink_.report(DiagCode::invalid_dof, term.dof_loc,
                    fmt::format("DOF {} does not exist in a 2-D model (its DOFs are 1, 2 and 6)",
@@ -217,6 +219,7 @@ class MpcEquationResolver {
     // clinch composes finite rotations as rotation matrices, where such an equation is not the
     // same constraint. Refused rather than approximated.
     if (nlgeom_ && term.dof >= 4) {
+      if (std::exchange(rotation_refused, true)) return false;
       sink_.report(DiagCode::unsupported_option, term.dof_loc,
                    fmt::format("an *EQUATION on rotational DOF {} is not supported in a model "
                                "with an NLGEOM=YES step: finite rotations do not add up like the "
