@@ -13,7 +13,7 @@ const KeywordRegistry& KeywordRegistry::instance() {
     KeywordRegistry r;
     for (auto* family : {&general_keyword_specs, &geometry_keyword_specs, &section_keyword_specs,
                          &structure_keyword_specs, &rigid_body_keyword_specs,
-                         &coupling_keyword_specs,
+                         &coupling_keyword_specs, &mpc_equation_keyword_specs,
                          &behavior_keyword_specs, &potential_friction_keyword_specs,
                          &history_keyword_specs}) {
       for (KeywordSpec& spec : family()) r.add(std::move(spec));

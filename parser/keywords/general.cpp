@@ -76,7 +76,7 @@ std::vector<KeywordSpec> general_keyword_specs() {
   // Known Abaqus/CalculiX keywords that change results and that clinch v1 does not implement
   // (input-syntax.md §9, keywords.md §1).
   for (std::string_view name :
-       {"BEAM GENERAL SECTION", "EQUATION", "MPC",
+       {"BEAM GENERAL SECTION",
         "TRANSFORM", "SYSTEM", "GAP", "DLOAD", "DSLOAD",
         "TEMPERATURE", "INITIAL CONDITIONS", "TIME POINTS", "NO ANALYSIS", "PARAMETER DEPENDENCE",
         "PARAMETER TABLE", "PARAMETER TABLE TYPE", "PARAMETER SHAPE VARIATION",

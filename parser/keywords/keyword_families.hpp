@@ -23,6 +23,8 @@ std::vector<KeywordSpec> structure_keyword_specs();
 std::vector<KeywordSpec> rigid_body_keyword_specs();
 // *KINEMATIC COUPLING, *COUPLING, *KINEMATIC, *DISTRIBUTING (coupling.cpp).
 std::vector<KeywordSpec> coupling_keyword_specs();
+// *MPC, *EQUATION (mpc_equation.cpp).
+std::vector<KeywordSpec> mpc_equation_keyword_specs();
 // *CONNECTOR BEHAVIOR and its sub-options except derived components, potentials and friction.
 std::vector<KeywordSpec> behavior_keyword_specs();
 // *CONNECTOR DERIVED COMPONENT, *CONNECTOR POTENTIAL, *CONNECTOR FRICTION, *FRICTION.

@@ -6,7 +6,7 @@ void check_model(const Model& model, DiagnosticSink& sink) {
   check_behaviors(model, sink);
   check_motion_stops(model, sink);
   check_held_elements(model, sink);
-  check_linearised_constraints(model, sink);
+  check_constraints(model, sink);
 }
 
 }  // namespace clinch

@@ -18,9 +18,10 @@ void check_motion_stops(const Model& model, DiagnosticSink& sink);
 // deformable, noted when inertia only (held_elements.cpp).
 void check_held_elements(const Model& model, DiagnosticSink& sink);
 
-// A linearised constraint (a distributing coupling, a ROT NODE) in a deck with a step under
-// NLGEOM is refused at its keyword line (rigid_body_checks.cpp).
-void check_linearised_constraints(const Model& model, DiagnosticSink& sink);
+// Overconstraints across rigid bodies, couplings, MPCs and equations: a DOF tied twice or also
+// prescribed, cycles, chains and linearised maps under NLGEOM, connectors inside a rigid group
+// (constraint_checks.cpp).
+void check_constraints(const Model& model, DiagnosticSink& sink);
 
 void check_model(const Model& model, DiagnosticSink& sink);
 

@@ -174,6 +174,24 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
        {{"COUPLING=STRUCTURAL", "it also couples the rotations of the coupling nodes"},
         {"an element-based SURFACE=", "its weights need the faces' tributary areas"},
         {"a deck with a step under NLGEOM", "the distributing map is linearised"}}},
+      {"MPC",
+       "Multi-point constraints: BEAM (node a follows node b as on a rigid beam), TIE (every "
+       "DOF of a equal to b's), PIN (translations equal) and LINK (the distance from a to b "
+       "stays constant); DOFs of the first node are eliminated.",
+       "`type, a, b`: a and b nodes, or a node set a matched entry by entry with a node set b "
+       "of the same size, or with a single node b.",
+       {{"types other than BEAM, LINK, PIN and TIE (REVOLUTE, UNIVERSAL, SLIDER, ELBOW, ...)",
+         "a connector element models these joints"},
+        {"USER (MODE=)", "clinch has no user subroutines"}},
+       {{"ALPHA", "temperatures play no part in clinch's mechanical steps"},
+        {"MODE without USER", "it applies to user subroutine MPC only"}}},
+      {"EQUATION",
+       "Linear constraint equations Σ A_i u_i = 0; the first term's DOF is eliminated.",
+       "Per equation: a line with the number of terms N, then the N terms `node or node set, "
+       "DOF, coefficient`, at most four a line. Node sets expand the equation entry by entry "
+       "(sets of one size; a single node repeats).",
+       {{"a rotational DOF (4-6) in a model with an NLGEOM=YES step",
+         "finite rotations do not add up like the components of a vector"}}},
       {"CONNECTOR BEHAVIOR",
        "Opens a named connector behaviour; the options that follow (elasticity, damping, stops, "
        "plasticity, friction, damage, ...) belong to it.",

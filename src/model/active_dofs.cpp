@@ -178,6 +178,14 @@ void add_constraint_dofs(const Model& model, std::vector<DofMask>& active) {
 
 }  // namespace
 
+std::vector<DofMask> following_dofs(const Model& model) {
+  std::vector<DofMask> following(model.nodes.size(), 0);
+  for (const NodeFollower& f : model.constraints.followers) {
+    following[static_cast<std::size_t>(f.node)] |= f.dofs;
+  }
+  return following;
+}
+
 std::vector<DofMask> active_dofs(const Model& model) {
   const ConnectorDofs connector_dofs(model);
   std::vector<DofMask> active(model.nodes.size(), 0);

@@ -18,4 +18,9 @@ using DofMask = std::uint8_t;
 // resolve_sections (it reads section_of_element and the *SPRING DOFs).
 std::vector<DofMask> active_dofs(const Model& model);
 
+// The DOFs of each node that follow another node (rigid bodies, couplings, MPCs: the resolved
+// NodeFollower list): a *CLOAD there acts on what the node follows, so it has a DOF even where no
+// element uses the node.
+std::vector<DofMask> following_dofs(const Model& model);
+
 }  // namespace clinch

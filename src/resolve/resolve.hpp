@@ -21,6 +21,9 @@ void resolve_structure(Model& model, DiagnosticSink& sink);
 // *RIGID BODY and the couplings into the followers and equations of constraint_model.hpp; before
 // resolve_history, whose active_dofs() reads them (src/resolve/resolve_rigid_bodies.cpp).
 void resolve_rigid_bodies(Model& model, DiagnosticSink& sink);
+// *MPC and *EQUATION into the followers, equations and links of constraint_model.hpp; before
+// resolve_history for the same reason (src/resolve/resolve_mpc_equations.cpp).
+void resolve_mpc_equations(Model& model, DiagnosticSink& sink);
 // Derived components, potentials and friction (derived-components-and-potentials.md, friction.md):
 // names inside each behaviour block, classification, and the rules that need it.
 void resolve_potentials_and_friction(Model& model, DiagnosticSink& sink);

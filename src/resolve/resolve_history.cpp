@@ -96,7 +96,10 @@ struct InForce {
 class HistoryValidator {
  public:
   HistoryValidator(Model& model, DiagnosticSink& sink)
-      : model_(model), sink_(sink), active_(active_dofs(model)) {}
+      : model_(model),
+        sink_(sink),
+        active_(active_dofs(model)),
+        following_(following_dofs(model)) {}
 
   void run() {
     HistoryModel& history = model_.history;
@@ -289,7 +292,8 @@ class HistoryValidator {
     std::int32_t lost_node = -1;
     bool prescribed_reported = false;
     for (std::int32_t node : load.resolved) {
-      if (!(active_[static_cast<std::size_t>(node)] & bit)) {
+      const auto n = static_cast<std::size_t>(node);
+      if (!((active_[n] | following_[n]) & bit)) {
         if (!on_held_element(node) && lost++ == 0) lost_node = node;
         continue;
       }
@@ -396,6 +400,7 @@ class HistoryValidator {
   Model& model_;
   DiagnosticSink& sink_;
   std::vector<DofMask> active_;
+  std::vector<DofMask> following_;  // a load on a node that follows another acts on it
 
   // A node of a held element that is refused while deformable (check_held_elements): a
   // condition on it is not reported a second time.
