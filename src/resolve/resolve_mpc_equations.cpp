@@ -70,6 +70,29 @@ class MpcEquationResolver {
     return nodes;
   }
 
+  // Sets matched entry by entry are matched in ascending label order; an UNSORTED set's written
+  // order is not kept (Set::unsorted_loc), so matching it with another set is refused.
+  bool order_kept(const TargetRef& ref) {
+    if (ref.is_label) return true;
+    std::int32_t part = ref.part;
+    if (!ref.instance_key.empty()) {
+      auto it = model_.instance_by_key.find(ref.instance_key);
+      if (it == model_.instance_by_key.end()) return true;  // reported when resolved
+      part = model_.instances[static_cast<std::size_t>(it->second)].part;
+    }
+    const auto& sets = model_.parts[static_cast<std::size_t>(part)].node_sets;
+    auto it = sets.find(ref.set_key);
+    if (it == sets.end() || !it->second.unsorted_loc.valid()) return true;
+    sink_.report(DiagCode::unsupported_option, ref.loc,
+                 fmt::format("{} is UNSORTED, and clinch keeps node sets in ascending label order "
+                             "only: matched entry by entry with another set here, its written "
+                             "order would be lost; define it so that its labels ascend together "
+                             "with the other set's",
+                             describe(ref, false)))
+        .notes.push_back({it->second.unsorted_loc, "UNSORTED is given here"});
+    return false;
+  }
+
   // ---------------------------------------------------------------------------------------
   // *MPC
 
@@ -88,6 +111,7 @@ class MpcEquationResolver {
                                a.size()));
       return;
     }
+    if (a.size() > 1 && b.size() > 1 && !(order_kept(mpc.first) & order_kept(mpc.second))) return;
     const bool two_d = model_.dimension == 2;
     const double tolerance = geometry_tolerance(model_.nodes);
     for (std::size_t i = 0; i < a.size(); ++i) {
@@ -172,6 +196,14 @@ class MpcEquationResolver {
       ok = check_dof(term, rotation_refused) && ok;
     }
     if (!ok) return;
+    std::size_t matched_sets = 0;
+    for (const auto& n : nodes) matched_sets += n.size() > 1 ? 1 : 0;
+    if (matched_sets > 1) {
+      for (std::size_t t = 0; t < definition.terms.size(); ++t) {
+        if (nodes[t].size() > 1) ok = order_kept(definition.terms[t].target) && ok;
+      }
+      if (!ok) return;
+    }
     if (copies > 1 && nodes[0].size() == 1) {
       sink_.report(DiagCode::constraint_conflict, definition.terms[0].target.loc,
                    fmt::format("the first term names one node, and {} repeats the equation for "

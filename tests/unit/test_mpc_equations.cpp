@@ -178,6 +178,31 @@ TEST(Equations, InstanceQualifiedNodesAndSets) {
   }
 }
 
+TEST(Equations, UnsortedSetsMatchedWithAnotherSetAreRefused) {
+  // clinch keeps sets in ascending order, so the written order of an UNSORTED set is lost.
+  auto deck = read(std::string(kNodes) + "*NSET, NSET=BACK, UNSORTED\n8, 7, 6, 5\n"
+                   "*EQUATION\n2\nBACK, 1, 1., BOTTOM, 1, -1.\n" + kStep);
+  const Diagnostic& d = deck->one(DiagCode::unsupported_option);
+  EXPECT_EQ(d.loc.line, 25u);
+  EXPECT_EQ(d.loc.column, 1u);
+  EXPECT_TRUE(deck->model.constraints.equations.empty());
+  // Against a single node its order does not matter.
+  auto single = read(std::string(kNodes) + "*NSET, NSET=BACK, UNSORTED\n8, 7, 6, 5\n"
+                     "*MPC\nPIN, BACK, 9\n" + kStep);
+  EXPECT_TRUE(single->sink.diagnostics().empty()) << single->dump();
+  EXPECT_EQ(single->model.constraints.followers.size(), 4u);
+}
+
+TEST(Equations, ALineMayEndWithAComma) {
+  // CalculiX writes full lines of four terms with a trailing comma.
+  auto deck = read(std::string(kNodes) +
+                   "*EQUATION\n5\n1,1,1.,2,1,-.25,3,1,-.25,4,1,-.25,\n5,1,-.25\n" + kStep);
+  EXPECT_TRUE(deck->sink.diagnostics().empty()) << deck->dump();
+  const std::vector<std::vector<Term>> expected{
+      {{1, 1, 1.0}, {2, 1, -0.25}, {3, 1, -0.25}, {4, 1, -0.25}, {5, 1, -0.25}}};
+  EXPECT_EQ(equations(*deck), expected);
+}
+
 // ---- *MPC ------------------------------------------------------------------------------------
 
 TEST(Mpcs, BeamTiePinAndLink) {
