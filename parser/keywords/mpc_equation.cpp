@@ -141,9 +141,9 @@ struct MpcTypeName {
   MpcDefinition::Type type;
 };
 constexpr std::array<MpcTypeName, 4> kMpcTypes{{{"BEAM", MpcDefinition::Type::Beam},
-                                               {"LINK", MpcDefinition::Type::Link},
-                                               {"PIN", MpcDefinition::Type::Pin},
-                                               {"TIE", MpcDefinition::Type::Tie}}};
+                                                {"LINK", MpcDefinition::Type::Link},
+                                                {"PIN", MpcDefinition::Type::Pin},
+                                                {"TIE", MpcDefinition::Type::Tie}}};
 
 std::string upper(std::string_view text) {
   std::string out;
@@ -196,7 +196,8 @@ class MpcHandler : public KeywordHandler {
                              fields[0].text));
       return;
     }
-    if (!ctx.check_field_count(line, fields, 3, "MPC type, node or node set a, node or node set b")) {
+    if (!ctx.check_field_count(line, fields, 3,
+                               "MPC type, node or node set a, node or node set b")) {
       return;
     }
     for (std::size_t k = 1; k <= 2; ++k) {

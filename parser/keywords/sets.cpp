@@ -27,7 +27,8 @@ class SetHandler : public KeywordHandler {
     auto name = ctx.name(*ctx.params().value(param), param);
     if (!name) return;
     key_ = name->key;
-    define_set(*part_, element_set_, *name);
+    Set& set = define_set(*part_, element_set_, *name);
+    if (ctx.params().has("UNSORTED")) set.unsorted_loc = ctx.params().loc("UNSORTED");
     generate_ = ctx.params().has("GENERATE");
     if (const Field* instance = ctx.params().value("INSTANCE")) {
       if (ctx.position().part != 0 || !ctx.position().in_assembly) {

@@ -55,8 +55,8 @@ int link_dof(const Model& model, const DistanceLink& link) {
 // One eliminated DOF: what eliminates it and the DOFs its value is computed from.
 struct Dependent {
   std::int32_t source = -1;
-  bool curved = false;         // a rigid arm's translation or a link: nonlinear under NLGEOM
-  std::vector<DofKey> reads;   // the DOFs the map reads
+  bool curved = false;        // a rigid arm's translation or a link: nonlinear under NLGEOM
+  std::vector<DofKey> reads;  // the DOFs the map reads
 };
 
 class ConstraintChecker {
@@ -271,8 +271,8 @@ class ConstraintChecker {
                     dof_of(back_to), node_display(model_, node_of(back_to)),
                     others.empty() ? "" : ": this one and ", others));
     for (std::int32_t s : sources) {
-      if (s != last) d.notes.push_back({source(s).loc, fmt::format("the {} is here",
-                                                                   source(s).keyword)});
+      if (s != last)
+        d.notes.push_back({source(s).loc, fmt::format("the {} is here", source(s).keyword)});
     }
   }
 
@@ -390,8 +390,8 @@ class ConstraintChecker {
       const std::int32_t via = c_.followers[rigid_follower_.at(a != root_a ? a : b)].source;
       std::string components;
       for (int k = 1; k <= 6; ++k) {
-        if (over & (1u << (k - 1))) components += (components.empty() ? "" : ", ") +
-                                                  std::to_string(k);
+        if (over & (1u << (k - 1)))
+          components += (components.empty() ? "" : ", ") + std::to_string(k);
       }
       sink_
           .report(DiagCode::connector_overconstraint, element.loc(),
@@ -410,7 +410,7 @@ class ConstraintChecker {
   const ConstraintModel& c_;
   DiagnosticSink& sink_;
   DofMask translations_ = 0, rotations_ = 0;
-  const Step* nlgeom_step_ = nullptr;  // the first step with NLGEOM=YES
+  const Step* nlgeom_step_ = nullptr;       // the first step with NLGEOM=YES
   std::map<DofKey, Dependent> dependents_;  // ordered: reports come in the same order every run
   std::set<std::pair<std::int32_t, std::int32_t>> reported_pairs_;
   std::unordered_map<std::int32_t, std::size_t> rigid_follower_;  // node → its rigid follower

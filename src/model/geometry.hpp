@@ -94,6 +94,9 @@ struct Set {
   Name name;
   std::vector<std::int32_t> members;
   bool defined_ok = true;  // false when its definition failed (later uses stay silent)
+  // UNSORTED on a *NSET/*ELSET line of the set: members are kept in ascending order all the
+  // same, so what matches sets entry by entry (*MPC, *EQUATION) refuses it (invalid: not given).
+  SourceLoc unsorted_loc;
 };
 
 // A set definition step recorded while reading and replayed in deck order once every label is

@@ -17,8 +17,8 @@ namespace clinch {
 struct MpcDefinition {
   enum class Type : std::uint8_t { Beam, Link, Pin, Tie };
   Type type = Type::Beam;
-  SourceLoc loc;       // column 1 of the data line
-  SourceLoc type_loc;  // the type field
+  SourceLoc loc;            // column 1 of the data line
+  SourceLoc type_loc;       // the type field
   TargetRef first, second;  // a (dependent) and b (independent)
 };
 

@@ -25,10 +25,14 @@ std::string node_display(const Model& model, std::int32_t n) {
 
 const char* mpc_keyword(MpcDefinition::Type type) {
   switch (type) {
-    case MpcDefinition::Type::Beam: return "*MPC BEAM";
-    case MpcDefinition::Type::Link: return "*MPC LINK";
-    case MpcDefinition::Type::Pin: return "*MPC PIN";
-    case MpcDefinition::Type::Tie: return "*MPC TIE";
+    case MpcDefinition::Type::Beam:
+      return "*MPC BEAM";
+    case MpcDefinition::Type::Link:
+      return "*MPC LINK";
+    case MpcDefinition::Type::Pin:
+      return "*MPC PIN";
+    case MpcDefinition::Type::Tie:
+      return "*MPC TIE";
   }
   return "*MPC";
 }
@@ -70,6 +74,30 @@ class MpcEquationResolver {
     return nodes;
   }
 
+  // Sets matched entry by entry are matched in ascending label order; an UNSORTED set's written
+  // order is not kept (Set::unsorted_loc), so matching it with another set is refused.
+  bool order_kept(const TargetRef& ref) {
+    if (ref.is_label) return true;
+    std::int32_t part = ref.part;
+    if (!ref.instance_key.empty()) {
+      auto it = model_.instance_by_key.find(ref.instance_key);
+      if (it == model_.instance_by_key.end()) return true;  // reported when resolved
+      part = model_.instances[static_cast<std::size_t>(it->second)].part;
+    }
+    const auto& sets = model_.parts[static_cast<std::size_t>(part)].node_sets;
+    auto it = sets.find(ref.set_key);
+    if (it == sets.end() || !it->second.unsorted_loc.valid()) return true;
+    sink_
+        .report(DiagCode::unsupported_option, ref.loc,
+                fmt::format("{} is UNSORTED, and clinch keeps node sets in ascending label order "
+                            "only: matched entry by entry with another set here, its written "
+                            "order would be lost; define it so that its labels ascend together "
+                            "with the other set's",
+                            describe(ref, false)))
+        .notes.push_back({it->second.unsorted_loc, "UNSORTED is given here"});
+    return false;
+  }
+
   // ---------------------------------------------------------------------------------------
   // *MPC
 
@@ -80,14 +108,15 @@ class MpcEquationResolver {
     // The manual's "General multi-point constraints": node sets are matched entry by entry; a
     // single node second is the one every node of the first set depends on.
     if (b.size() != 1 && b.size() != a.size()) {
-      sink_.report(DiagCode::invalid_value, mpc.second.loc,
-                   fmt::format("{} holds {} nodes and {} {}: an MPC matches the entries of its "
-                               "node sets one by one, so they must have the same size (or the "
-                               "second entry must be a single node)",
-                               describe(mpc.second, false), b.size(), describe(mpc.first, false),
-                               a.size()));
+      sink_.report(
+          DiagCode::invalid_value, mpc.second.loc,
+          fmt::format("{} holds {} nodes and {} {}: an MPC matches the entries of its "
+                      "node sets one by one, so they must have the same size (or the "
+                      "second entry must be a single node)",
+                      describe(mpc.second, false), b.size(), describe(mpc.first, false), a.size()));
       return;
     }
+    if (a.size() > 1 && b.size() > 1 && !(order_kept(mpc.first) & order_kept(mpc.second))) return;
     const bool two_d = model_.dimension == 2;
     const double tolerance = geometry_tolerance(model_.nodes);
     for (std::size_t i = 0; i < a.size(); ++i) {
@@ -172,6 +201,14 @@ class MpcEquationResolver {
       ok = check_dof(term, rotation_refused) && ok;
     }
     if (!ok) return;
+    std::size_t matched_sets = 0;
+    for (const auto& n : nodes) matched_sets += n.size() > 1 ? 1 : 0;
+    if (matched_sets > 1) {
+      for (std::size_t t = 0; t < definition.terms.size(); ++t) {
+        if (nodes[t].size() > 1) ok = order_kept(definition.terms[t].target) && ok;
+      }
+      if (!ok) return;
+    }
     if (copies > 1 && nodes[0].size() == 1) {
       sink_.report(DiagCode::constraint_conflict, definition.terms[0].target.loc,
                    fmt::format("the first term names one node, and {} repeats the equation for "
@@ -209,9 +246,9 @@ class MpcEquationResolver {
   // equation: `rotation_refused`).
   bool check_dof(const EquationTermDefinition& term, bool& rotation_refused) {
     if (model_.dimension == 2 && term.dof != 1 && term.dof != 2 && term.dof != 6) {
-      sink_.report(DiagCode::invalid_dof, term.dof_loc,
-                   fmt::format("DOF {} does not exist in a 2-D model (its DOFs are 1, 2 and 6)",
-                               term.dof));
+      sink_.report(
+          DiagCode::invalid_dof, term.dof_loc,
+          fmt::format("DOF {} does not exist in a 2-D model (its DOFs are 1, 2 and 6)", term.dof));
       return false;
     }
     // Under NLGEOM, DOFs 4-6 of Abaqus are the components of the total rotation vector (the

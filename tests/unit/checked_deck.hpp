@@ -2,12 +2,14 @@
 // sources and diagnostics, and queries on the diagnostics that the keyword-family tests share.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "base/diagnostic.hpp"
+#include "parser/deck_reader.hpp"
 #include "parser/source_manager.hpp"
 #include "src/model/model.hpp"
 
@@ -47,5 +49,12 @@ struct CheckedDeck {
     return out;
   }
 };
+
+// `text` read as the deck "deck.inp" through the whole reader (resolve and checks included).
+inline std::unique_ptr<CheckedDeck> read_checked_deck(const std::string& text) {
+  auto deck = std::make_unique<CheckedDeck>();
+  read_deck_text("deck.inp", text, deck->sources, deck->model, deck->sink);
+  return deck;
+}
 
 }  // namespace clinch

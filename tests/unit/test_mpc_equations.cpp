@@ -3,24 +3,19 @@
 // kind (src/check/constraint_checks.cpp; docs/constraints.md "MPCs", "Equations",
 // "Overconstraints"). The expected lists are written out by hand from the manual's definitions:
 // terms and coefficients are copied from the deck, so they compare exactly.
+#include <gtest/gtest.h>
+
 #include <map>
 #include <string>
 #include <tuple>
 #include <vector>
 
-#include <gtest/gtest.h>
-
-#include "parser/deck_reader.hpp"
 #include "tests/unit/checked_deck.hpp"
 
 namespace clinch {
 namespace {
 
-std::unique_ptr<CheckedDeck> read(const std::string& text) {
-  auto deck = std::make_unique<CheckedDeck>();
-  read_deck_text("deck.inp", text, deck->sources, deck->model, deck->sink);
-  return deck;
-}
+std::unique_ptr<CheckedDeck> read(const std::string& text) { return read_checked_deck(text); }
 
 constexpr const char* kStep = "*STEP\n*STATIC\n*END STEP\n";
 constexpr const char* kNlgeomStep = "*STEP, NLGEOM=YES\n*STATIC\n*END STEP\n";
@@ -44,7 +39,8 @@ std::vector<std::vector<Term>> equations(const CheckedDeck& deck) {
   for (const LinearConstraint& e : deck.model.constraints.equations) {
     EXPECT_TRUE(e.exact_under_nlgeom);
     std::vector<Term> terms;
-    for (const LinearTerm& t : e.terms) terms.emplace_back(label(deck, t.node), t.dof, t.coefficient);
+    for (const LinearTerm& t : e.terms)
+      terms.emplace_back(label(deck, t.node), t.dof, t.coefficient);
     out.push_back(std::move(terms));
   }
   return out;
@@ -64,12 +60,33 @@ std::map<std::int32_t, FollowerView> followers(const CheckedDeck& deck) {
   return out;
 }
 
+// A deck that must be refused with one diagnostic of `code` at line:column, resolving to no
+// constraint: kNodes, then `text`, then a step.
+struct RefusalCase {
+  const char* text;
+  DiagCode code;
+  std::uint32_t line, column;
+};
+void expect_refusals(std::initializer_list<RefusalCase> cases) {
+  for (const RefusalCase& c : cases) {
+    auto deck = read(std::string(kNodes) + c.text + kStep);
+    const Diagnostic& d = deck->one(c.code);
+    EXPECT_EQ(d.loc.line, c.line) << c.text << deck->dump();
+    EXPECT_EQ(d.loc.column, c.column) << c.text << deck->dump();
+    const ConstraintModel& constraints = deck->model.constraints;
+    EXPECT_TRUE(constraints.equations.empty() && constraints.followers.empty() &&
+                constraints.links.empty())
+        << c.text;
+  }
+}
+
 // ---- *EQUATION -------------------------------------------------------------------------------
 
 TEST(Equations, TermsOverSeveralLinesAndTheNextEquation) {
   auto deck = read(std::string(kNodes) +
                    "*EQUATION\n5\n1, 1, 1.0, 2, 1, -0.5, 3, 1, -0.25, 4, 1, -0.125\n"
-                   "5, 2, 2.5\n2\n6, 3, 1., 7, 3, -1.\n" + kStep);
+                   "5, 2, 2.5\n2\n6, 3, 1., 7, 3, -1.\n" +
+                   kStep);
   EXPECT_TRUE(deck->sink.diagnostics().empty()) << deck->dump();
   const std::vector<std::vector<Term>> expected{
       {{1, 1, 1.0}, {2, 1, -0.5}, {3, 1, -0.25}, {4, 1, -0.125}, {5, 2, 2.5}},
@@ -85,8 +102,8 @@ TEST(Equations, TermsOverSeveralLinesAndTheNextEquation) {
 
 TEST(Equations, NodeSetsExpandEntryByEntryAndASingleNodeRepeats) {
   // u1(1..4) − u1(5..8) + 0.5 u2(9) = 0, one equation per pair, node 9 in each.
-  auto deck = read(std::string(kNodes) + "*EQUATION\n3\nBOTTOM, 1, 1., TOP, 1, -1., 9, 2, .5\n" +
-                   kStep);
+  auto deck =
+      read(std::string(kNodes) + "*EQUATION\n3\nBOTTOM, 1, 1., TOP, 1, -1., 9, 2, .5\n" + kStep);
   EXPECT_TRUE(deck->sink.diagnostics().empty()) << deck->dump();
   std::vector<std::vector<Term>> expected;
   for (int k = 0; k < 4; ++k) expected.push_back({{1 + k, 1, 1.0}, {5 + k, 1, -1.0}, {9, 2, 0.5}});
@@ -112,30 +129,24 @@ TEST(Equations, ASingleFirstNodeCannotBeEliminatedPerSetEntry) {
 }
 
 TEST(Equations, FieldErrorsAreReportedAtTheirField) {
-  struct Case {
-    const char* data;
-    DiagCode code;
-    std::uint32_t line, column;
-  };
-  const Case cases[] = {
-      {"0\n", DiagCode::value_out_of_range, 22, 1},                      // N < 1
-      {"2.5\n1, 1, 1.\n", DiagCode::expected_integer, 22, 1},            // N not an integer
-      {"2\n1, 1, 0., 2, 1, 1.\n", DiagCode::value_out_of_range, 23, 7},  // zero first coefficient
-      {"2\n1, 7, 1., 2, 1, 1.\n", DiagCode::invalid_dof, 23, 4},         // DOF 7
-      {"1\n1, 1, 1., 2, 1, 1.\n", DiagCode::too_many_fields, 23, 11},    // more terms than N
-      {"3\n1, 1, 1., 2, 1, 1.\n", DiagCode::missing_data_line, 22, 1},   // fewer terms than N
-      {"2\n1, 1, 1., 2, 1\n", DiagCode::missing_field, 23, 15},          // no coefficient
-      {"2\n1, 1, 1., 77, 1, 1.\n", DiagCode::undefined_node, 23, 11},
-      {"2\n1, 1, 1., NOSET, 1, 1.\n", DiagCode::undefined_set, 23, 11},
-      {"2\n1, 1, 1., 1, 1, -1.\n", DiagCode::invalid_value, 23, 14},  // DOF 1 of node 1 twice
-  };
-  for (const Case& c : cases) {
-    auto deck = read(std::string(kNodes) + "*EQUATION\n" + c.data + kStep);
-    const Diagnostic& d = deck->one(c.code);
-    EXPECT_EQ(d.loc.line, c.line) << c.data << deck->dump();
-    EXPECT_EQ(d.loc.column, c.column) << c.data << deck->dump();
-    EXPECT_TRUE(deck->model.constraints.equations.empty()) << c.data;
-  }
+  expect_refusals({
+      {"*EQUATION\n0\n", DiagCode::value_out_of_range, 22, 1},  // N < 1
+      // N not an integer
+      {"*EQUATION\n2.5\n1, 1, 1.\n", DiagCode::expected_integer, 22, 1},
+      // zero first coefficient
+      {"*EQUATION\n2\n1, 1, 0., 2, 1, 1.\n", DiagCode::value_out_of_range, 23, 7},
+      {"*EQUATION\n2\n1, 7, 1., 2, 1, 1.\n", DiagCode::invalid_dof, 23, 4},  // DOF 7
+      // more terms than N
+      {"*EQUATION\n1\n1, 1, 1., 2, 1, 1.\n", DiagCode::too_many_fields, 23, 11},
+      // fewer terms than N
+      {"*EQUATION\n3\n1, 1, 1., 2, 1, 1.\n", DiagCode::missing_data_line, 22, 1},
+      // no coefficient
+      {"*EQUATION\n2\n1, 1, 1., 2, 1\n", DiagCode::missing_field, 23, 15},
+      {"*EQUATION\n2\n1, 1, 1., 77, 1, 1.\n", DiagCode::undefined_node, 23, 11},
+      {"*EQUATION\n2\n1, 1, 1., NOSET, 1, 1.\n", DiagCode::undefined_set, 23, 11},
+      // DOF 1 of node 1 twice
+      {"*EQUATION\n2\n1, 1, 1., 1, 1, -1.\n", DiagCode::invalid_value, 23, 14},
+  });
 }
 
 TEST(Equations, RotationsAreRefusedUnderNlgeomAndOutOfPlaneDofsIn2D) {
@@ -164,25 +175,57 @@ TEST(Equations, InstanceQualifiedNodesAndSets) {
       "*INSTANCE, NAME=I2, PART=P\n0, 0, 1\n*END INSTANCE\n"
       "*ELEMENT, TYPE=CONN3D2, ELSET=W\n1, I1.1, I2.1\n2, I1.2, I2.2\n"
       "*CONNECTOR SECTION, ELSET=W\nCARTESIAN,\n"
-      "*EQUATION\n2\nI2.S, 3, 1., I1.S, 3, -1.\n*END ASSEMBLY\n" + std::string(kStep));
+      "*EQUATION\n2\nI2.S, 3, 1., I1.S, 3, -1.\n*END ASSEMBLY\n" +
+      std::string(kStep));
   EXPECT_TRUE(deck->sink.diagnostics().empty()) << deck->dump();
   const auto& c = deck->model.constraints;
   ASSERT_EQ(c.equations.size(), 2u);
   for (std::size_t k = 0; k < 2; ++k) {
-    const Node& dependent = deck->model.nodes[static_cast<std::size_t>(c.equations[k].terms[0].node)];
+    const Node& dependent =
+        deck->model.nodes[static_cast<std::size_t>(c.equations[k].terms[0].node)];
     const Node& other = deck->model.nodes[static_cast<std::size_t>(c.equations[k].terms[1].node)];
     EXPECT_EQ(dependent.label, static_cast<std::int32_t>(k + 1));
     EXPECT_EQ(other.label, static_cast<std::int32_t>(k + 1));
-    EXPECT_EQ(deck->model.instances[static_cast<std::size_t>(dependent.instance)].name.display, "I2");
+    EXPECT_EQ(deck->model.instances[static_cast<std::size_t>(dependent.instance)].name.display,
+              "I2");
     EXPECT_EQ(deck->model.instances[static_cast<std::size_t>(other.instance)].name.display, "I1");
   }
+}
+
+TEST(Equations, UnsortedSetsMatchedWithAnotherSetAreRefused) {
+  // clinch keeps sets in ascending order, so the written order of an UNSORTED set is lost.
+  auto deck = read(std::string(kNodes) +
+                   "*NSET, NSET=BACK, UNSORTED\n8, 7, 6, 5\n"
+                   "*EQUATION\n2\nBACK, 1, 1., BOTTOM, 1, -1.\n" +
+                   kStep);
+  const Diagnostic& d = deck->one(DiagCode::unsupported_option);
+  EXPECT_EQ(d.loc.line, 25u);
+  EXPECT_EQ(d.loc.column, 1u);
+  EXPECT_TRUE(deck->model.constraints.equations.empty());
+  // Against a single node its order does not matter.
+  auto single = read(std::string(kNodes) +
+                     "*NSET, NSET=BACK, UNSORTED\n8, 7, 6, 5\n"
+                     "*MPC\nPIN, BACK, 9\n" +
+                     kStep);
+  EXPECT_TRUE(single->sink.diagnostics().empty()) << single->dump();
+  EXPECT_EQ(single->model.constraints.followers.size(), 4u);
+}
+
+TEST(Equations, ALineMayEndWithAComma) {
+  // CalculiX writes full lines of four terms with a trailing comma.
+  auto deck = read(std::string(kNodes) +
+                   "*EQUATION\n5\n1,1,1.,2,1,-.25,3,1,-.25,4,1,-.25,\n5,1,-.25\n" + kStep);
+  EXPECT_TRUE(deck->sink.diagnostics().empty()) << deck->dump();
+  const std::vector<std::vector<Term>> expected{
+      {{1, 1, 1.0}, {2, 1, -0.25}, {3, 1, -0.25}, {4, 1, -0.25}, {5, 1, -0.25}}};
+  EXPECT_EQ(equations(*deck), expected);
 }
 
 // ---- *MPC ------------------------------------------------------------------------------------
 
 TEST(Mpcs, BeamTiePinAndLink) {
-  auto deck = read(std::string(kNodes) +
-                   "*MPC\nBEAM, 5, 1\nTIE, 6, 2\npin, 7, 3\nLINK, 8, 4\n" + kStep);
+  auto deck =
+      read(std::string(kNodes) + "*MPC\nBEAM, 5, 1\nTIE, 6, 2\npin, 7, 3\nLINK, 8, 4\n" + kStep);
   EXPECT_TRUE(deck->sink.diagnostics().empty()) << deck->dump();
   const std::map<std::int32_t, FollowerView> expected{
       {5, {1, 0x3F, true}}, {6, {2, 0x3F, false}}, {7, {3, 0x07, false}}};
@@ -201,9 +244,9 @@ TEST(Mpcs, BeamTiePinAndLink) {
 TEST(Mpcs, SetsArePairedAndASingleNodeSecondIsShared) {
   auto deck = read(std::string(kNodes) + "*MPC\nPIN, TOP, BOTTOM\nBEAM, PAIR, 9\n" + kStep);
   EXPECT_TRUE(deck->sink.diagnostics().empty()) << deck->dump();
-  const std::map<std::int32_t, FollowerView> expected{
-      {5, {1, 0x07, false}}, {6, {2, 0x07, false}}, {7, {3, 0x07, false}},
-      {8, {4, 0x07, false}}, {2, {9, 0x3F, true}},  {3, {9, 0x3F, true}}};
+  const std::map<std::int32_t, FollowerView> expected{{5, {1, 0x07, false}}, {6, {2, 0x07, false}},
+                                                      {7, {3, 0x07, false}}, {8, {4, 0x07, false}},
+                                                      {2, {9, 0x3F, true}},  {3, {9, 0x3F, true}}};
   EXPECT_EQ(followers(*deck), expected);
 }
 
@@ -218,12 +261,7 @@ TEST(Mpcs, TwoDimensionalModelsUseDofsOneTwoSix) {
 }
 
 TEST(Mpcs, RefusalsAtTheirField) {
-  struct Case {
-    const char* text;
-    DiagCode code;
-    std::uint32_t line, column;
-  };
-  const Case cases[] = {
+  expect_refusals({
       {"*MPC\nREVOLUTE, 5, 1, 2\n", DiagCode::unsupported_option, 22, 1},
       {"*MPC\nSLIDER, 5, 1, 2\n", DiagCode::unsupported_option, 22, 1},
       {"*MPC, USER\n1, 5, 1\n", DiagCode::unsupported_option, 21, 7},
@@ -233,22 +271,14 @@ TEST(Mpcs, RefusalsAtTheirField) {
       {"*MPC\nBEAM, 5\n", DiagCode::missing_field, 22, 8},
       {"*MPC\nBEAM, 5, 1, 2\n", DiagCode::too_many_fields, 22, 13},
       {"*NODE\n10, 0, 1, 0\n*MPC\nLINK, 10, 5\n", DiagCode::degenerate_mpc, 24, 1},
-  };
-  for (const Case& c : cases) {
-    auto deck = read(std::string(kNodes) + c.text + kStep);
-    const Diagnostic& d = deck->one(c.code);
-    EXPECT_EQ(d.loc.line, c.line) << c.text << deck->dump();
-    EXPECT_EQ(d.loc.column, c.column) << c.text << deck->dump();
-    EXPECT_TRUE(deck->model.constraints.followers.empty()) << c.text;
-    EXPECT_TRUE(deck->model.constraints.links.empty()) << c.text;
-  }
+  });
 }
 
 // ---- Overconstraints -------------------------------------------------------------------------
 
 TEST(Overconstraints, ADofTiedTwiceNamesBothLines) {
-  auto deck = read(std::string(kNodes) + "*MPC\nPIN, 5, 1\n*EQUATION\n2\n5, 2, 1., 6, 2, -1.\n" +
-                   kStep);
+  auto deck =
+      read(std::string(kNodes) + "*MPC\nPIN, 5, 1\n*EQUATION\n2\n5, 2, 1., 6, 2, -1.\n" + kStep);
   const Diagnostic& d = deck->one(DiagCode::constraint_conflict);
   EXPECT_EQ(d.loc.line, 25u);  // the later definition
   EXPECT_NE(d.message.find("DOF 2 of node 5 is tied twice"), std::string::npos) << d.message;
@@ -260,14 +290,16 @@ TEST(Overconstraints, ADofTiedTwiceNamesBothLines) {
 TEST(Overconstraints, ARigidBodyNodeTiedByAnMpc) {
   auto deck = read(std::string(kNodes) +
                    "*NSET, NSET=BODY\n5, 6\n*RIGID BODY, REF NODE=1, TIE NSET=BODY\n"
-                   "*MPC\nBEAM, 6, 2\n" + kStep);
+                   "*MPC\nBEAM, 6, 2\n" +
+                   kStep);
   const Diagnostic& d = deck->one(DiagCode::constraint_conflict);
   EXPECT_EQ(d.loc.line, 25u);
   EXPECT_NE(d.message.find("*RIGID BODY at line 23"), std::string::npos) << d.message;
 }
 
 TEST(Overconstraints, APrescribedDependentDofPointsToTheReferenceNode) {
-  auto deck = read(std::string(kNodes) + "*MPC\nBEAM, 5, 1\n*BOUNDARY\n9, 1, 6\n*STEP\n*STATIC\n"
+  auto deck = read(std::string(kNodes) +
+                   "*MPC\nBEAM, 5, 1\n*BOUNDARY\n9, 1, 6\n*STEP\n*STATIC\n"
                    "*BOUNDARY\n5, 2, 2, 0.1\n*END STEP\n");
   const Diagnostic& d = deck->one(DiagCode::dependent_dof_prescribed);
   EXPECT_EQ(d.loc.line, 28u);
@@ -281,8 +313,10 @@ TEST(Overconstraints, ChainsAreSubstitutedButCyclesAreErrors) {
   auto chain = read(std::string(kNodes) + "*MPC\nBEAM, 5, 1\nBEAM, 1, 2\n" + kStep);
   EXPECT_TRUE(chain->sink.diagnostics().empty()) << chain->dump();
   // u1(5) = u1(6), u1(6) = u1(5): a cycle.
-  auto cycle = read(std::string(kNodes) + "*EQUATION\n2\n5, 1, 1., 6, 1, -1.\n2\n"
-                    "6, 1, 1., 5, 1, -1.\n" + kStep);
+  auto cycle = read(std::string(kNodes) +
+                    "*EQUATION\n2\n5, 1, 1., 6, 1, -1.\n2\n"
+                    "6, 1, 1., 5, 1, -1.\n" +
+                    kStep);
   const Diagnostic& d = cycle->one(DiagCode::constraint_cycle);
   EXPECT_EQ(d.loc.line, 25u);
   ASSERT_EQ(d.notes.size(), 1u);
@@ -304,15 +338,16 @@ TEST(Overconstraints, NonlinearChainsUnderNlgeom) {
 }
 
 TEST(Overconstraints, LinearisedAndPartialRotationCouplingsUnderNlgeom) {
-  auto distributing = read(
-      std::string(kNodes) + "*SURFACE, TYPE=NODE, NAME=S\nTOP\nBOTTOM\n"
-      "*COUPLING, REF NODE=9, SURFACE=S, CONSTRAINT NAME=C\n*DISTRIBUTING\n" + kNlgeomStep);
+  auto distributing = read(std::string(kNodes) +
+                           "*SURFACE, TYPE=NODE, NAME=S\nTOP\nBOTTOM\n"
+                           "*COUPLING, REF NODE=9, SURFACE=S, CONSTRAINT NAME=C\n*DISTRIBUTING\n" +
+                           kNlgeomStep);
   const Diagnostic& d = distributing->one(DiagCode::constraint_not_under_nlgeom);
   EXPECT_EQ(d.loc.line, 24u);
   EXPECT_NE(d.message.find("linearised"), std::string::npos) << d.message;
 
-  auto partial = read(std::string(kNodes) + "*KINEMATIC COUPLING, REF NODE=9\n5, 1, 4\n" +
-                      kNlgeomStep);
+  auto partial =
+      read(std::string(kNodes) + "*KINEMATIC COUPLING, REF NODE=9\n5, 1, 4\n" + kNlgeomStep);
   const Diagnostic& p = partial->one(DiagCode::constraint_not_under_nlgeom);
   EXPECT_EQ(p.loc.line, 21u);
   EXPECT_NE(p.message.find("some but not all rotations"), std::string::npos) << p.message;
@@ -326,19 +361,25 @@ TEST(Overconstraints, AConnectorInsideARigidGroupWithConstrainedComponents) {
   // Nodes 5 and 6 both follow node 1 rigidly; a JOIN between them constrains components 1-3
   // that the body already fixes. A CARTESIAN (no constrained component) between them is fine.
   const std::string body = std::string(kNodes) + "*MPC\nBEAM, 5, 1\nBEAM, 6, 1\n";
-  auto join = read(body + "*ELEMENT, TYPE=CONN3D2, ELSET=J\n101, 5, 6\n"
-                   "*CONNECTOR SECTION, ELSET=J\nJOIN,\n" + kStep);
+  auto join = read(body +
+                   "*ELEMENT, TYPE=CONN3D2, ELSET=J\n101, 5, 6\n"
+                   "*CONNECTOR SECTION, ELSET=J\nJOIN,\n" +
+                   kStep);
   const Diagnostic& d = join->one(DiagCode::connector_overconstraint);
   EXPECT_EQ(d.loc.line, 25u);
   EXPECT_NE(d.message.find("components 1, 2, 3"), std::string::npos) << d.message;
-  auto cartesian = read(body + "*ELEMENT, TYPE=CONN3D2, ELSET=J\n101, 5, 6\n"
-                        "*CONNECTOR SECTION, ELSET=J\nCARTESIAN,\n" + kStep);
+  auto cartesian = read(body +
+                        "*ELEMENT, TYPE=CONN3D2, ELSET=J\n101, 5, 6\n"
+                        "*CONNECTOR SECTION, ELSET=J\nCARTESIAN,\n" +
+                        kStep);
   EXPECT_TRUE(cartesian->with(DiagCode::connector_overconstraint).empty()) << cartesian->dump();
   // RIGID elasticity on a free component counts as constrained; the reference node itself as
   // one end.
-  auto rigid = read(body + "*ELEMENT, TYPE=CONN3D2, ELSET=J\n101, 1, 6\n"
+  auto rigid = read(body +
+                    "*ELEMENT, TYPE=CONN3D2, ELSET=J\n101, 1, 6\n"
                     "*CONNECTOR SECTION, ELSET=J, BEHAVIOR=B\nCARTESIAN,\n"
-                    "*CONNECTOR BEHAVIOR, NAME=B\n*CONNECTOR ELASTICITY, RIGID\n2\n" + kStep);
+                    "*CONNECTOR BEHAVIOR, NAME=B\n*CONNECTOR ELASTICITY, RIGID\n2\n" +
+                    kStep);
   const Diagnostic& r = rigid->one(DiagCode::connector_overconstraint);
   EXPECT_NE(r.message.find("component 2 "), std::string::npos) << r.message;
 }
