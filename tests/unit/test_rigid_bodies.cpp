@@ -17,11 +17,7 @@
 namespace clinch {
 namespace {
 
-std::unique_ptr<CheckedDeck> read(const std::string& text) {
-  auto deck = std::make_unique<CheckedDeck>();
-  read_deck_text("deck.inp", text, deck->sources, deck->model, deck->sink);
-  return deck;
-}
+std::unique_ptr<CheckedDeck> read(const std::string& text) { return read_checked_deck(text); }
 
 constexpr const char* kStep = "*STEP\n*STATIC\n*END STEP\n";
 
