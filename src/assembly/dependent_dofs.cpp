@@ -158,6 +158,7 @@ class Builder {
   }
 
   void resolve() {
+    std::vector<std::uint8_t> turns_with_another(map_.nodes(), 0);
     for (DependentDof& d : out_.dofs) {
       d.first_resolved = static_cast<std::uint32_t>(out_.resolved_equation.size());
       for (std::uint32_t t = d.first_term; t < d.first_term + d.term_count; ++t) {
@@ -176,12 +177,10 @@ class Builder {
       }
       d.resolved_count = static_cast<std::uint32_t>(out_.resolved_equation.size()) -
                          d.first_resolved;
-      if (d.map == DependentDof::Map::Rotation && d.reference >= 0) {
-        const std::pair<std::int32_t, std::int32_t> follow{d.node, d.reference};
-        if (std::find(out_.rotation_followers.begin(), out_.rotation_followers.end(), follow) ==
-            out_.rotation_followers.end()) {
-          out_.rotation_followers.push_back(follow);
-        }
+      if (d.map == DependentDof::Map::Rotation && d.reference >= 0 &&
+          !turns_with_another[static_cast<std::size_t>(d.node)]) {
+        turns_with_another[static_cast<std::size_t>(d.node)] = 1;
+        out_.rotation_followers.emplace_back(d.node, d.reference);
       }
     }
   }
@@ -198,10 +197,6 @@ class Builder {
 };
 
 }  // namespace
-
-bool DependentDofs::any_curved() const {
-  return std::any_of(dofs.begin(), dofs.end(), [](const DependentDof& d) { return d.curved(); });
-}
 
 int DependentDofs::solved_node_block(const DofMap& map) const {
   if (dofs.empty()) return map.uniform_node_block();

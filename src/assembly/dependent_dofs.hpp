@@ -67,7 +67,6 @@ struct DependentDofs {
   bool is_dependent(int equation) const {
     return !of_equation.empty() && of_equation[static_cast<std::size_t>(equation)] >= 0;
   }
-  bool any_curved() const;
   int solved(int equation) const {
     return solved_of_equation.empty() ? equation
                                       : solved_of_equation[static_cast<std::size_t>(equation)];
