@@ -308,8 +308,8 @@ void ConnectorSystem::scatter_element(const LocalEquations& l, std::int32_t expa
   }
   const ElementExpansion& e = plan_.expansions[static_cast<std::size_t>(expansion)];
   condense(e, l, plan_.dependents, motion_, local, tangent != nullptr, condensed_, internal_);
-  // The rigid arms make a condensed tangent unsymmetric away from equilibrium.
-  scatter(e.equations, offset, condensed_.r, condensed_.k, true, tangent);
+  // TᵀKT is as symmetric as K (up to round-off).
+  scatter(e.equations, offset, condensed_.r, condensed_.k, symmetrize, tangent);
 }
 
 template <typename Residual, typename Tangent>
