@@ -78,7 +78,7 @@ std::vector<KeywordSpec> general_keyword_specs() {
   for (std::string_view name :
        {"BEAM GENERAL SECTION",
         "TRANSFORM", "SYSTEM", "GAP", "DLOAD", "DSLOAD",
-        "TEMPERATURE", "INITIAL CONDITIONS", "TIME POINTS", "NO ANALYSIS", "PARAMETER DEPENDENCE",
+        "TEMPERATURE", "TIME POINTS", "NO ANALYSIS", "PARAMETER DEPENDENCE",
         "PARAMETER TABLE", "PARAMETER TABLE TYPE", "PARAMETER SHAPE VARIATION",
         "CONNECTOR UNIAXIAL BEHAVIOR", "CHANGE FRICTION", "SURFACE INTERACTION",
         "CONTACT PAIR", "CONTACT", "TIE", "SURFACE BEHAVIOR", "GRAVITY",
@@ -94,9 +94,9 @@ std::vector<KeywordSpec> general_keyword_specs() {
         "DSECURRENT", "RELEASE", "MOTION", "INITIAL STATE", "IMPORT", "MAP SOLUTION"}) {
     specs.push_back(not_supported(name));
   }
-  // Step procedures that clinch does not run (keywords.md §15: *STATIC is the procedure).
+  // Step procedures that clinch does not run (keywords.md §15: *STATIC and *DYNAMIC are run).
   for (std::string_view name :
-       {"FREQUENCY", "DYNAMIC", "MODAL DYNAMIC", "STEADY STATE DYNAMICS", "BUCKLE",
+       {"FREQUENCY", "MODAL DYNAMIC", "STEADY STATE DYNAMICS", "BUCKLE",
         "HEAT TRANSFER", "COUPLED TEMPERATURE-DISPLACEMENT", "VISCO", "GEOSTATIC", "SOILS",
         "RANDOM RESPONSE", "RESPONSE SPECTRUM", "SUBSTRUCTURE GENERATE", "MATRIX GENERATE"}) {
     KeywordSpec spec = not_supported(name);

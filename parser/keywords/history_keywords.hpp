@@ -21,6 +21,8 @@ std::vector<KeywordSpec> step_keyword_specs();
 std::vector<KeywordSpec> condition_keyword_specs();
 // *AMPLITUDE (amplitude.cpp).
 std::vector<KeywordSpec> amplitude_keyword_specs();
+// *INITIAL CONDITIONS, TYPE=VELOCITY (initial_conditions.cpp).
+std::vector<KeywordSpec> initial_condition_keyword_specs();
 // *OUTPUT, *ELEMENT OUTPUT, *NODE OUTPUT, *NODE PRINT, *EL PRINT (output.cpp).
 std::vector<KeywordSpec> output_keyword_specs();
 

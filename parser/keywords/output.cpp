@@ -18,7 +18,9 @@ void read_identifiers(BlockContext& ctx, const std::vector<Field>& fields, Outpu
     IdentifierParse parsed = parse_output_identifier(field.text, context);
     switch (parsed.status) {
       case IdentifierStatus::Ok:
-        if (parsed.info->producer == OutputProducer::StaticZero) {
+        // In a *DYNAMIC step V and A have values (CV and CA are refused there, check.hpp).
+        if (parsed.info->producer == OutputProducer::StaticZero &&
+            !(ctx.position().in_step && current_step(ctx).dynamic)) {
           ctx.report(DiagCode::output_static_zero, field,
                      fmt::format("{} is always 0 in a static step", field.text));
         }

@@ -10,7 +10,7 @@ namespace clinch {
 std::vector<KeywordSpec> history_keyword_specs() {
   std::vector<KeywordSpec> specs;
   for (auto* family : {&step_keyword_specs, &condition_keyword_specs, &amplitude_keyword_specs,
-                       &output_keyword_specs}) {
+                       &initial_condition_keyword_specs, &output_keyword_specs}) {
     for (KeywordSpec& spec : family()) specs.push_back(std::move(spec));
   }
   return specs;

@@ -148,20 +148,21 @@ class EndStepHandler : public KeywordHandler {
     // stands, by *STATIC).
     if (!step.procedure && !step.procedure_refused) {
       ctx.report(DiagCode::step_procedure, ctx.keyword().loc,
-                 fmt::format("step '{}' has no procedure (expected *STATIC)", step.name.display))
+                 fmt::format("step '{}' has no procedure (expected *STATIC or *DYNAMIC)", step.name.display))
           .notes.push_back({step.loc, "step defined here"});
     }
   }
 };
 
-// ---- *STATIC ----------------------------------------------------------------------------------
+// ---- *STATIC and *DYNAMIC -----------------------------------------------------------------------
 
+// The time data both procedures share: DIRECT, the data line (initial increment, period, minimum,
+// maximum) and its rules (§15). *DYNAMIC adds its integration operator (DynamicHandler).
 class StaticHandler : public KeywordHandler {
  public:
   void begin(BlockContext& ctx) override {
     const ParamSet& params = ctx.params();
-    report_unsupported_params(
-        ctx, {"STABILIZE", "ALLSDTOL", "CONTINUE", "FACTOR", "RIKS", "LONG TERM", "ADAPTIVE"});
+    report_unsupported_params(ctx, unsupported_parameters());
     procedure_.loc = ctx.keyword().loc;
     if (params.has("DIRECT")) {
       procedure_.direct = true;
@@ -184,6 +185,7 @@ class StaticHandler : public KeywordHandler {
                  fmt::format("step '{}' has more than one procedure", step.name.display))
           .notes.push_back({step.procedure->loc, "first procedure is here"});
     }
+    read_operator(ctx);
   }
 
   void data_line(BlockContext& ctx, const DataLine& line, std::vector<Field>& fields) override {
@@ -192,8 +194,9 @@ class StaticHandler : public KeywordHandler {
       if (!extra_reported_) {
         extra_reported_ = true;
         ctx.report(DiagCode::unexpected_data_line, line.loc,
-                   "*STATIC takes one data line (initial increment, step period, minimum and "
-                   "maximum increment)");
+                   fmt::format("{} takes one data line (initial increment, step period, minimum "
+                               "and maximum increment)",
+                               ctx.keyword_display()));
       }
       return;
     }
@@ -261,8 +264,19 @@ class StaticHandler : public KeywordHandler {
                 {step.inc_loc.valid() ? step.inc_loc : step.loc, "INC of the step is set here"});
       }
     }
-    if (!duplicate_) step.procedure = p;
+    if (!duplicate_) {
+      step.procedure = p;
+      keep_operator(step);
+    }
   }
+
+ protected:
+  virtual std::initializer_list<std::string_view> unsupported_parameters() const {
+    return {"STABILIZE", "ALLSDTOL", "CONTINUE", "FACTOR", "RIKS", "LONG TERM", "ADAPTIVE"};
+  }
+  // What a procedure adds to the time data, read from the keyword line and kept with the step.
+  virtual void read_operator(BlockContext&) {}
+  virtual void keep_operator(Step&) const {}
 
  private:
   StaticProcedure procedure_;
@@ -270,6 +284,89 @@ class StaticHandler : public KeywordHandler {
   bool has_data_ = false;
   bool extra_reported_ = false;
   bool duplicate_ = false;
+};
+
+// *DYNAMIC (implicit): the Hilber–Hughes–Taylor operator, or backward Euler for
+// APPLICATION=QUASI-STATIC, with the defaults of each APPLICATION (docs/decisions.md "Implicit
+// dynamics"): ALPHA −0.05 (TRANSIENT FIDELITY) or −0.41421 (MODERATE DISSIPATION), and from it
+// BETA = (1 − ALPHA)²/4 and GAMMA = 1/2 − ALPHA unless given.
+class DynamicHandler final : public StaticHandler {
+ protected:
+  std::initializer_list<std::string_view> unsupported_parameters() const override {
+    return {"EXPLICIT",          "SUBSPACE",     "ADIABATIC",
+            "NOHAF",             "TIME INTEGRATOR", "STABILIZE",
+            "ALLSDTOL",          "CONTINUE",     "FACTOR",
+            "ELEMENT BY ELEMENT", "FIXED TIME INCREMENTATION", "IMPROVED DT METHOD",
+            "SCALE FACTOR",      "DIRECT USER CONTROL"};
+  }
+
+  void read_operator(BlockContext& ctx) override {
+    using Application = DynamicProcedure::Application;
+    const ParamSet& params = ctx.params();
+    DynamicProcedure& d = dynamic_;
+    d.loc = ctx.keyword().loc;
+    const std::string_view application = params.enum_value("APPLICATION");
+    d.application = application == "MODERATE DISSIPATION" ? Application::ModerateDissipation
+                    : application == "QUASI-STATIC"       ? Application::QuasiStatic
+                                                          : Application::TransientFidelity;
+    d.backward_euler = d.application == Application::QuasiStatic;
+    d.initial_acceleration = params.has("INITIAL") ? params.enum_value("INITIAL") == "YES"
+                                                   : !d.backward_euler;
+    d.alpha = d.application == Application::ModerateDissipation ? -0.41421 : -0.05;
+    if (d.backward_euler) {
+      d.alpha = 0.0;
+      for (std::string_view name : {"ALPHA", "BETA", "GAMMA"}) {
+        if (!params.has(name)) continue;
+        ctx.report(DiagCode::parameter_ignored, params.loc(name),
+                   fmt::format("{} has no effect with APPLICATION=QUASI-STATIC (backward Euler)",
+                               name));
+      }
+    } else {
+      if (auto alpha = bounded(ctx, "ALPHA", -0.5, 0.0, "between -0.5 and 0")) d.alpha = *alpha;
+      d.beta = 0.25 * (1.0 - d.alpha) * (1.0 - d.alpha);
+      d.gamma = 0.5 - d.alpha;
+      if (auto beta = bounded(ctx, "BETA", 0.0, 1.0, "positive and at most 1")) d.beta = *beta;
+      if (auto gamma = bounded(ctx, "GAMMA", 0.0, 1.5, "positive and at most 1.5")) {
+        d.gamma = *gamma;
+      }
+    }
+    if (params.has("HAFTOL")) {
+      d.haftol_loc = params.loc("HAFTOL", true);
+      if (auto haftol = ctx.real_param("HAFTOL")) {
+        if (*haftol > 0) {
+          d.haftol = *haftol;
+        } else {
+          ctx.report(DiagCode::value_out_of_range, *params.value("HAFTOL"),
+                     fmt::format("HAFTOL must be positive, got {}", *haftol));
+        }
+      }
+      if (params.has("DIRECT")) {
+        ctx.report(DiagCode::parameter_ignored, params.loc("HAFTOL"),
+                   "HAFTOL has no effect with DIRECT (fixed increments are not checked by the "
+                   "half-increment residual)");
+      }
+    }
+  }
+
+  void keep_operator(Step& step) const override { step.dynamic = dynamic_; }
+
+ private:
+  // A real parameter in [low, high] (low excluded when it is 0 and the value must be positive).
+  std::optional<double> bounded(BlockContext& ctx, std::string_view name, double low, double high,
+                                std::string_view expected) {
+    if (!ctx.params().has(name)) return std::nullopt;
+    auto value = ctx.real_param(name);
+    if (!value) return std::nullopt;
+    const bool positive_only = low == 0.0 && name != "ALPHA";
+    if (*value > high || *value < low || (positive_only && *value == 0.0)) {
+      ctx.report(DiagCode::value_out_of_range, *ctx.params().value(name),
+                 fmt::format("{} must be {}, got {}", name, expected, *value));
+      return std::nullopt;
+    }
+    return value;
+  }
+
+  DynamicProcedure dynamic_;
 };
 
 // ---- *CONTROLS --------------------------------------------------------------------------------
@@ -526,6 +623,30 @@ std::vector<KeywordSpec> step_keyword_specs() {
   };
   stat.make_handler = &make<StaticHandler>;
   specs.push_back(std::move(stat));
+
+  KeywordSpec dynamic;
+  dynamic.name = "DYNAMIC";
+  dynamic.level = KeywordLevel::History;
+  dynamic.params = {
+      {"APPLICATION",
+       ParamKind::Enum,
+       false,
+       {"TRANSIENT FIDELITY", "MODERATE DISSIPATION", "QUASI-STATIC"}},
+      {"ALPHA", ParamKind::Value},
+      {"BETA", ParamKind::Value},
+      {"GAMMA", ParamKind::Value},
+      {"INITIAL", ParamKind::Enum, false, {"YES", "NO"}},
+      {"HAFTOL", ParamKind::Value},
+      {"DIRECT", ParamKind::OptionalValue},
+  };
+  for (std::string_view name :
+       {"EXPLICIT", "SUBSPACE", "ADIABATIC", "NOHAF", "TIME INTEGRATOR", "STABILIZE", "ALLSDTOL",
+        "CONTINUE", "FACTOR", "ELEMENT BY ELEMENT", "FIXED TIME INCREMENTATION",
+        "IMPROVED DT METHOD", "SCALE FACTOR", "DIRECT USER CONTROL"}) {
+    dynamic.params.push_back(unsupported_param(name));
+  }
+  dynamic.make_handler = &make<DynamicHandler>;
+  specs.push_back(std::move(dynamic));
 
   KeywordSpec controls;
   controls.name = "CONTROLS";

@@ -56,6 +56,9 @@ class PlanBuilder {
     plan_.small_displacement =
         steps.empty() ||
         std::any_of(steps.begin(), steps.end(), [](const Step& s) { return !s.nlgeom; });
+    plan_.dynamic =
+        std::any_of(steps.begin(), steps.end(), [](const Step& s) { return s.dynamic; });
+    if (plan_.dynamic) plan_.inertia = nodal_inertia(model_, plan_.dofs);
     section_laws_.assign(model_.sections.connector_sections.size(), {});
     section_laws_built_.assign(model_.sections.connector_sections.size(), false);
     section_stops_.assign(model_.sections.connector_sections.size(), nullptr);
@@ -74,8 +77,8 @@ class PlanBuilder {
     plan_.springs.reserve(model_.elements.size() - connectors);
     for (std::size_t e = 0; e < model_.elements.size(); ++e) {
       const Element& element = model_.elements[e];
-      // Held elements carry no formulation: only MASS and ROTARYI reach a run, and a static step
-      // ignores them (check_held_elements).
+      // Held elements carry no formulation: only MASS and ROTARYI reach a run, as the nodal
+      // inertia of dynamic steps (nodal_inertia.hpp).
       if (element.type == ElementType::Held) continue;
       const bool ok = is_connector(element.type)
                           ? add_connector(static_cast<std::int32_t>(e), error)

@@ -15,6 +15,7 @@
 
 #include "src/assembly/dependent_dofs.hpp"
 #include "src/assembly/dof_map.hpp"
+#include "src/assembly/nodal_inertia.hpp"
 #include "src/behavior/behavior.hpp"
 #include "src/behavior/elastic/spring_law.hpp"
 #include "src/kinematics/connector_kinematics.hpp"
@@ -145,6 +146,10 @@ struct AnalysisPlan {
   // The DOFs kinematic constraints eliminate, and the elements that have some.
   DependentDofs dependents;
   std::vector<ElementExpansion> expansions;
+  // The nodes with MASS or ROTARYI elements, when some step is *DYNAMIC (empty otherwise: a
+  // static step does not use inertia).
+  std::vector<NodeInertia> inertia;
+  bool dynamic = false;  // some step is *DYNAMIC (the state keeps velocities, accelerations)
   std::size_t history_size = 0;
   double length_scale = 1.0;  // L̄: largest initial connector length (keywords.md §16)
   bool two_d = false;

@@ -19,6 +19,11 @@ AnalysisState::AnalysisState(const AnalysisPlan& plan)
       dx_n(x),
       rotation(plan.small_displacement ? 0 : plan.dofs.nodes(), Matrix3::Identity()),
       rotation_n(rotation),
+      v(Eigen::VectorXd::Zero(plan.dynamic ? plan.dofs.node_equations() : 0)),
+      v_n(v),
+      a(v),
+      a_n(v),
+      r_n(v),
       history(plan.history_size, 0.0),
       history_n(history),
       active_sets(plan.connectors.size()),
@@ -33,6 +38,8 @@ void AnalysisState::commit() {
   dx_n = x - x_n;
   x_n = x;
   rotation_n = rotation;
+  v_n = v;
+  a_n = a;
   history_n = history;
   for (std::size_t c = 0; c < results.size(); ++c) {
     position_n[c] = results[c].position;
@@ -43,6 +50,8 @@ void AnalysisState::commit() {
 void AnalysisState::revert() {
   x = x_n;
   rotation = rotation_n;
+  v = v_n;
+  a = a_n;
   history = history_n;
   for (ConnectorActiveSet& a : active_sets) a.status = a.status_n;
 }

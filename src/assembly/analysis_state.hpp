@@ -61,6 +61,10 @@ struct AnalysisState {
   // (ConnectorSystem::set_nlgeom): a small-displacement run saves 144 bytes per node and their
   // copy at each commit.
   std::vector<Matrix3> rotation, rotation_n;
+  // Dynamic steps (dynamic_terms.hpp): velocity and acceleration of every nodal equation, trial
+  // and converged, and r_n = I − P at the converged state (the HHT α term); empty when no step
+  // of the deck is dynamic.
+  Eigen::VectorXd v, v_n, a, a_n, r_n;
   std::vector<double> history, history_n;
   std::vector<Vector6> position_n;  // converged connector positions (angle branches, §3.6)
   std::vector<ConnectorActiveSet> active_sets;

@@ -39,6 +39,9 @@ AssemblyPattern build_assembly_pattern(const AnalysisPlan& plan, bool symmetric)
   builder.reserve(local_entries - local_diagonals);
   for (const ConnectorRecord& r : plan.connectors) builder.couple(equations(r));
   for (const SpringRecord& r : plan.springs) builder.couple(equations(r));
+  // A rotary inertia tensor couples the rotations of its node (no dependent DOF carries inertia:
+  // a dynamic step refuses kinematic constraints).
+  for (const NodeInertia& n : plan.inertia) builder.couple(in_solved_numbering(n.rotation));
   // The curvature of rigid arms and links under NLGEOM couples the equations they read.
   for (const DependentDof& d : dependents.dofs) {
     if (!d.curved()) continue;

@@ -11,6 +11,7 @@ ConnectorStepProblem::ConnectorStepProblem(const Model& model, ConnectorSystem& 
 void ConnectorStepProblem::begin_step(std::size_t step, bool nlgeom) {
   system_.set_nlgeom(nlgeom);
   conditions_.begin_step(step, system_);
+  dynamic_step_started_ = false;
 }
 
 void ConnectorStepProblem::end_step(double period, double total_time) {
@@ -19,9 +20,23 @@ void ConnectorStepProblem::end_step(double period, double total_time) {
 
 void ConnectorStepProblem::begin_increment(double step_time, double total_time, double dt,
                                            double extrapolate_scale) {
+  system_.set_integration(nullptr, dt);
   system_.set_time(total_time, dt);
   conditions_.apply(system_, step_time, total_time);
   system_.start_increment(extrapolate_scale);
+}
+
+void ConnectorStepProblem::begin_dynamic_increment(double step_time, double total_time,
+                                                   double dt, const DynamicProcedure& procedure) {
+  if (!dynamic_step_started_) {
+    // The conditions in force are still those of the step start (the last converged state).
+    system_.start_dynamic_step(procedure.initial_acceleration);
+    dynamic_step_started_ = true;
+  }
+  system_.set_integration(&procedure, dt);
+  system_.set_time(total_time, dt);
+  conditions_.apply(system_, step_time, total_time);
+  system_.start_increment(0.0);
 }
 
 std::string ConnectorStepProblem::check_tangent(int step, int increment) {

@@ -22,6 +22,8 @@ class ConnectorStepProblem final : public StepProblem {
 
   void begin_increment(double step_time, double total_time, double dt,
                        double extrapolate_scale) override;
+  void begin_dynamic_increment(double step_time, double total_time, double dt,
+                               const DynamicProcedure& procedure) override;
   std::string check_tangent(int step, int increment) override;
 
   void commit() override { system_.commit(); }
@@ -46,6 +48,7 @@ class ConnectorStepProblem final : public StepProblem {
   const Model& model_;
   ConnectorSystem& system_;
   StepConditions conditions_;
+  bool dynamic_step_started_ = false;  // this step's start state has been taken
 };
 
 }  // namespace clinch

@@ -63,8 +63,52 @@ ConnectorSystem::ConnectorSystem(const Model& model, const AnalysisPlan& plan)
       owned_connectors_{0, plan.connectors.size()},
       owned_springs_{0, plan.springs.size()},
       motion_(plan.dependents, plan.dofs),
-      constraint_load_(Eigen::VectorXd::Zero(plan.dependents.empty() ? 0 : plan.dofs.equations())) {
+      constraint_load_(Eigen::VectorXd::Zero(plan.dependents.empty() ? 0 : plan.dofs.equations())),
+      inertia_force_(Eigen::VectorXd::Zero(plan.dynamic ? plan.dofs.equations() : 0)) {
   use_storage(true);
+  // *INITIAL CONDITIONS, TYPE=VELOCITY: the velocities of the initial state.
+  for (const InitialVelocity& velocity : model.history.initial_velocities) {
+    for (std::int32_t node : velocity.resolved) {
+      const int eq = plan.dofs.equation(node, velocity.dof);
+      if (eq >= 0 && state_.v.size() > 0) state_.v[eq] = state_.v_n[eq] = velocity.value;
+    }
+  }
+}
+
+void ConnectorSystem::set_integration(const DynamicProcedure* procedure, double dt) {
+  if (procedure) {
+    newmark_ = NewmarkIncrement::of(*procedure, dt);
+    return;
+  }
+  newmark_.reset();
+  state_.v.setZero();
+  state_.a.setZero();
+  inertia_force_.setZero();
+}
+
+void ConnectorSystem::start_dynamic_step(bool initial_acceleration) {
+  newmark_ = NewmarkIncrement{};
+  rates_frozen_ = true;
+  state_.v = state_.v_n;
+  state_.a = state_.a_n;
+  Eigen::VectorXd residual(size());
+  // A failure here fails the first Newton evaluation of the increment again, which reports it.
+  const EvalStatus status = evaluate(residual, nullptr);
+  rates_frozen_ = false;
+  if (!status.ok) return;
+  const auto n = state_.r_n.size();
+  state_.r_n = internal_.head(n) - conditions_.external().head(n);
+  if (!initial_acceleration) return;
+  initial_accelerations(plan_.inertia, conditions_, state_.r_n, state_.a_n);
+  state_.a = state_.a_n;
+}
+
+void ConnectorSystem::commit() {
+  state_.commit();
+  if (!newmark_) return;
+  // The converged I − P of this increment is the next increment's HHT α term.
+  const auto n = state_.r_n.size();
+  state_.r_n = internal_.head(n) - conditions_.external().head(n);
 }
 
 void ConnectorSystem::use_storage(bool symmetric) {
@@ -188,6 +232,10 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
   // Each rank sets the flags of its own connectors' multipliers (exchange() merges them).
   if (communicator_) std::fill(multiplier_active_.begin(), multiplier_active_.end(), 0);
   state_.request = {};
+  if (newmark_) {
+    if (!rates_frozen_) newmark_->update_rates(state_);
+    inertia_force_.setZero();
+  }
   const bool want_tangent = tangent != nullptr;
   LocalSystem& local = *local_;
   if (!dependent_failure_.empty()) return {false, dependent_failure_};
@@ -218,7 +266,9 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
   }
   for (std::size_t s = owned_springs_.begin; failed.ok && s < owned_springs_.end; ++s) {
     const SpringRecord& spring = plan_.springs[s];
-    evaluate_spring(plan_, spring, {state_.x, state_.x_n, context_.dt, context_.nlgeom},
+    evaluate_spring(plan_, spring,
+                    {state_.x, state_.x_n, context_.dt, context_.nlgeom,
+                     newmark_ ? &state_.v : nullptr, newmark_ ? newmark_->dv_du : 0.0},
                     want_tangent, local, springs_[s]);
     if (zero_unless_non_finite(local.r.head(spring.local.count)) + springs_[s].force * 0.0 +
             springs_[s].delta * 0.0 !=
@@ -228,8 +278,9 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
                                    qualified_label(model_, e.instance, e.label))};
       break;
     }
-    scatter_element(spring.local, spring.expansion, pattern_->spring_offset[s], local, false,
-                    tangent);
+    // A dashpot's dynamic tangent is unsymmetric under NLGEOM (spring_element.cpp).
+    scatter_element(spring.local, spring.expansion, pattern_->spring_offset[s], local,
+                    spring.dashpot, tangent);
     add_force_entries(spring.local, spring.local.count, local);
   }
   if (communicator_) exchange(tangent, failed);
@@ -238,6 +289,12 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
   const DependentDofs& dependents = plan_.dependents;
   Eigen::VectorXd& full = dependents.empty() ? residual : full_residual_;
   full = internal_ - conditions_.external();
+  if (newmark_) {
+    add_inertia(plan_.inertia, *newmark_, state_, conditions_,
+                {full, tangent, pattern_->diagonal, pattern_->symmetric,
+                 predicting_ ? &predictor_ : nullptr},
+                inertia_force_, element_forces_);
+  }
   if (predicting_ && tangent) full += predictor_;
   if (!dependents.empty()) finish_dependent_rows(full, tangent);
   for (int eq : conditions_.prescribed()) {
@@ -626,7 +683,18 @@ double ConnectorSystem::reaction(std::int32_t node, int dof) const {
   const int eq = plan_.dofs.equation(node, dof);
   if (eq < 0 || !conditions_.is_prescribed(eq)) return 0.0;
   const double moved = constraint_load_.size() > 0 ? constraint_load_[eq] : 0.0;
-  return internal_[eq] - conditions_.external()[eq] - moved;
+  const double inertia = inertia_force_.size() > 0 ? inertia_force_[eq] : 0.0;
+  return internal_[eq] + inertia - conditions_.external()[eq] - moved;
+}
+
+double ConnectorSystem::nodal_rate(std::int32_t node, int dof, int order) const {
+  const int eq = plan_.dofs.equation(node, dof);
+  const Eigen::VectorXd& rate = order == 1 ? state_.v : state_.a;
+  return eq >= 0 && eq < rate.size() ? rate[eq] : 0.0;
+}
+
+double ConnectorSystem::kinetic_energy() const {
+  return state_.v.size() > 0 ? clinch::kinetic_energy(plan_.inertia, state_.v) : 0.0;
 }
 
 double ConnectorSystem::applied_load(std::int32_t node, int dof) const {

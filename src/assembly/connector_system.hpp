@@ -14,6 +14,7 @@
 #include "src/assembly/connector_element.hpp"
 #include "src/assembly/constrained_elements.hpp"
 #include "src/assembly/dependent_motion.hpp"
+#include "src/assembly/dynamic_terms.hpp"
 #include "src/assembly/increment_conditions.hpp"
 #include "src/assembly/spring_element.hpp"
 #include "src/parallel/communicator.hpp"
@@ -59,6 +60,13 @@ class ConnectorSystem final : public NonlinearProblem {
   // following linearly.
   void start_increment(double extrapolate_scale);
   bool is_prescribed(int equation) const { return conditions_.is_prescribed(equation); }
+  // ---- dynamic steps (dynamic_terms.hpp) ----
+  // The integration operator of the next increments, of length dt; null: a static increment,
+  // which has no velocity.
+  void set_integration(const DynamicProcedure* procedure, double dt);
+  // At the start of a dynamic step, before its first increment's conditions: r₀ = I₀ − P₀ of
+  // the converged state (the HHT α term) and, with `initial_acceleration`, a₀ = M⁻¹(−r₀).
+  void start_dynamic_step(bool initial_acceleration);
 
   // ---- NonlinearProblem ----
   // The solved equations: every equation but the dependent ones (dependent_dofs.hpp); residuals
@@ -73,7 +81,7 @@ class ConnectorSystem final : public NonlinearProblem {
                IterationNorms& norms) const override;
 
   // ---- between solves (StepProblem, connector_step_problem.hpp, passes these on) ----
-  void commit() { state_.commit(); }
+  void commit();
   void revert() { state_.revert(); }
   bool update_active_set();
   void end_increment();
@@ -115,6 +123,9 @@ class ConnectorSystem final : public NonlinearProblem {
   double nodal_value(std::int32_t node, int dof) const;
   double reaction(std::int32_t node, int dof) const;  // RF/RM: internal − applied, prescribed DOFs
   double applied_load(std::int32_t node, int dof) const;  // CF/CM
+  // V/VR (order 1) and A/AR (order 2) of DOF `dof` of `node` (0 without a dynamic step).
+  double nodal_rate(std::int32_t node, int dof, int order) const;
+  double kinetic_energy() const;  // ALLKE of the nodal masses
   ConnectorOutput connector_output(std::size_t connector) const;
   const SpringResult& spring_output(std::size_t spring) const { return springs_[spring]; }
   const AnalysisPlan& plan() const { return plan_; }
@@ -178,6 +189,9 @@ class ConnectorSystem final : public NonlinearProblem {
   // reaction of a prescribed reference node.
   Eigen::VectorXd constraint_load_;
   std::string dependent_failure_;
+  std::optional<NewmarkIncrement> newmark_;  // set during a dynamic step
+  bool rates_frozen_ = false;  // evaluate at the converged velocities (start_dynamic_step)
+  Eigen::VectorXd inertia_force_;  // M a per equation at the last evaluation (reactions)
   // With dependent DOFs: the residual over every equation, and a correction expanded to them.
   Eigen::VectorXd full_residual_, full_correction_;  // why the dependent DOFs could not follow the last correction
 };

@@ -13,12 +13,15 @@ struct SpringResult {
 };
 
 // The nodal values an evaluation reads: the trial ones, and for a dashpot's velocity the last
-// converged ones and the time increment.
+// converged ones and the time increment, or in a dynamic step the nodal velocities with their
+// derivative by the nodal values (dynamic_terms.hpp).
 struct SpringMotion {
   const Eigen::VectorXd& x;
   const Eigen::VectorXd& x_n;
   double dt = 0;
   bool nlgeom = false;
+  const Eigen::VectorXd* velocity = nullptr;  // non-null in a dynamic step
+  double dv_du = 0;
 };
 
 void evaluate_spring(const AnalysisPlan& plan, const SpringRecord& s, const SpringMotion& motion,

@@ -7,6 +7,7 @@ void check_model(const Model& model, DiagnosticSink& sink) {
   check_motion_stops(model, sink);
   check_held_elements(model, sink);
   check_constraints(model, sink);
+  check_dynamic_steps(model, sink);
 }
 
 }  // namespace clinch

@@ -15,13 +15,18 @@ void check_behaviors(const Model& model, DiagnosticSink& sink);
 void check_motion_stops(const Model& model, DiagnosticSink& sink);
 
 // One decision per block of held elements (solids, shells, beams, masses, ...): refused while
-// deformable, noted when inertia only (held_elements.cpp).
+// deformable, noted when inertia only and no step is dynamic (held_elements.cpp).
 void check_held_elements(const Model& model, DiagnosticSink& sink);
 
 // Overconstraints across rigid bodies, couplings, MPCs and equations: a DOF tied twice or also
 // prescribed, cycles, chains and linearised maps under NLGEOM, connectors inside a rigid group
 // (constraint_checks.cpp).
 void check_constraints(const Model& model, DiagnosticSink& sink);
+
+// What a *DYNAMIC step cannot run yet (dynamic_step_checks.cpp), and the values of *MASS and
+// *ROTARY INERTIA that the inertia of a dynamic step reads.
+void check_dynamic_steps(const Model& model, DiagnosticSink& sink);
+bool has_dynamic_step(const Model& model);
 
 void check_model(const Model& model, DiagnosticSink& sink);
 

@@ -52,13 +52,14 @@ BlockCount count_deformable(const Model& model, std::int32_t part, const Element
 // *RIGID BODY lifts this for the elements its ELSET carries: then only their nodes count. A block
 // that is only partly inside rigid bodies is refused once, for its deformable elements. MASS and
 // ROTARYI carry inertia only, which plays no role in *STATIC (Abaqus Analysis User's Guide,
-// "Static stress analysis"), the only procedure clinch runs: they are kept and noted, not
-// refused.
+// "Static stress analysis"): in a deck without a *DYNAMIC step they are kept and noted, not
+// refused; a dynamic step uses them (nodal_inertia.hpp).
 void judge_block(const Model& model, std::int32_t part, const ElementBlock& block,
-                 const std::vector<bool>& rigid, DiagnosticSink& sink) {
+                 const std::vector<bool>& rigid, bool dynamic, DiagnosticSink& sink) {
   if (block.count == 0) return;
   const auto family = static_cast<ElementFamily>(block.family);
   if (is_inertia_only(family)) {
+    if (dynamic) return;
     sink.report(DiagCode::inertia_ignored, block.type_loc,
                 fmt::format("{} elements carry inertia only, which a *STATIC step does not use; "
                             "they are kept and have no effect on the results",
@@ -84,10 +85,11 @@ void judge_block(const Model& model, std::int32_t part, const ElementBlock& bloc
 
 void check_held_elements(const Model& model, DiagnosticSink& sink) {
   const std::vector<bool> rigid = rigid_elements(model);
+  const bool dynamic = has_dynamic_step(model);
   for (std::size_t p = 0; p < model.parts.size(); ++p) {
     if (!part_is_placed(model, static_cast<std::int32_t>(p))) continue;
     for (const ElementBlock& block : model.parts[p].element_blocks) {
-      judge_block(model, static_cast<std::int32_t>(p), block, rigid, sink);
+      judge_block(model, static_cast<std::int32_t>(p), block, rigid, dynamic, sink);
     }
   }
 }

@@ -132,6 +132,29 @@ struct StaticProcedure {
   std::array<SourceLoc, 4> field_loc{};  // fields 1–4 (invalid when blank)
 };
 
+// *DYNAMIC (implicit, docs/dynamics.md): the integration operator with its defaults resolved
+// from APPLICATION (docs/decisions.md "Implicit dynamics"); the step's time data (data line,
+// DIRECT) are in the step's StaticProcedure, which both procedures share.
+struct DynamicProcedure {
+  enum class Application : std::uint8_t { TransientFidelity, ModerateDissipation, QuasiStatic };
+  SourceLoc loc;  // keyword line
+  Application application = Application::TransientFidelity;
+  bool backward_euler = false;  // QUASI-STATIC: backward Euler instead of HHT
+  double alpha = -0.05, beta = 0.275625, gamma = 0.55;
+  bool initial_acceleration = true;  // INITIAL=YES: a₀ from equilibrium at the step start
+  std::optional<double> haftol;      // HAFTOL (automatic incrementation only)
+  SourceLoc haftol_loc;
+};
+
+// *INITIAL CONDITIONS, TYPE=VELOCITY data line: the velocity of DOF `dof` (1–6) of the nodes.
+struct InitialVelocity {
+  TargetRef target;
+  std::vector<std::int32_t> resolved;  // global nodes, set by validation
+  int dof = 0;
+  double value = 0;
+  SourceLoc loc, dof_loc;
+};
+
 // PARAMETERS=FIELD (§16): one set for translational and one for rotational fields.
 struct FieldControls {
   double residual = 0.005;             // Rₙ
@@ -248,7 +271,9 @@ struct Step {
   SourceLoc unsymmetric_loc;
   bool extrapolation = true;  // EXTRAPOLATION=LINEAR (false: NO)
 
+  // The time data of the step's procedure: *STATIC's, or *DYNAMIC's (then `dynamic` is set).
   std::optional<StaticProcedure> procedure;
+  std::optional<DynamicProcedure> dynamic;
   bool procedure_refused = false;  // its procedure keyword is one clinch does not run (E0202)
   Controls controls;  // effective controls (carried over, §13)
 
@@ -277,6 +302,7 @@ struct HistoryModel {
   std::vector<ConditionBlock> model_blocks;
   std::vector<BoundaryCondition> model_boundaries;
   std::vector<ConnectorCondition> model_motions;
+  std::vector<InitialVelocity> initial_velocities;  // *INITIAL CONDITIONS, TYPE=VELOCITY
 
   std::vector<Step> steps;
   std::unordered_map<std::string, std::int32_t> step_by_key;

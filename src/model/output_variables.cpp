@@ -53,8 +53,10 @@ constexpr std::array<OutputVariableInfo, 2> kDerived{{
     {"CDERU", OutputKind::Connector, OutputProducer::Derived, "derived components"},
 }};
 
-constexpr std::array<OutputVariableInfo, 5> kOther{{
+constexpr std::array<OutputVariableInfo, 7> kOther{{
     {"U", OutputKind::Nodal, OutputProducer::Always, ""},
+    {"V", OutputKind::Nodal, OutputProducer::StaticZero, ""},
+    {"A", OutputKind::Nodal, OutputProducer::StaticZero, ""},
     {"RF", OutputKind::Nodal, OutputProducer::Always, ""},
     {"CF", OutputKind::Nodal, OutputProducer::Always, ""},
     {"S", OutputKind::Spring, OutputProducer::Always, ""},
@@ -88,10 +90,16 @@ struct NodalName {
   std::uint8_t mask;
   int offset;  // numbered form: DOF = offset + n
 };
-constexpr std::array<NodalName, 8> kNodalNames{{
+constexpr std::array<NodalName, 14> kNodalNames{{
     {"U", "U", kAll, 0},
     {"UT", "U", kTranslations, -1},
     {"UR", "U", kRotations, 3},
+    {"V", "V", kAll, 0},
+    {"VT", "V", kTranslations, -1},
+    {"VR", "V", kRotations, 3},
+    {"A", "A", kAll, 0},
+    {"AT", "A", kTranslations, -1},
+    {"AR", "A", kRotations, 3},
     {"RF", "RF", kAll, 0},
     {"RT", "RF", kTranslations, -1},
     {"RM", "RF", kRotations, 3},
@@ -102,8 +110,8 @@ constexpr std::array<NodalName, 8> kNodalNames{{
 // Known identifiers that clinch v1 does not support (output-variables.md §5), and the Abaqus and
 // CalculiX identifiers keywords.md §18 names (velocities, accelerations, temperatures, energies,
 // stresses and strains of continuum elements): E0904, not "unknown".
-constexpr std::array<std::string_view, 46> kUnsupported{{
-    "V", "VT", "VR", "A", "AT", "AR", "NT", "PN", "MF", "TF", "POR", "NFORC",
+constexpr std::array<std::string_view, 40> kUnsupported{{
+    "NT", "PN", "MF", "TF", "POR", "NFORC",
     "ENER", "ELSE", "EVOL", "PEEQ", "SDV", "COORD", "ELEN", "ELKE", "ELPD", "ELSD", "ESEDEN",
     "SENER", "MISES", "LE", "PE", "NE", "SF", "SM",
     "CUF",
@@ -298,9 +306,13 @@ std::string output_column_label(std::string_view variable, int component,
   if (v == "CDERF" || v == "CDERU") return v + "-" + std::string(derived_display);
   if (component == 0) return v;
   if (v == "S" || v == "E") return v + "11";
-  if (v == "U" || v == "RF" || v == "CF") {
+  if (v == "U" || v == "RF" || v == "CF" || v == "V" || v == "A") {
     if (component <= 3) return v + std::to_string(component);
-    const char* rotational = v == "U" ? "UR" : v == "RF" ? "RM" : "CM";
+    const char* rotational = v == "U"    ? "UR"
+                             : v == "RF" ? "RM"
+                             : v == "CF" ? "CM"
+                             : v == "V"  ? "VR"
+                                         : "AR";
     return std::string(rotational) + std::to_string(component - 3);
   }
   return v + std::to_string(component);

@@ -49,7 +49,7 @@ struct VariableWords {
   std::string_view translational, rotational;
   Quantity quantity;  // of a translational component (the rotational one follows)
 };
-constexpr std::array<VariableWords, 37> kWords{{
+constexpr std::array<VariableWords, 39> kWords{{
     {"CTF", "total force", "total moment", Quantity::Force},
     {"CEF", "elastic force", "elastic moment", Quantity::Force},
     {"CVF", "viscous (damping) force", "viscous (damping) moment", Quantity::Force},
@@ -80,6 +80,8 @@ constexpr std::array<VariableWords, 37> kWords{{
     {"CV", "relative velocity", "relative angular velocity", Quantity::Displacement},
     {"CA", "relative acceleration", "relative angular acceleration", Quantity::Displacement},
     {"U", "displacement", "rotation", Quantity::Displacement},
+    {"V", "velocity", "angular velocity", Quantity::Rate},
+    {"A", "acceleration", "angular acceleration", Quantity::Rate},
     {"E", "spring or dashpot elongation", "", Quantity::Displacement},
     {"CDMG", "overall damage", "overall damage", Quantity::Ratio},
     {"CDIF", "force-based damage initiation criterion",
@@ -118,8 +120,8 @@ Canonical canonical_parts(std::string_view label) {
   Canonical c{std::string(s.base), s.number, std::string(s.rest)};
   if (c.variable == "S" || c.variable == "E") c.component = 0;  // S11, E11: one component
   // Nodal rotations (output-variables.md §3): UR2 is component 5 of U.
-  for (auto [rotational, variable] : std::array<std::pair<std::string_view, std::string_view>, 3>{
-           {{"UR", "U"}, {"RM", "RF"}, {"CM", "CF"}}}) {
+  for (auto [rotational, variable] : std::array<std::pair<std::string_view, std::string_view>, 5>{
+           {{"UR", "U"}, {"RM", "RF"}, {"CM", "CF"}, {"VR", "V"}, {"AR", "A"}}}) {
     if (c.variable == rotational) {
       c.variable = std::string(variable);
       if (c.component > 0) c.component += 3;
@@ -159,6 +161,8 @@ std::string canonical_variable(std::string_view variable) {
   if (v == "UR") return "U";  // nodal rotations, reactions and loads (output-variables.md §3)
   if (v == "RM") return "RF";
   if (v == "CM") return "CF";
+  if (v == "VR") return "V";
+  if (v == "AR") return "A";
   return v;
 }
 
@@ -220,6 +224,8 @@ const char* quantity_name(Quantity q) {
       return "ratio";
     case Quantity::Status:
       return "status";
+    case Quantity::Rate:
+      return "rate";
     case Quantity::Other:
       return "other";
   }

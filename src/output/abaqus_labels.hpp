@@ -37,6 +37,7 @@ enum class Quantity : std::uint8_t {
   Rotation,      // CU4 (CUR1), UR2
   Ratio,         // damage, initiation criteria: dimensionless
   Status,        // CSLST, CSLIPST: codes
+  Rate,          // V1, VR2, A3, AR1: nodal velocities and accelerations
   Other,         // a name clinch does not write
 };
 Quantity column_quantity(std::string_view name);

@@ -428,6 +428,10 @@ double HistoryColumns::value(const Column& c, ConnectorSystem& system) {
           sum += system.reaction(t.index, c.component);
         } else if (c.variable == "CF" || c.variable == "CM") {
           sum += system.applied_load(t.index, c.component);
+        } else if (c.variable == "V" || c.variable == "VT" || c.variable == "VR") {
+          sum += system.nodal_rate(t.index, c.component, 1);
+        } else if (c.variable == "A" || c.variable == "AT" || c.variable == "AR") {
+          sum += system.nodal_rate(t.index, c.component, 2);
         }
         break;
     }

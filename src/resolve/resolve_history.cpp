@@ -120,6 +120,8 @@ class HistoryValidator {
       }
     }
 
+    for (InitialVelocity& velocity : history.initial_velocities) check_initial_velocity(velocity);
+
     for (Step& step : history.steps) {
       check_step_structure(step);
       const std::string where = fmt::format("step '{}'", step.name.display);
@@ -182,7 +184,7 @@ class HistoryValidator {
     // is reported here (input-syntax.md §8).
     if (!step.closed && !step.procedure && !step.procedure_refused) {
       sink_.report(DiagCode::step_procedure, step.loc,
-                   fmt::format("step '{}' has no procedure (expected *STATIC)", step.name.display));
+                   fmt::format("step '{}' has no procedure (expected *STATIC or *DYNAMIC)", step.name.display));
     }
     // keywords.md §14: UNSYMM=NO with a behaviour whose tangent is unsymmetric (friction).
     if (step.unsymmetric == Unsymmetric::No && uses_friction()) {
@@ -284,6 +286,19 @@ class HistoryValidator {
   }
 
   // ---- *CLOAD (keywords.md §10) -------------------------------------------------------------
+
+  // *INITIAL CONDITIONS, TYPE=VELOCITY: a velocity on a DOF that no element uses would be lost.
+  void check_initial_velocity(InitialVelocity& velocity) {
+    if (!resolve(velocity.target, false, velocity.resolved)) return;
+    const DofMask bit = static_cast<DofMask>(1u << (velocity.dof - 1));
+    for (std::int32_t node : velocity.resolved) {
+      if ((active_[static_cast<std::size_t>(node)] & bit) || on_held_element(node)) continue;
+      sink_.report(DiagCode::invalid_dof, velocity.dof_loc,
+                   fmt::format("initial velocity on DOF {} of node {}, which no element uses",
+                               velocity.dof, node_name(model_, node)));
+      return;
+    }
+  }
 
   void check_load(ConcentratedLoad& load, const InForce& in_force) {
     if (!resolve(load.target, false, load.resolved)) return;

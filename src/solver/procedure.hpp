@@ -1,6 +1,6 @@
 // A step's procedure (keywords.md §15): its time policy and what an increment means for it.
-// *STATIC is the first (static_step_procedure.hpp); each further step kind (implicit dynamics,
-// arc length, frequency) is another implementation. The step driver runs any of them around the
+// *STATIC (static_step_procedure.hpp) and implicit *DYNAMIC (dynamic_step_procedure.hpp); each
+// further step kind (arc length, frequency) is another implementation. The step driver runs any of them around the
 // same increment attempt, Newton and StepProblem, and never asks which one it has.
 #pragma once
 
@@ -40,7 +40,8 @@ class Procedure {
   virtual void begin_increment(StepProblem& problem, const IncrementTimes& times) const = 0;
 };
 
-// The procedure of `step` (*STATIC when the step names none: keywords.md §15).
+// The procedure of `step`: *DYNAMIC (dynamic_step_procedure.hpp) or *STATIC (also when the step
+// names none: keywords.md §15).
 std::unique_ptr<Procedure> procedure_for(const Step& step);
 
 }  // namespace clinch

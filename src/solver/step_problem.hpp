@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "base/procedure_needs.hpp"
+#include "src/model/history_model.hpp"
 #include "src/solver/newton.hpp"
 #include "src/solver/nonlinear_problem.hpp"
 
@@ -37,6 +38,12 @@ class StepProblem {
   // starts it, adding `extrapolate_scale` times the last converged increment (0: none).
   virtual void begin_increment(double step_time, double total_time, double dt,
                                double extrapolate_scale) = 0;
+  // The same for an increment of a dynamic step, integrated by `procedure`'s operator
+  // (docs/dynamics.md), from the converged state without extrapolation. Before the step's first
+  // increment the state at the step start gives the HHT α term and, with INITIAL=YES, the
+  // initial accelerations.
+  virtual void begin_dynamic_increment(double step_time, double total_time, double dt,
+                                       const DynamicProcedure& procedure) = 0;
   // `--check-tangent`: the assembled tangent against finite differences at the start of the
   // increment, as a report for the log; the state is left exactly as it was.
   virtual std::string check_tangent(int step, int increment) = 0;

@@ -15,7 +15,14 @@ namespace {
 class IncrementRecorder final : public StepProblem {
  public:
   double step_time = -1, total_time = -1, dt = -1, extrapolate_scale = -1;
+  bool dynamic = false;
 
+  void begin_dynamic_increment(double s, double t, double d, const DynamicProcedure&) override {
+    step_time = s;
+    total_time = t;
+    dt = d;
+    dynamic = true;
+  }
   void begin_increment(double s, double t, double d, double scale) override {
     step_time = s;
     total_time = t;

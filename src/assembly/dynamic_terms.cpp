@@ -1,0 +1,142 @@
+#include "src/assembly/dynamic_terms.hpp"
+
+#include <cmath>
+
+#include "src/assembly/sparsity_pattern.hpp"
+
+namespace clinch {
+namespace {
+
+// The equations of a node's inertia: u1–u3 with their masses, then ur1–ur3 with the tensor.
+struct InertiaBlock {
+  std::array<int, 3> eq;
+  Matrix3 m;
+};
+
+std::array<InertiaBlock, 2> blocks_of(const NodeInertia& n) {
+  return {InertiaBlock{n.translation, Matrix3(n.mass.asDiagonal())},
+          InertiaBlock{n.rotation, n.rotary}};
+}
+
+}  // namespace
+
+NewmarkIncrement NewmarkIncrement::of(const DynamicProcedure& procedure, double dt) {
+  NewmarkIncrement n;
+  n.dt = dt;
+  n.backward_euler = procedure.backward_euler;
+  n.alpha = procedure.backward_euler ? 0.0 : procedure.alpha;
+  n.beta = procedure.beta;
+  n.gamma = procedure.gamma;
+  n.da_du = n.backward_euler ? 1.0 / (dt * dt) : 1.0 / (n.beta * dt * dt);
+  n.dv_du = n.backward_euler ? 1.0 / dt : n.gamma / (n.beta * dt);
+  return n;
+}
+
+void NewmarkIncrement::update_rates(AnalysisState& s) const {
+  const auto n = s.v.size();
+  const auto du = s.x.head(n) - s.x_n.head(n);
+  if (backward_euler) {
+    s.v = du / dt;
+    s.a = (s.v - s.v_n) / dt;
+    return;
+  }
+  // Newmark: u₁ = u₀ + Δt v₀ + Δt²[(1/2 − β) a₀ + β a₁], v₁ = v₀ + Δt[(1 − γ) a₀ + γ a₁].
+  s.a = da_du * (du - dt * s.v_n) - (0.5 / beta - 1.0) * s.a_n;
+  s.v = s.v_n + dt * ((1.0 - gamma) * s.a_n + gamma * s.a);
+}
+
+void add_inertia(const std::vector<NodeInertia>& inertia, const NewmarkIncrement& increment,
+                 const AnalysisState& state, const IncrementConditions& conditions,
+                 InertiaTarget target, Eigen::VectorXd& inertia_force, ForceEntries& entries) {
+  const double scale = 1.0 / (1.0 + increment.alpha);
+  const double stiffness = increment.da_du * scale;
+  // The HHT α term of the converged state, on every free nodal row.
+  if (increment.alpha != 0.0) {
+    for (Eigen::Index eq = 0; eq < state.r_n.size(); ++eq) {
+      if (!conditions.is_prescribed(static_cast<int>(eq))) {
+        target.residual[eq] -= increment.alpha * scale * state.r_n[eq];
+      }
+    }
+  }
+  for (const NodeInertia& node : inertia) {
+    const std::array<InertiaBlock, 2> blocks = blocks_of(node);
+    for (int field = 0; field < 2; ++field) {  // forces, then moments
+      const InertiaBlock& block = blocks[static_cast<std::size_t>(field)];
+      for (int i = 0; i < 3; ++i) {
+        const int row = block.eq[static_cast<std::size_t>(i)];
+        if (row < 0) continue;
+        double force = 0.0;
+        for (int j = 0; j < 3; ++j) {
+          const int column = block.eq[static_cast<std::size_t>(j)];
+          if (column >= 0) force += block.m(i, j) * state.a[column];
+        }
+        inertia_force[row] = force;
+        entries.add(field, std::abs(force));
+        if (conditions.is_prescribed(row)) continue;
+        target.residual[row] += scale * force;
+        if (!target.tangent) continue;
+        for (int j = 0; j < 3; ++j) {
+          const int column = block.eq[static_cast<std::size_t>(j)];
+          if (column < 0 || block.m(i, j) == 0.0) continue;
+          const double k = stiffness * block.m(i, j);
+          if (conditions.is_prescribed(column)) {
+            // The prescribed column goes to the right-hand side, as an element's does.
+            if (target.predictor) {
+              (*target.predictor)[row] +=
+                  k * (conditions.target(column) - state.x[column]);
+            }
+            continue;
+          }
+          if (target.symmetric && column < row) continue;  // the upper triangle holds both
+          const int position = row == column
+                                   ? target.diagonal[static_cast<std::size_t>(row)]
+                                   : entry_position(*target.tangent, row, column);
+          target.tangent->values[static_cast<std::size_t>(position)] += k;
+        }
+      }
+    }
+  }
+}
+
+void initial_accelerations(const std::vector<NodeInertia>& inertia,
+                           const IncrementConditions& conditions, const Eigen::VectorXd& r,
+                           Eigen::VectorXd& a) {
+  a.setZero();
+  for (const NodeInertia& node : inertia) {
+    for (const InertiaBlock& block : blocks_of(node)) {
+      // The free DOFs of the block that carry inertia: solve their part of M a = −r.
+      std::array<int, 3> local{};
+      int count = 0;
+      for (int i = 0; i < 3; ++i) {
+        const int eq = block.eq[static_cast<std::size_t>(i)];
+        if (eq >= 0 && !conditions.is_prescribed(eq) && block.m(i, i) > 0.0) local[count++] = i;
+      }
+      if (count == 0) continue;
+      Eigen::MatrixXd m(count, count);
+      Eigen::VectorXd f(count);
+      for (int p = 0; p < count; ++p) {
+        f[p] = -r[block.eq[static_cast<std::size_t>(local[p])]];
+        for (int q = 0; q < count; ++q) m(p, q) = block.m(local[p], local[q]);
+      }
+      const Eigen::VectorXd solved = m.ldlt().solve(f);
+      for (int p = 0; p < count; ++p) a[block.eq[static_cast<std::size_t>(local[p])]] = solved[p];
+    }
+  }
+}
+
+double kinetic_energy(const std::vector<NodeInertia>& inertia, const Eigen::VectorXd& v) {
+  double energy = 0.0;
+  for (const NodeInertia& node : inertia) {
+    for (const InertiaBlock& block : blocks_of(node)) {
+      Vector3 velocity = Vector3::Zero();
+      for (int i = 0; i < 3; ++i) {
+        const int eq = block.eq[static_cast<std::size_t>(i)];
+        if (eq >= 0) velocity[i] = v[eq];
+      }
+      energy += 0.5 * velocity.dot(block.m * velocity);
+    }
+  }
+  return energy;
+}
+
+}  // namespace clinch

@@ -1,0 +1,57 @@
+// What a dynamic increment adds to the equations of motion (docs/dynamics.md): the Newmark
+// relations that give the velocity and acceleration of every nodal equation from its value, and
+// the inertia of the lumped nodal masses (nodal_inertia.hpp) in the Hilber–Hughes–Taylor α form
+//   M a₁ + (1 + α)(I(u₁, v₁) − P₁) − α (I₀ − P₀) = 0,
+// divided by (1 + α) so that the element and constraint rows keep their static form:
+//   (I − P) + (M a₁ − α r₀)/(1 + α) = 0,  r₀ = I₀ − P₀ at the start of the increment.
+// Backward Euler (APPLICATION=QUASI-STATIC) has α = 0, v₁ = (u₁ − u₀)/Δt, a₁ = (v₁ − v₀)/Δt.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "src/assembly/analysis_state.hpp"
+#include "src/assembly/increment_conditions.hpp"
+#include "src/assembly/nodal_inertia.hpp"
+#include "src/model/history_model.hpp"
+
+namespace clinch {
+
+// The integration operator over one increment of length dt.
+struct NewmarkIncrement {
+  double dt = 0, alpha = 0, beta = 0.25, gamma = 0.5;
+  bool backward_euler = false;
+  double da_du = 0, dv_du = 0;  // ∂a₁/∂u₁ and ∂v₁/∂u₁ (the same for every equation)
+
+  static NewmarkIncrement of(const DynamicProcedure& procedure, double dt);
+  // v₁ and a₁ of every nodal equation at the trial values, from the converged state.
+  void update_rates(AnalysisState& state) const;
+};
+
+// Where the inertia terms go: the residual over every equation, the tangent in the storage of
+// `pattern` (null: residual only), and the predictor of prescribed values (ConnectorSystem).
+struct InertiaTarget {
+  Eigen::VectorXd& residual;
+  SparseMatrix* tangent;
+  const std::vector<int>& diagonal;  // position of each equation's diagonal entry
+  bool symmetric;
+  Eigen::VectorXd* predictor;  // non-null while prescribed values are short of their targets
+};
+
+// Adds (M a₁ − α r₀)/(1 + α) to the rows of free nodal equations and ∂/∂u₁ of it to the tangent;
+// `inertia_force` gets M a₁ per equation (a reaction includes it) and `entries` its magnitudes
+// (the force flux q̃ of the convergence criteria).
+void add_inertia(const std::vector<NodeInertia>& inertia, const NewmarkIncrement& increment,
+                 const AnalysisState& state, const IncrementConditions& conditions,
+                 InertiaTarget target, Eigen::VectorXd& inertia_force, ForceEntries& entries);
+
+// a = M⁻¹(−r) on the DOFs that carry inertia and are free (INITIAL=YES: the accelerations at the
+// start of a step from its equilibrium); 0 elsewhere.
+void initial_accelerations(const std::vector<NodeInertia>& inertia,
+                           const IncrementConditions& conditions, const Eigen::VectorXd& r,
+                           Eigen::VectorXd& a);
+
+// ½ vᵀ M v of the nodal masses (ALLKE).
+double kinetic_energy(const std::vector<NodeInertia>& inertia, const Eigen::VectorXd& v);
+
+}  // namespace clinch

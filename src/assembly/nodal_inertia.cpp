@@ -1,0 +1,87 @@
+#include "src/assembly/nodal_inertia.hpp"
+
+#include <map>
+
+#include "base/fold_name.hpp"
+#include "src/model/element_library.hpp"
+
+namespace clinch {
+namespace {
+
+// The value of field `i` of the section's first data line (0 when blank or absent).
+double row_value(const ElementSection& section, std::size_t i) {
+  if (section.rows.empty() || i >= section.rows[0].values.size()) return 0.0;
+  return section.rows[0].values[i];
+}
+
+bool anisotropic(const ElementSection& section) {
+  for (const KeptParameter& p : section.parameters) {
+    if (p.name == "TYPE") return fold_name(p.value) == "ANISOTROPIC";
+  }
+  return false;
+}
+
+// The global node of every MASS and ROTARYI element (−1 for other elements): held elements keep
+// their nodes in their blocks, block by block and instance by instance.
+std::vector<std::int32_t> inertia_element_nodes(const Model& model) {
+  std::vector<std::int32_t> node_of(model.elements.size(), -1);
+  for (std::size_t i = 0; i < model.instances.size(); ++i) {
+    const Instance& instance = model.instances[i];
+    if (i == 0 && instance.part != 0) continue;
+    for (const ElementBlock& block : model.parts[instance.part].element_blocks) {
+      if (!is_inertia_only(static_cast<ElementFamily>(block.family))) continue;
+      for (std::int32_t k = 0; k < block.count; ++k) {
+        const std::int32_t local = block.element_nodes(k)[0];
+        const auto e = static_cast<std::size_t>(block.first_element + k + instance.element_offset);
+        if (local == kGround || e >= node_of.size()) continue;
+        node_of[e] = local + instance.node_offset;
+      }
+    }
+  }
+  return node_of;
+}
+
+}  // namespace
+
+std::vector<NodeInertia> nodal_inertia(const Model& model, const DofMap& dofs) {
+  const std::vector<std::int32_t> node_of = inertia_element_nodes(model);
+  std::map<std::int32_t, NodeInertia> by_node;
+  for (const ElementSection& section : model.structure.sections) {
+    const bool mass = section.kind == ElementSection::Kind::Mass;
+    if (!mass && section.kind != ElementSection::Kind::RotaryInertia) continue;
+    // keywords.md: *MASS gives m (or m1, m2, m3 with TYPE=ANISOTROPIC); *ROTARY INERTIA gives
+    // I11, I22, I33, I12, I13, I23.
+    Vector3 m = Vector3::Zero();
+    Matrix3 j = Matrix3::Zero();
+    if (mass) {
+      m = anisotropic(section) ? Vector3(row_value(section, 0), row_value(section, 1),
+                                         row_value(section, 2))
+                               : Vector3::Constant(row_value(section, 0));
+    } else {
+      j.diagonal() << row_value(section, 0), row_value(section, 1), row_value(section, 2);
+      j(0, 1) = j(1, 0) = row_value(section, 3);
+      j(0, 2) = j(2, 0) = row_value(section, 4);
+      j(1, 2) = j(2, 1) = row_value(section, 5);
+    }
+    for (std::int32_t e : section.elements) {
+      const std::int32_t node = node_of[static_cast<std::size_t>(e)];
+      if (node < 0 || dofs.active(node) == 0) continue;
+      NodeInertia& n = by_node[node];
+      n.node = node;
+      n.mass += m;
+      n.rotary += j;
+    }
+  }
+  std::vector<NodeInertia> inertia;
+  inertia.reserve(by_node.size());
+  for (auto& [node, n] : by_node) {
+    for (int k = 0; k < 3; ++k) {
+      n.translation[static_cast<std::size_t>(k)] = dofs.equation(node, 1 + k);
+      n.rotation[static_cast<std::size_t>(k)] = dofs.equation(node, 4 + k);
+    }
+    inertia.push_back(n);
+  }
+  return inertia;
+}
+
+}  // namespace clinch

@@ -1,0 +1,141 @@
+// What a *DYNAMIC step cannot run yet (docs/dynamics.md "Not yet supported"), refused at the
+// *DYNAMIC line or at the keyword that asks for it, so that `clinch check` never passes a deck
+// that `clinch run` would integrate wrongly: automatic incrementation (the half-increment
+// residual), kinematic constraints (rigid-body inertia), rotary inertia under NLGEOM (no
+// momentum-conserving rotational update), connector damping (its rate is an increment over Δt,
+// not the velocity of the step), CV and CA output, and the options of *MASS and *ROTARY INERTIA
+// that clinch does not read (mass-proportional damping ALPHA, ORIENTATION, COMPOSITE).
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "base/diagnostic.hpp"
+#include "src/check/check.hpp"
+#include "src/model/model.hpp"
+
+namespace clinch {
+namespace {
+
+void refuse(DiagnosticSink& sink, SourceLoc loc, std::string message) {
+  sink.report(DiagCode::unsupported_option, loc, std::move(message));
+}
+
+bool has_rotary_inertia(const Model& model) {
+  return std::any_of(model.structure.sections.begin(), model.structure.sections.end(),
+                     [](const ElementSection& s) {
+                       return s.kind == ElementSection::Kind::RotaryInertia && !s.elements.empty();
+                     });
+}
+
+bool has_connector_damping(const Model& model) {
+  for (const ConnectorSection& section : model.sections.connector_sections) {
+    if (section.behavior_index < 0 || section.elements.empty()) continue;
+    const ConnectorBehavior& b =
+        model.behaviors.behaviors[static_cast<std::size_t>(section.behavior_index)];
+    if (std::any_of(b.dampings.begin(), b.dampings.end(),
+                    [](const ConnectorDamping& d) { return !d.structural; })) {
+      return true;
+    }
+  }
+  return false;
+}
+
+// The first kinematic constraint of the deck, for the message.
+const ConstraintSource* first_constraint(const Model& model) {
+  const ConstraintModel& c = model.constraints;
+  if (c.rigid_bodies.empty() && c.couplings.empty() && c.mpcs.empty() &&
+      c.equation_definitions.empty()) {
+    return nullptr;
+  }
+  static const ConstraintSource kUnnamed{"*RIGID BODY, *COUPLING, *MPC or *EQUATION", {}};
+  return c.sources.empty() ? &kUnnamed : &c.sources.front();
+}
+
+void check_step(const Model& model, const Step& step, DiagnosticSink& sink) {
+  const SourceLoc at = step.dynamic->loc;
+  if (step.procedure && !step.procedure->direct) {
+    refuse(sink, at,
+           "automatic incrementation of *DYNAMIC (by the half-increment residual, HAFTOL) is not "
+           "supported by clinch yet: give DIRECT and a fixed time increment");
+  }
+  if (const ConstraintSource* constraint = first_constraint(model)) {
+    Diagnostic& d = sink.report(
+        DiagCode::unsupported_option, at,
+        "*DYNAMIC with kinematic constraints (*RIGID BODY, *COUPLING, *MPC, *EQUATION) is not "
+        "supported by clinch yet: the inertia of rigid bodies and of constrained nodes is not "
+        "implemented");
+    if (constraint->loc.valid()) {
+      d.notes.push_back({constraint->loc, fmt::format("{} is here", constraint->keyword)});
+    }
+  }
+  if (step.nlgeom && has_rotary_inertia(model)) {
+    refuse(sink, at,
+           "*DYNAMIC with NLGEOM and ROTARYI elements is not supported by clinch yet: finite "
+           "rotations need a momentum-conserving rotational update, which is not implemented");
+  }
+  if (has_connector_damping(model)) {
+    refuse(sink, at,
+           "*DYNAMIC with *CONNECTOR DAMPING is not supported by clinch yet: connector damping "
+           "reads its rate as an increment over the time increment, not as the velocity of the "
+           "step (use DASHPOTA, DASHPOT1 or DASHPOT2 elements)");
+  }
+  auto refuse_connector_rates = [&](const std::vector<OutputIdentifier>& identifiers) {
+    for (const OutputIdentifier& id : identifiers) {
+      if (id.variable != "CV" && id.variable != "CA") continue;
+      refuse(sink, id.loc,
+             fmt::format("{} in a *DYNAMIC step is not supported by clinch yet (the connector "
+                         "velocities and accelerations are not computed; request V and A of its "
+                         "nodes)",
+                         id.text));
+    }
+  };
+  for (const OutputRequest& request : step.outputs) {
+    for (const ElementOutputRequest& element : request.elements) {
+      refuse_connector_rates(element.identifiers);
+    }
+  }
+  for (const PrintRequest& print : step.prints) refuse_connector_rates(print.identifiers);
+}
+
+// *MASS and *ROTARY INERTIA options that would change the inertia clinch assembles.
+void check_inertia_sections(const Model& model, DiagnosticSink& sink) {
+  for (const ElementSection& section : model.structure.sections) {
+    const bool mass = section.kind == ElementSection::Kind::Mass;
+    if (!mass && section.kind != ElementSection::Kind::RotaryInertia) continue;
+    for (const KeptParameter& p : section.parameters) {
+      if (p.name != "ALPHA" && p.name != "ORIENTATION" && p.name != "COMPOSITE") continue;
+      refuse(sink, section.keyword_loc,
+             fmt::format("{} on *{} is not supported by clinch yet in a *DYNAMIC step{}", p.name,
+                         section.keyword,
+                         p.name == "ALPHA" ? " (mass-proportional damping)"
+                         : p.name == "ORIENTATION"
+                             ? " (give the inertia in the global axes)"
+                             : ""));
+    }
+    for (std::size_t i = 0; !section.rows.empty() && i < section.rows[0].values.size(); ++i) {
+      // A negative mass or principal inertia makes the equations of motion unstable.
+      if ((mass || i < 3) && section.rows[0].values[i] < 0.0) {
+        sink.report(DiagCode::value_out_of_range, section.rows[0].loc,
+                    fmt::format("*{} value {} is negative ({})", section.keyword, i + 1,
+                                section.rows[0].values[i]));
+      }
+    }
+  }
+}
+
+}  // namespace
+
+bool has_dynamic_step(const Model& model) {
+  return std::any_of(model.history.steps.begin(), model.history.steps.end(),
+                     [](const Step& s) { return s.dynamic.has_value(); });
+}
+
+void check_dynamic_steps(const Model& model, DiagnosticSink& sink) {
+  if (!has_dynamic_step(model)) return;
+  for (const Step& step : model.history.steps) {
+    if (step.dynamic) check_step(model, step, sink);
+  }
+  check_inertia_sections(model, sink);
+}
+
+}  // namespace clinch
