@@ -29,7 +29,9 @@ void ConnectorStepProblem::begin_increment(double step_time, double total_time, 
 void ConnectorStepProblem::begin_dynamic_increment(double step_time, double total_time,
                                                    double dt, const DynamicProcedure& procedure) {
   if (!dynamic_step_started_) {
-    // The conditions in force are still those of the step start (the last converged state).
+    // The conditions at the step's start (time 0 of the step: a load of AMPLITUDE=STEP acts
+    // there already, a ramped one still has its value of the previous step).
+    conditions_.apply(system_, 0.0, total_time - step_time);
     system_.start_dynamic_step(procedure.initial_acceleration);
     dynamic_step_started_ = true;
   }

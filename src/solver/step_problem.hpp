@@ -40,8 +40,8 @@ class StepProblem {
                                double extrapolate_scale) = 0;
   // The same for an increment of a dynamic step, integrated by `procedure`'s operator
   // (docs/dynamics.md), from the converged state without extrapolation. Before the step's first
-  // increment the state at the step start gives the HHT α term and, with INITIAL=YES, the
-  // initial accelerations.
+  // increment the state and the conditions at the step start give the HHT α term and, with
+  // INITIAL=YES, the initial accelerations.
   virtual void begin_dynamic_increment(double step_time, double total_time, double dt,
                                        const DynamicProcedure& procedure) = 0;
   // `--check-tangent`: the assembled tangent against finite differences at the start of the

@@ -9,9 +9,9 @@ integration operators of *DYNAMIC (docs/dynamics.md), written out here from thei
               m a1 + c v1 + k u1 = P1.
 
 Each increment is linear in u1 and is solved in closed form. INITIAL=YES (the default of the
-HHT applications) sets a0 = (P0 - c v0 - k u0)/m at a step's start, with the load in force
-there (that of the end of the previous step: the step load of step 1 acts from its first
-increment on); QUASI-STATIC keeps the accelerations of the previous step (INITIAL=NO).
+HHT applications) sets a0 = (P0 - c v0 - k u0)/m at a step's start, with the load at the step's
+start (the load of AMPLITUDE=STEP acts there already); QUASI-STATIC keeps the accelerations of
+the previous step (INITIAL=NO).
 """
 import os
 import sys
@@ -63,6 +63,7 @@ for node, (c, v_start, load) in OSCILLATORS.items():
     rows = []
     for dt, period, application in STEPS:
         alpha, beta, gamma, initial = operator(application)
+        p = load  # applied at once in step 1 and held after
         if initial:
             a = (p - c * v - K * u) / M
         count = round(period / dt)
@@ -71,7 +72,6 @@ for node, (c, v_start, load) in OSCILLATORS.items():
                 u, v, a = euler_increment(c, u, v, load, dt)
             else:
                 u, v, a = hht_increment(c, u, v, a, p, load, dt, alpha, beta, gamma)
-            p = load
             rows.append((u, v, a))
     history[node] = rows
 
