@@ -114,6 +114,7 @@ class StepHandler : public KeywordHandler {
       }
     }
     if (params.enum_value("AMPLITUDE") == "STEP") step.amplitude = StepAmplitude::Step;
+    step.amplitude_given = params.has("AMPLITUDE");
     if (params.has("UNSYMM")) {
       step.unsymmetric = params.enum_value("UNSYMM") == "YES" ? Unsymmetric::Yes : Unsymmetric::No;
       step.unsymmetric_loc = params.loc("UNSYMM", true);
@@ -348,7 +349,12 @@ class DynamicHandler final : public StaticHandler {
     }
   }
 
-  void keep_operator(Step& step) const override { step.dynamic = dynamic_; }
+  void keep_operator(Step& step) const override {
+    step.dynamic = dynamic_;
+    // Loads of a dynamic step are applied at once unless the step says otherwise, as in
+    // CalculiX; QUASI-STATIC ramps them like *STATIC (docs/decisions.md "Implicit dynamics").
+    if (!step.amplitude_given && !dynamic_.backward_euler) step.amplitude = StepAmplitude::Step;
+  }
 
  private:
   // A real parameter in [low, high] (low excluded when it is 0 and the value must be positive).

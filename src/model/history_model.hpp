@@ -266,7 +266,8 @@ struct Step {
   bool nlgeom = false;       // effective: once on, stays on (W0804)
   int max_increments = 100;  // INC
   SourceLoc inc_loc;
-  StepAmplitude amplitude = StepAmplitude::Ramp;
+  StepAmplitude amplitude = StepAmplitude::Ramp;  // the procedure's default unless given
+  bool amplitude_given = false;                    // *STEP, AMPLITUDE=
   Unsymmetric unsymmetric = Unsymmetric::Automatic;
   SourceLoc unsymmetric_loc;
   bool extrapolation = true;  // EXTRAPOLATION=LINEAR (false: NO)
