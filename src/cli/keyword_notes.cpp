@@ -138,7 +138,8 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
        "Makes nodes and elements a rigid body that follows its reference node: nodes of the "
        "ELSET's elements, TIE NSET and NSET (CalculiX) in translation and rotation, PIN NSET in "
        "translation; the ELSET's elements need no section then. REF NODE= is required (as in "
-       "Abaqus/Standard: clinch does not generate a node as CalculiX does without it).",
+       "Abaqus/Standard: clinch does not generate a node as CalculiX does without it). "
+       "Connectors, loads and boundary conditions on any node of the body act on the body.",
        "Abaqus/Explicit's rigid element thickness (ignored with a warning).",
        {{"POSITION=CENTER OF MASS",
          "needs the masses of the body, which a static analysis does not have"},

@@ -95,14 +95,19 @@ struct InForce {
 
 class HistoryValidator {
  public:
-  HistoryValidator(Model& model, DiagnosticSink& sink)
-      : model_(model),
-        sink_(sink),
-        active_(active_dofs(model)),
-        following_(following_dofs(model)) {}
+  HistoryValidator(Model& model, DiagnosticSink& sink) : model_(model), sink_(sink) {}
 
   void run() {
     HistoryModel& history = model_.history;
+    // The nodes of every *BOUNDARY first: a condition on a rigid body's node anchors the body
+    // there, which changes the followers that the active DOFs read.
+    for (BoundaryCondition& bc : history.model_boundaries) resolve(bc.target, false, bc.resolved);
+    for (Step& step : history.steps) {
+      for (BoundaryCondition& bc : step.boundaries) resolve(bc.target, false, bc.resolved);
+    }
+    anchor_rigid_bodies(model_);
+    active_ = active_dofs(model_);
+    following_ = following_dofs(model_);
     resolve_amplitudes(history.model_blocks);
     for (Step& step : history.steps) resolve_amplitudes(step.blocks);
     report_unused_amplitudes();
@@ -224,7 +229,7 @@ class HistoryValidator {
 
   void check_boundary(BoundaryCondition& bc, const std::string& where, DofTable& seen,
                       DofTable& in_force) {
-    if (!resolve(bc.target, false, bc.resolved)) return;
+    if (bc.resolved.empty()) return;  // not resolved (reported), or moved to other lines
     DofMask dofs = bc.dofs;
     // In 2-D only the members 1, 2 and 6 of a named type apply (§9).
     if (!bc.named_type.empty() && model_.dimension == 2) dofs &= 0b100011;
