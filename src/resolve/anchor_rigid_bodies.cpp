@@ -103,14 +103,8 @@ class BodyAnchoring {
     std::map<std::pair<std::int32_t, std::int32_t>, DofMask> follows;  // (node, anchor) → DOFs
     for (int k = 1; k <= 3; ++k) {
       if (!(translations_ & bit(k))) continue;
-      if ((prescribed(reference) | eliminated(reference)) & bit(k)) continue;
-      std::int32_t anchor = -1;
-      int count = 0;
-      for (std::size_t i : members) {
-        const NodeFollower& f = c_.followers[i];
-        if ((f.dofs & bit(k)) && (prescribed(f.node) & bit(k)) && count++ == 0) anchor = f.node;
-      }
-      if (count != 1) continue;
+      const std::int32_t anchor = the_prescribed_member(members, k);
+      if (anchor < 0) continue;
       for (std::size_t i : members) {
         NodeFollower& f = c_.followers[i];
         if (!(f.dofs & bit(k))) continue;
@@ -131,15 +125,24 @@ class BodyAnchoring {
     const std::int32_t reference = c_.followers[members.front()].reference;
     for (int k = 4; k <= 6; ++k) {
       if (!(rotations_ & bit(k))) continue;
-      if ((prescribed(reference) | eliminated(reference)) & bit(k)) continue;
-      std::int32_t tie = -1;
-      int count = 0;
-      for (std::size_t i : members) {
-        const NodeFollower& f = c_.followers[i];
-        if ((f.dofs & bit(k)) && (prescribed(f.node) & bit(k)) && count++ == 0) tie = f.node;
-      }
-      if (count == 1) moved_rotations_[tie].push_back({reference, bit(k)});
+      const std::int32_t tie = the_prescribed_member(members, k);
+      if (tie >= 0) moved_rotations_[tie].push_back({reference, bit(k)});
     }
+  }
+
+  // The one node of the body (`members`: its followers) prescribed in DOF k, when the reference
+  // node is neither prescribed nor eliminated in it; −1 otherwise.
+  std::int32_t the_prescribed_member(const std::vector<std::size_t>& members, int k) const {
+    const std::int32_t reference = c_.followers[members.front()].reference;
+    if ((prescribed(reference) | eliminated(reference)) & bit(k)) return -1;
+    std::int32_t found = -1;
+    for (std::size_t i : members) {
+      const NodeFollower& f = c_.followers[i];
+      if (!(f.dofs & bit(k)) || !(prescribed(f.node) & bit(k))) continue;
+      if (found >= 0) return -1;
+      found = f.node;
+    }
+    return found;
   }
 
   // Splits the *BOUNDARY lines that prescribe a moved rotation: the tie node keeps the rest of

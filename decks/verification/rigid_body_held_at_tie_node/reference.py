@@ -2,7 +2,6 @@
 node instead of its reference node. The pivot, not the reference node, is where the body turns
 about, so the equilibrium is the same scalar equation, and every node moves by (R - I)(X - X_pivot)
 (docs/constraints.md "Conditions on a body's nodes")."""
-import importlib.util
 import os
 import sys
 
@@ -12,10 +11,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, ".."))
 import golden_lib as g  # noqa: E402
 
-_spec = importlib.util.spec_from_file_location(
-    "rigid_lever_reference", os.path.join(HERE, "..", "rigid_lever_nlgeom", "reference.py"))
-lever = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(lever)
+lever = g.case_reference("rigid_lever_nlgeom")
 
 
 def nodes_at(theta, reaction):
