@@ -345,6 +345,17 @@ void ConnectorSystem::scatter(std::span<const int> l, std::size_t offset, const 
   }
 }
 
+void ConnectorSystem::path_weights(Eigen::VectorXd& weights) const {
+  weights.resize(size());
+  for (int i = 0; i < size(); ++i) {
+    switch (plan_.dofs.field(plan_.dependents.equation(i))) {
+      case EquationField::Translation: weights[i] = 1.0; break;
+      case EquationField::Rotation: weights[i] = plan_.length_scale * plan_.length_scale; break;
+      default: weights[i] = 0.0;  // a multiplier is a force, not a motion
+    }
+  }
+}
+
 void ConnectorSystem::finish_dependent_rows(Eigen::VectorXd& residual, SparseMatrix* tangent) {
   const DependentDofs& dependents = plan_.dependents;
   const Eigen::VectorXd& external = conditions_.external();

@@ -10,6 +10,7 @@
 #include <array>
 #include <bit>
 #include <memory>
+#include <set>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -182,18 +183,71 @@ class HistoryValidator {
 
   // ---- Steps --------------------------------------------------------------------------------
 
-  void check_step_structure(const Step& step) {
+  void check_step_structure(Step& step) {
     // A closed step without a procedure was reported at its *END STEP; an unclosed one (E0603)
     // is reported here (input-syntax.md §8).
     if (!step.closed && !step.procedure && !step.procedure_refused) {
       sink_.report(DiagCode::step_procedure, step.loc,
                    fmt::format("step '{}' has no procedure (expected *STATIC)", step.name.display));
     }
+    if (step.procedure && step.procedure->riks) check_riks(step);
     // keywords.md §14: UNSYMM=NO with a behaviour whose tangent is unsymmetric (friction).
     if (step.unsymmetric == Unsymmetric::No && uses_friction()) {
       sink_.report(DiagCode::symmetrized_tangent, step.unsymmetric_loc,
                    "UNSYMM=NO with connector friction: the tangent is symmetrised and "
                    "convergence may slow");
+    }
+  }
+
+  // docs/riks.md: the monitored node is one node; the loads the LPF scales are the step's own,
+  // as ramps (amplitudes are ignored, as the manual says of the Riks method).
+  void check_riks(Step& step) {
+    RiksSettings& riks = *step.procedure->riks;
+    if (riks.node) {
+      std::vector<std::int32_t> nodes;
+      if (resolve(*riks.node, false, nodes)) {
+        if (nodes.size() != 1) {
+          sink_.report(DiagCode::invalid_value, riks.node->loc,
+                       fmt::format("the monitored node must be one node; {} has {}",
+                                   describe(*riks.node, false), nodes.size()));
+        } else {
+          riks.resolved_node = nodes.front();
+        }
+      }
+    }
+    if (step.loads.empty() && step.connector_loads.empty()) {
+      sink_.report(DiagCode::step_procedure, step.procedure->loc,
+                   fmt::format("step '{}' is a Riks step without loads: the load proportionality "
+                               "factor scales the *CLOAD and *CONNECTOR LOAD values the step "
+                               "defines",
+                               step.name.display));
+    }
+    // The bordered system takes the LPF's effect on the loads; a prescribed value that moved with
+    // it would also move the free DOFs through the predictor of prescribed increments, which
+    // the arc length does not measure (docs/riks.md).
+    auto moving = [&](const SourceLoc& at, std::string_view what) {
+      sink_.report(DiagCode::unsupported_option, at,
+                   fmt::format("a non-zero {} in a Riks step is not supported: the load "
+                               "proportionality factor scales loads; prescribe the value in a "
+                               "*STATIC step before, and load the Riks step with *CLOAD or "
+                               "*CONNECTOR LOAD",
+                               what));
+    };
+    for (const BoundaryCondition& bc : step.boundaries) {
+      if (bc.magnitude != 0.0) moving(bc.magnitude_loc.valid() ? bc.magnitude_loc : bc.loc,
+                                      "*BOUNDARY value");
+    }
+    for (const ConnectorCondition& motion : step.motions) {
+      if (motion.magnitude != 0.0) moving(motion.magnitude_loc.valid() ? motion.magnitude_loc
+                                                                       : motion.loc,
+                                          "*CONNECTOR MOTION value");
+    }
+    std::set<std::int32_t> warned;
+    for (const ConditionBlock& block : step.blocks) {
+      if (block.amplitude.key.empty() || !warned.insert(block.loc.line).second) continue;
+      sink_.report(DiagCode::parameter_ignored, block.loc,
+                   "AMPLITUDE is ignored in a Riks step: the load proportionality factor "
+                   "scales the step's values");
     }
   }
 
