@@ -622,10 +622,21 @@ std::string ConnectorSystem::failure_note(int failed_equation) const {
     }
   }
   if (softening == plan_.connectors.size()) return {};
+  const bool loaded = (conditions_.external().size() > 0 &&
+                       conditions_.external().cwiseAbs().maxCoeff() > 0) ||
+                      conditions_.has_connector_loads();
+  if (!loaded) {
+    return fmt::format("connector element {} softening (d={:.3g})", elements_.label(softening),
+                       largest);
+  }
+  // docs/riks.md: past a softening peak no larger load has an equilibrium; say where and what
+  // the deck can do about it.
   return fmt::format(
-      "connector element {} softening (d={:.3g}) under load control, limit point "
-      "passed?",
-      elements_.label(softening), largest);
+      "connector element {} softening (d={:.3g}) under load control: a limit point, past "
+      "which no larger load has an equilibrium, at about {:.4g} of the step's loads; to go past "
+      "it, use *STATIC, RIKS, prescribe a displacement (*BOUNDARY) instead of the load, or "
+      "regularise the damage (*SECTION CONTROLS, VISCOSITY)",
+      elements_.label(softening), largest, load_factor_);
 }
 
 double ConnectorSystem::nodal_value(std::int32_t node, int dof) const {
