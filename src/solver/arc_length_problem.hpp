@@ -35,6 +35,8 @@ class ArcLengthProblem final : public NonlinearProblem {
   // The converged increment becomes the start of the next one.
   void commit();
   double load_factor() const { return converged_lpf_ + delta_lpf_; }
+  // Before the increment's first correction: the next one is the predictor.
+  bool predicting() const { return predicting_; }
 
   // ---- NonlinearProblem ----
   int size() const override { return problem_.size() + 1; }

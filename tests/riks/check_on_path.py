@@ -1,7 +1,7 @@
 """Every converged point of a Riks run lies on the equilibrium path, computed here independently,
 the path passes its limit point, and the step ends where its data line says (docs/riks.md).
 
-Usage: check_on_path.py series|weld|truss HISTORY.csv STATUS.sta
+Usage: check_on_path.py series|weld|spotweld|truss HISTORY.csv STATUS.sta
 
 series (series_snap_back.inp): two AXIAL connectors in series pulled by 100 LPF at node 3. The
   first follows its table (F = 100 u exp(1 - u) at u = 0, 0.1, ..., 8, interpolated linearly),
@@ -11,6 +11,13 @@ weld (weld_under_load.inp): a BUSHING weld sheared by 1000 LPF; component 1 is e
   with FORCE damage initiation at 800 and exponential motion softening (0.02, 3), the reference
   of decks/verification/damage_lib.py (ElasticDamage) along the run's increasing u1. The step
   ends where u1 crosses 0.025.
+spotweld (spot_weld_pull.inp): the spot weld of decks/examples/spot_weld_damage.inp pulled along
+  its axis by 1000 LPF. Under pure normal pull its potential is f3/R_n (R_n = 0.02): it yields at
+  f3 = 800, flows with u3^pl = ū/R_n (the flow direction ∂P/∂f3 = 1/R_n, ū the equivalent plastic
+  motion) at that load, and softens with PLASTIC MOTION damage of ū (initiation 0.0005,
+  exponential over 0.002, 3). In the motion u3 R_n this is damage_lib.PlasticDamage with
+  stiffness 1e5/R_n. The plateau has no stiffness along the flow: the bordered matrix is solved
+  whole there. The step ends where u3 crosses 0.1.
 truss (truss_snap_through.inp): the von Mises truss, two SPRINGA (k = 1000) from (±1, 0) to the
   apex at (0, 0.5), pushed down by 100 LPF under NLGEOM: at the apex's descent w the bars have
   length L = sqrt(1 + (0.5 - w)^2) and P = 2k(L0 - L)(0.5 - w)/L. The path passes the limit
@@ -63,6 +70,18 @@ def weld_errors(rows):
     return out, [float(r["U1@2"]) for r in rows]
 
 
+def spot_weld_errors(rows):
+    r_n = 0.02
+    weld = damage_lib.PlasticDamage(1.0e5 / r_n, 800.0, 0.0005, ("EXPONENTIAL", 0.002, 3.0))
+    out = []
+    for r in rows:
+        lpf, u, force = (float(r[k]) for k in ("LPF", "U3@2", "CTF3@1"))
+        expected = weld.update(u * r_n)[0]
+        out.append([("weld force = reference", force - expected),
+                    ("weld force = load", force - 1000.0 * lpf)])
+    return out, [float(r["U3@2"]) for r in rows]
+
+
 def truss_errors(rows):
     out = []
     length0 = math.sqrt(1.25)
@@ -76,6 +95,7 @@ def truss_errors(rows):
 
 CASES = {"series": (series_errors, 100.0, 7.0, "DOF 1 of the monitored node crossed 7"),
          "weld": (weld_errors, 800.0, 0.025, "DOF 1 of the monitored node crossed 0.025"),
+         "spotweld": (spot_weld_errors, 800.0, 0.1, "DOF 3 of the monitored node crossed 0.1"),
          "truss": (truss_errors, 100.0, -1.2, "DOF 2 of the monitored node crossed -1.2")}
 
 
