@@ -27,10 +27,25 @@ double path_load(double w) {
   return 2 * 1000.0 * (length0 - length) * (0.5 - w) / length;
 }
 
+// The truss at the start of a Riks increment of arc length `arc`, with its bordered solver.
 struct RiksSystem {
   std::unique_ptr<Analysis> analysis;
   std::unique_ptr<ConnectorStepProblem> step;
   std::unique_ptr<ArcLengthProblem> path;
+  std::unique_ptr<LinearSolver> solver;
+  std::unique_ptr<BorderedSolver> bordered;
+  SparseMatrix k;
+  Eigen::VectorXd residual, correction;
+
+  // Evaluates the bordered residual and K at the current point.
+  void evaluate() { ASSERT_TRUE(path->evaluate(residual, &k).ok); }
+  // One Newton iteration from the point evaluate() last saw.
+  void correct() {
+    std::string message;
+    ASSERT_EQ(bordered->factorize(k, &message), LinearStatus::Ok) << message;
+    ASSERT_EQ(bordered->solve(-residual, correction, &message), LinearStatus::Ok) << message;
+    path->apply_correction(correction);
+  }
 };
 
 RiksSystem riks_truss(double arc) {
@@ -44,6 +59,13 @@ RiksSystem riks_truss(double arc) {
   r.path = std::make_unique<ArcLengthProblem>(s, *r.step);
   r.path->begin_step();
   r.path->begin_increment(arc);
+  r.solver = make_linear_solver(SolverChoice::Automatic, true, true);
+  r.bordered = std::make_unique<BorderedSolver>(*r.solver, *r.path);
+  std::string message;
+  EXPECT_EQ(r.bordered->analyze(r.path->pattern(), &message), LinearStatus::Ok) << message;
+  r.k = r.path->pattern();
+  r.residual.resize(r.path->size());
+  r.correction.resize(r.path->size());
   return r;
 }
 
@@ -53,17 +75,9 @@ RiksSystem riks_truss(double arc) {
 TEST(ArcLength, BorderedJacobianMatchesFiniteDifferences) {
   RiksSystem r = riks_truss(0.3);
   ArcLengthProblem& path = *r.path;
-  auto solver = make_linear_solver(SolverChoice::Automatic, true, true);
-  BorderedSolver bordered(*solver, path);
-  std::string message;
-  ASSERT_EQ(bordered.analyze(path.pattern(), &message), LinearStatus::Ok) << message;
-  Eigen::VectorXd residual(path.size()), correction(path.size());
-  SparseMatrix k = path.pattern();
   for (int i = 0; i < 2; ++i) {  // the predictor, then one corrector
-    ASSERT_TRUE(path.evaluate(residual, &k).ok);
-    ASSERT_EQ(bordered.factorize(k, &message), LinearStatus::Ok) << message;
-    ASSERT_EQ(bordered.solve(-residual, correction, &message), LinearStatus::Ok) << message;
-    path.apply_correction(correction);
+    r.evaluate();
+    r.correct();
   }
   // A move of the free DOFs and of λ (the prescribed ones stay on their targets, as in a run).
   const ConnectorSystem& s = *r.analysis->system;
@@ -73,7 +87,8 @@ TEST(ArcLength, BorderedJacobianMatchesFiniteDifferences) {
     if (s.is_prescribed(s.equation_of_solved(j))) move[j] = 0.0;
   }
   path.apply_correction(move);
-  ASSERT_TRUE(path.evaluate(residual, &k).ok);
+  r.evaluate();
+  const SparseMatrix& k = r.k;
   const Eigen::VectorXd rate = path.load_rate();
   const auto analytic = [&](int row, int column) {
     if (row < n) return column < n ? entry(k, row, column) : rate[row];
@@ -108,26 +123,18 @@ TEST(ArcLength, NewtonConvergesQuadraticallyOntoThePath) {
   const double arc = 0.3;
   RiksSystem r = riks_truss(arc);
   ArcLengthProblem& path = *r.path;
-  auto solver = make_linear_solver(SolverChoice::Automatic, true, true);
-  BorderedSolver bordered(*solver, path);
-  std::string message;
-  ASSERT_EQ(bordered.analyze(path.pattern(), &message), LinearStatus::Ok) << message;
-  Eigen::VectorXd residual(path.size()), correction(path.size());
-  SparseMatrix k = path.pattern();
   const int n = path.size() - 1;
   std::vector<double> errors;
   for (int iteration = 0; iteration < 12; ++iteration) {
-    ASSERT_TRUE(path.evaluate(residual, &k).ok);
+    r.evaluate();
     IterationNorms norms;
-    path.measure(residual, nullptr, norms);
+    path.measure(r.residual, nullptr, norms);
     if (iteration > 0) {
       errors.push_back(std::max(norms.largest_residual[0] / 100.0,
-                                std::abs(residual[n]) / (arc * arc)));
+                                std::abs(r.residual[n]) / (arc * arc)));
       if (errors.back() < 1e-13) break;
     }
-    ASSERT_EQ(bordered.factorize(k, &message), LinearStatus::Ok) << message;
-    ASSERT_EQ(bordered.solve(-residual, correction, &message), LinearStatus::Ok) << message;
-    path.apply_correction(correction);
+    r.correct();
   }
   int asserted = 0;
   for (std::size_t i = 1; i < errors.size(); ++i) {
