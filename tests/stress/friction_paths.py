@@ -66,14 +66,12 @@ normal force changes within an increment that ends in stick; 40-50% of the load-
 stop. That is why clinch turns a line search on in steps with friction. With --per-deck 1 the
 rate per drive shows it. scripts/stress_friction.sh reports both.
 
-With DIRECT increments (--direct 0.005,0.01,0.0137,0.02 --inclined) every direct- and series-
-driven path completes, one or 50 to a deck; a load-driven path can still stop (1 of 200 with one
-connector per deck, seed 20261203): where the friction has to stick again, Newton's slip tangent
-sends it from one slip side of the narrow stick range (2 F_lim/k wide) to the other, the line
-search's secant lands on either side in turn, and a fixed increment cannot be cut back. In a deck
-of 50 such a connector stops all 50 paths, and so does one whose switches cut the one line-search
-step of the model to about f_s = 0.25 every iteration (the others then converge by 0.75 per
-iteration and run out of iterations): 1 of the 4 decks of seed 20261203 completes.
+With DIRECT increments (--direct 0.005,0.01,0.0137,0.02 --inclined) every path completes, one or
+50 to a deck (seed 20261203: 200 of 200 either way). One line-search step s serves every
+connector of a deck, so the search brackets the zero of the projected residual: a connector whose
+stick band is much narrower than its Newton step gets a step into the band, where a secant
+through s = 0 alone would swing between s = 1 and s = 0.25 and hold the other 49 connectors to a
+quarter step per iteration until the iterations run out (docs/decisions.md, "Line search").
 
 Usage: friction_paths.py CLINCH [--paths N] [--per-deck M] [--seed S] [--work DIR] [--min-rate R]
                          [--max-cutback-fraction F] [--rtol T] [--residual R_n]

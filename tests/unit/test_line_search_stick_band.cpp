@@ -4,9 +4,9 @@
 // With |P| < F (1 + k_p/k) the solution sticks, u* = P/(k + k_p), inside a band of width 2F/k;
 // from the slip side the consistent tangent is k_p, and full Newton steps jump across the band
 // to the other slip side and back for good. Along a step that crosses the band g(s) = dᵀR(u + s d)
-// changes sign on a steep piece 1/100 of the step wide: a secant through (0, g(0)) alone swung
-// between s = 1 and s = 0.5 and ended on a step it had not evaluated; inside the bracket where g
-// changes sign the search lands in the band, and the next (stick) step is exact.
+// changes sign on a steep piece 1/100 of the step wide: a secant through (0, g(0)) alone swings
+// between s = 1 and s = 0.5 (10 Newton iterations here); inside the bracket where g changes sign
+// the search lands in the band, and the next (stick) step is exact.
 #include <gtest/gtest.h>
 
 #include <algorithm>
