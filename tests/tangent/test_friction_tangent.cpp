@@ -204,10 +204,10 @@ TEST(FrictionTangent, Conn2d2SlotWhileTheNormalForceChangesSign) {
   FrictionDriver d(kSlot, available, constrained, Vector6::Zero());
   d.commit(vec(0.01), vec(0, -7.7));  // F_lim = 2.31: u_s = 0.01 − 2.31e-4
   const Vector6 forward = vec(0.0101), backward = vec(0.0097);  // f_tr = 3.31 and −0.69
-  d.expect_fd_tangent(forward, vec(0, 14.3), kStick, false);  // F_lim = 4.29: sticks
-  d.expect_fd_tangent(forward, vec(0, 5.0), kStick, true);    // F_lim = 1.5: slips
+  d.expect_fd_tangent(forward, vec(0, 14.3), kStick, false);    // F_lim = 4.29: sticks
+  d.expect_fd_tangent(forward, vec(0, 5.0), kStick, true);      // F_lim = 1.5: slips
   d.expect_fd_tangent(forward, vec(0, -5.0), kStick, true);
-  d.expect_fd_tangent(backward, vec(0, 1.0), kStick, true);   // F_lim = 0.3: slips back
+  d.expect_fd_tangent(backward, vec(0, 1.0), kStick, true);  // F_lim = 0.3: slips back
   EXPECT_NEAR(d.evaluate(forward, vec(0, 5.0)).out.force_tangent(0, 1), 0.3, 1e-12);
   EXPECT_NEAR(d.evaluate(forward, vec(0, -5.0)).out.force_tangent(0, 1), -0.3, 1e-12);
   EXPECT_NEAR(d.evaluate(backward, vec(0, 1.0)).out.force_tangent(0, 1), -0.3, 1e-12);

@@ -68,7 +68,8 @@ TEST(LineSearchStickBand, TheBracketLandsInTheBand) {
   EXPECT_LE(report.iterations.size(), 4u);
   // u* = P/(k + k_p) in the band (|k u*| = 0.495 < F); |R| ≤ 1e-12 with R' = k + k_p puts u
   // within 1e-16 of it, and the last correction is exact up to the round-off of k u (1e-20).
-  const double exact = StickBandProblem::kLoad / (StickBandProblem::kStick + StickBandProblem::kParallel);
+  const double exact =
+      StickBandProblem::kLoad / (StickBandProblem::kStick + StickBandProblem::kParallel);
   EXPECT_NEAR(p.u(), exact, 1e-15);
 }
 
