@@ -35,12 +35,17 @@ tol = --rtol (default 1e-6) times the connector's peak force.
 
 The report gives, per kind and per drive, paths, how their decks ended (completed or stopped
 cleanly), rows checked, paths that failed completely (deleted), and the mean Newton iterations
-per converged increment (the .log's totals, cut-back attempts included).
+per converged increment (the .log's totals, cut-back attempts included); then the fraction of
+displacement-driven paths whose deck completed, over all decks and over the decks without a path
+that may snap back.
 
 Usage: damage_paths.py CLINCH [--paths N] [--per-deck M] [--seed S] [--work DIR] [--rtol T]
-                       [--min-completed R]
+                       [--min-completed R] [--min-completed-without-snap-back R]
 --min-completed: the least fraction of displacement-driven paths (direct, series) whose deck
 completes (load-driven paths may stop: that is the expected clean stop past a limit point).
+--min-completed-without-snap-back: the same over the decks where no series spring is softer than
+its path's steepest softening slope (a snap-back leaves no solution near the last one, and the
+run stops cleanly; the report counts the decks that hold such a path apart).
 """
 
 import argparse
@@ -335,6 +340,7 @@ def main():
     ap.add_argument("--work")
     ap.add_argument("--rtol", type=float, default=1e-6)
     ap.add_argument("--min-completed", type=float, default=0.0)
+    ap.add_argument("--min-completed-without-snap-back", type=float, default=0.0)
     args = ap.parse_args()
     rng = random.Random(args.seed)
     work = args.work or tempfile.mkdtemp(prefix="damage-paths-")
@@ -403,6 +409,11 @@ def main():
         return 1
     if rate < args.min_completed:
         print(f"FAIL: completion rate {rate:.3f} below {args.min_completed}")
+        return 1
+    smooth_rate = smooth[1] / smooth[0] if smooth[0] else 1.0
+    if smooth_rate < args.min_completed_without_snap_back:
+        print(f"FAIL: completion rate without snap-back {smooth_rate:.3f} below "
+              f"{args.min_completed_without_snap_back}")
         return 1
     if not args.work:
         shutil.rmtree(work)
