@@ -58,7 +58,8 @@ convergence rate over paths (a path converges when its deck completes) to reach 
 The report gives, per connection type, paths and decks completed, increments, Newton iterations
 (the .log's total, cut-back attempts included) per converged increment, the most equilibrium
 iterations of a converged increment (.sta), cutbacks, and the number of slipping and lift-off
-(applied normal load exactly 0) connector rows checked; then the rate per drive.
+(applied normal load exactly 0) connector rows checked; then the rate per drive, the paths whose
+deck completed without a cutback, and the Newton iterations per increment over all decks.
 
 Without line search (--line-search 0), Newton cycles on load-driven paths: it alternates between
 forward and backward slip (the same residual and correction norms every iteration) when the
@@ -504,6 +505,7 @@ def main():
     worst_slip = 0.0
     modes = {m: [0, 0] for m in MODES}  # paths, paths in completed decks
     remaining, deck_number = args.paths, 0
+    uncut = 0
     while remaining > 0:
         kind = args.kinds[deck_number % len(args.kinds)]
         count = min(args.per_deck, remaining)
@@ -535,6 +537,8 @@ def main():
         s[7] = max(s[7], max(per_inc, default=0))
         if not rows and code in (0, 2):
             problems.append(f"{deck}: no history rows")
+        # Paths converged at the deck's own increments: a completed deck without a cutback.
+        uncut += count if code == 0 and last == "COMPLETED" and cuts == 0 else 0
         for c in connectors:
             modes[c.mode][0] += 1
             modes[c.mode][1] += code == 0 and last == "COMPLETED"
@@ -561,6 +565,11 @@ def main():
           + " paths converged")
     print(f"  convergence rate {rate:.4f}; in slip, largest |CSF - F_lim| = {worst_slip:.3g} "
           f"x tol (tol = {args.rtol:g} x max(mu x peak normal load, F_int, 1))")
+    all_increments = sum(s[4] for s in stats.values())
+    all_iterations = sum(s[5] for s in stats.values())
+    print(f"  {uncut}/{total} paths converged without a cutback; "
+          f"{all_iterations / all_increments if all_increments else 0.0:.2f} Newton iterations "
+          f"per increment over all decks")
     for p in problems:
         print("PROBLEM:", p)
     if not args.work and not problems and rate >= args.min_rate:
