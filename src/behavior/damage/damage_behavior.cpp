@@ -65,7 +65,7 @@ class DamageBehavior final : public Behavior {
   ComponentMask components() const override { return affected_; }
   // Softening meets unloading at κ_n with a kink of the force (§7.4): in series with a spring,
   // full Newton steps can jump from one side of it to the other for good; a line search lands
-  // between them (docs/decisions.md "Increment control").
+  // between them (docs/decisions.md "Line search in steps with damage evolution").
   ProcedureNeeds procedure_needs() const override {
     return softens_ ? ProcedureNeeds{kLineSearchIterations, "the step has damage evolution", {}}
                     : ProcedureNeeds{};
