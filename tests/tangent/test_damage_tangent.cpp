@@ -494,6 +494,15 @@ TEST(DamageIncrementControl, AJumpIsRetriedOnlyWhereTheIncrementSizeChangesTheDa
   EXPECT_EQ(d.evaluate(vec(0.28)).dt_ratio, 1.0);
   // 0 → 0.145: no request.
   EXPECT_TRUE(std::isinf(d.evaluate(vec(0.10)).dt_ratio));
+  // The kept jump of decks/verification/cae_damage_direct_jump: EXPONENTIAL (0.2, 5) from
+  // U = 0.08 (not initiated) to 0.2 in one increment, d = 0.974; its tangent, the crossing of
+  // initiation included, against central differences.
+  StackDriver x(kAxialElastic + kForceInitiation +
+                    "*CONNECTOR DAMAGE EVOLUTION, TYPE=MOTION, SOFTENING=EXPONENTIAL\n0.2, 5.\n",
+                kAxial);
+  x.commit(vec(0.08));
+  EXPECT_EQ(x.evaluate(vec(0.2)).dt_ratio, 1.0);
+  x.expect_fd_tangent(vec(0.2), 0.09, kAxial);
   // ENERGY, G = 10: W = 0.155 (90 + 400 e^(−W/10)) ≈ 21.2 from 0.09 to 0.4, d ≈ 0.88: retried.
   StackDriver e(
       kAxialElastic + kForceInitiation + "*CONNECTOR DAMAGE EVOLUTION, TYPE=ENERGY\n10.\n", kAxial);
