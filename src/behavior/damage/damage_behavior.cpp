@@ -21,8 +21,6 @@ namespace {
 constexpr double kDamageJump = 0.75;
 constexpr double kDamageTarget = 0.5;
 constexpr double kDamageSteady = 0.25;
-// N_ls of the line search a step with damage evolution gets (procedure_needs).
-constexpr int kLineSearchIterations = 5;
 // Regularised damage this close to the largest damage counts as having reached it.
 constexpr double kViscousFailure = 1e-3;
 
@@ -38,7 +36,6 @@ class DamageBehavior final : public Behavior {
     increment_sensitive_ = controls_.viscosity > 0;
     for (const DamageMechanism& m : mechanisms_) {
       increment_sensitive_ = increment_sensitive_ || m.path_dependent();
-      softens_ = softens_ || m.softens();
       affected_ |= m.affected();
       force_criterion_ =
           force_criterion_ || m.criterion().criterion() == DamageInitiation::Criterion::Force;
@@ -63,13 +60,6 @@ class DamageBehavior final : public Behavior {
   }
 
   ComponentMask components() const override { return affected_; }
-  // Softening meets unloading at κ_n with a kink of the force (§7.4): in series with a spring,
-  // full Newton steps can jump from one side of it to the other for good; a line search lands
-  // between them (docs/decisions.md "Line search in steps with damage evolution").
-  ProcedureNeeds procedure_needs() const override {
-    return softens_ ? ProcedureNeeds{kLineSearchIterations, "the step has damage evolution", {}}
-                    : ProcedureNeeds{};
-  }
   std::span<const HistoryVariable> history_layout() const override { return layout_; }
   // The f^eff ⊗ ∂d/∂u term (§7.4) is unsymmetric, and softening makes the system indefinite:
   // the step takes the LU solver.
@@ -211,7 +201,6 @@ class DamageBehavior final : public Behavior {
 
   std::vector<DamageMechanism> mechanisms_;
   bool increment_sensitive_ = false;
-  bool softens_ = false;
   Matrix6 compliance_;
   DamageControls controls_;
   ComponentMask affected_ = 0;

@@ -55,7 +55,6 @@ class DamageMechanism {
   // Its damage depends on the path within an increment: the work of an ENERGY evolution is
   // integrated over the increment (trapezoidal), the other laws are functions of κ (§7.2).
   bool path_dependent() const { return law_ && law_->energy_based(); }
-  bool softens() const { return law_.has_value(); }  // an evolution, not only initiation
   DamageEvolution::Degradation degradation() const { return degradation_; }
   const DamageInitiationCriterion& criterion() const { return criterion_; }
 
