@@ -35,12 +35,17 @@ tol = --rtol (default 1e-6) times the connector's peak force.
 
 The report gives, per kind and per drive, paths, how their decks ended (completed or stopped
 cleanly), rows checked, paths that failed completely (deleted), and the mean Newton iterations
-per converged increment (the .log's totals, cut-back attempts included).
+per converged increment (the .log's totals, cut-back attempts included); then the fraction of
+displacement-driven paths whose deck completed, over all decks and over the decks without a path
+that may snap back.
 
 Usage: damage_paths.py CLINCH [--paths N] [--per-deck M] [--seed S] [--work DIR] [--rtol T]
-                       [--min-completed R]
+                       [--min-completed R] [--min-completed-without-snap-back R]
 --min-completed: the least fraction of displacement-driven paths (direct, series) whose deck
 completes (load-driven paths may stop: that is the expected clean stop past a limit point).
+--min-completed-without-snap-back: the same over the decks where no series spring is softer than
+its path's steepest softening slope (a snap-back leaves no solution near the last one, and the
+run stops cleanly; the report counts the decks that hold such a path apart).
 """
 
 import argparse
@@ -138,6 +143,10 @@ class Path:
         stable = rng.random() < 0.9
         self.ratio = (steepest * rng.uniform(1.2, 3.0) if stable else
                       rng.uniform(0.5, 3.0) if drive == "series" else rng.uniform(0.05, 1.0))
+        # A series spring softer than that slope snaps back: past the peak the displacement of c
+        # no longer determines the state, and there is no solution near the last one (the run
+        # stops cleanly). The estimate is the one above (exact for LINEAR softening).
+        self.snap_back = drive == "series" and self.ratio < steepest
         self.radii = [rng.uniform(0.5, 1.5), rng.uniform(0.5, 1.5)]
         self.evolution_potential = rng.random() < 0.5
         self.times = time_grid(rng)
@@ -331,6 +340,7 @@ def main():
     ap.add_argument("--work")
     ap.add_argument("--rtol", type=float, default=1e-6)
     ap.add_argument("--min-completed", type=float, default=0.0)
+    ap.add_argument("--min-completed-without-snap-back", type=float, default=0.0)
     args = ap.parse_args()
     rng = random.Random(args.seed)
     work = args.work or tempfile.mkdtemp(prefix="damage-paths-")
@@ -338,6 +348,8 @@ def main():
     stats = {}
     problems = []
     total_increments = total_iterations = 0
+    snap_decks = [0, 0]  # decks holding a path that may snap back, and those that completed
+    smooth = [0, 0]  # displacement-driven paths in the other decks, and those that completed
     done = 0
     deck_index = 0
     while done < args.paths:
@@ -354,8 +366,15 @@ def main():
         clean = (status == 0 and last == "COMPLETED") or (status == 2 and last.startswith("FAILED:"))
         if not clean:
             problems.append(f"{deck}: exit {status}, last status line {last!r}\n{stderr[-2000:]}")
+        snap = any(p.snap_back for p in paths)
+        if snap:
+            snap_decks[0] += 1
+            snap_decks[1] += status == 0
         for p in paths:
             path_problems, failed = check_path(p, rows, args.rtol)
+            if p.drive != "load" and not snap:
+                smooth[0] += 1
+                smooth[1] += status == 0
             problems += [f"{deck}: {x}" for x in path_problems[:3]]
             for key in (("kind", p.kind), ("drive", p.drive)):
                 s = stats.setdefault(key, {"paths": 0, "completed": 0, "stopped": 0, "rows": 0,
@@ -379,6 +398,10 @@ def main():
     paths_d = sum(s["paths"] for s in displacement)
     rate = sum(s["completed"] for s in displacement) / paths_d if paths_d else 1.0
     print(f"displacement-driven paths whose deck completed: {rate:.3f}")
+    if smooth[0]:
+        print(f"  in decks without a path that may snap back: {smooth[1]}/{smooth[0]} "
+              f"({smooth[1] / smooth[0]:.3f}); decks with one: {snap_decks[1]} of "
+              f"{snap_decks[0]} completed")
     for x in problems[:20]:
         print("FAIL:", x)
     if problems:
@@ -386,6 +409,11 @@ def main():
         return 1
     if rate < args.min_completed:
         print(f"FAIL: completion rate {rate:.3f} below {args.min_completed}")
+        return 1
+    smooth_rate = smooth[1] / smooth[0] if smooth[0] else 1.0
+    if smooth_rate < args.min_completed_without_snap_back:
+        print(f"FAIL: completion rate without snap-back {smooth_rate:.3f} below "
+              f"{args.min_completed_without_snap_back}")
         return 1
     if not args.work:
         shutil.rmtree(work)
