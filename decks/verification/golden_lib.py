@@ -6,8 +6,19 @@ connection-types.md §2.3 (used to cross-check small-rotation B rows by finite d
 the writer of golden.csv in the history-table layout of cli-contract.md.
 """
 
+import importlib.util
 import math
 import os
+
+
+def case_reference(case):
+    """The reference.py of another verification case, as a module (its solver reused; its
+    golden.csv is written only when it runs as a script)."""
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), case, "reference.py")
+    spec = importlib.util.spec_from_file_location(f"{case}_reference", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
 
 # Vectors and 3x3 matrices.
 

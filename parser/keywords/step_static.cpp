@@ -165,6 +165,7 @@ class StaticHandler : public KeywordHandler {
     const ParamSet& params = ctx.params();
     report_unsupported_params(ctx, unsupported_parameters());
     procedure_.loc = ctx.keyword().loc;
+    if (params.has("RIKS")) procedure_.riks.emplace();
     if (params.has("DIRECT")) {
       procedure_.direct = true;
       // The only value is NO STOP; no abbreviation (DIRECT=NO must not read as NO STOP).
@@ -195,14 +196,18 @@ class StaticHandler : public KeywordHandler {
       if (!extra_reported_) {
         extra_reported_ = true;
         ctx.report(DiagCode::unexpected_data_line, line.loc,
-                   fmt::format("{} takes one data line (initial increment, step period, minimum "
-                               "and maximum increment)",
-                               ctx.keyword_display()));
+                   procedure_.riks
+                       ? std::string("*STATIC, RIKS takes one data line (arc lengths, LPF and "
+                                     "the monitored node)")
+                       : fmt::format("{} takes one data line (initial increment, step period, "
+                                     "minimum and maximum increment)",
+                                     ctx.keyword_display()));
       }
       return;
     }
     has_data_ = true;
     procedure_.data_loc = line.loc;
+    if (procedure_.riks) return riks_line(ctx, line, fields);
     ctx.check_field_count(line, fields, 4,
                           "initial increment, step period, minimum increment, "
                           "maximum increment");
@@ -226,6 +231,7 @@ class StaticHandler : public KeywordHandler {
   }
 
   void end(BlockContext& ctx) override {
+    if (procedure_.riks) return end_riks(ctx);
     // Defaults and rules of keywords.md §15.
     StaticProcedure& p = procedure_;
     p.period = values_[1].value_or(1.0);
@@ -273,14 +279,83 @@ class StaticHandler : public KeywordHandler {
 
  protected:
   virtual std::initializer_list<std::string_view> unsupported_parameters() const {
-    return {"STABILIZE", "ALLSDTOL", "CONTINUE", "FACTOR", "RIKS", "LONG TERM", "ADAPTIVE"};
+    return {"STABILIZE", "ALLSDTOL", "CONTINUE", "FACTOR", "LONG TERM", "ADAPTIVE"};
   }
   // What a procedure adds to the time data, read from the keyword line and kept with the step.
   virtual void read_operator(BlockContext&) {}
   virtual void keep_operator(Step&) const {}
 
  private:
+  // The manual's data line for the Riks method: Δl_in, l_period, Δl_min, Δl_max, λ_end, node,
+  // DOF, displacement (docs/riks.md).
+  void riks_line(BlockContext& ctx, const DataLine& line, std::vector<Field>& fields) {
+    RiksSettings& r = *procedure_.riks;
+    ctx.check_field_count(line, fields, 8,
+                          "initial arc length, total arc length, minimum and maximum arc "
+                          "length, maximum LPF, node, DOF, displacement");
+    static constexpr const char* kWhat[] = {"the initial arc length", "the total arc length",
+                                            "the minimum arc length", "the maximum arc length",
+                                            "the maximum LPF"};
+    for (std::size_t i = 0; i < fields.size() && i < 8; ++i) {
+      if (fields[i].empty()) continue;
+      r.field_loc[i] = fields[i].loc;
+      if (i < 5) {
+        auto value = ctx.real(fields[i], kWhat[i]);
+        if (!value) continue;
+        if (i < 4 && *value < 0) {
+          ctx.report(DiagCode::value_out_of_range, fields[i],
+                     fmt::format("{} must be positive, got {}", kWhat[i], fields[i].text));
+          continue;
+        }
+        if (*value == 0) continue;  // the default, as a blank field
+        riks_values_[i] = *value;
+      } else if (i == 5) {
+        r.node = ctx.target(fields[i], "node");
+      } else if (i == 6) {
+        auto dof = ctx.integer(fields[i], "the monitored DOF");
+        if (dof && (*dof < 1 || *dof > 6)) {
+          ctx.report(DiagCode::value_out_of_range, fields[i],
+                     fmt::format("the monitored DOF must be 1 to 6, got {}", *dof));
+        } else if (dof) {
+          r.dof = static_cast<int>(*dof);
+        }
+      } else if (auto value = ctx.real(fields[i], "the finishing displacement")) {
+        r.displacement = *value;
+      }
+    }
+  }
+
+  void end_riks(BlockContext& ctx) {
+    RiksSettings& r = *procedure_.riks;
+    r.arc_period = riks_values_[1].value_or(1.0);
+    r.initial_arc = riks_values_[0].value_or(r.arc_period);
+    r.min_arc = riks_values_[2].value_or(std::min(r.initial_arc, 1e-5 * r.arc_period));
+    r.max_arc = riks_values_[3];
+    r.max_lpf = riks_values_[4];
+    if (!procedure_.direct && r.min_arc > r.initial_arc) {
+      ctx.report(DiagCode::invalid_increments, r.field_loc[2],
+                 fmt::format("minimum arc length {} is larger than the initial arc length {}",
+                             format_real(r.min_arc), format_real(r.initial_arc)));
+    }
+    if (!procedure_.direct && r.max_arc && *r.max_arc < r.initial_arc) {
+      ctx.report(DiagCode::invalid_increments, r.field_loc[3],
+                 fmt::format("maximum arc length {} is smaller than the initial arc length {}",
+                             format_real(*r.max_arc), format_real(r.initial_arc)));
+    }
+    // The node, its DOF and the displacement go together (the manual's fields 6–8).
+    const bool node = r.field_loc[5].valid(), dof = r.field_loc[6].valid();
+    if (node != dof) {
+      ctx.report(DiagCode::missing_field, node ? r.field_loc[5] : r.field_loc[6],
+                 "the monitored node (field 6) needs its DOF (field 7), and the DOF its node");
+      r.node.reset();
+    }
+    if (!node || !dof) r.node.reset();
+    Step& step = current_step(ctx);
+    if (!duplicate_) step.procedure = procedure_;
+  }
+
   StaticProcedure procedure_;
+  std::optional<double> riks_values_[5];
   std::optional<double> values_[4];
   bool has_data_ = false;
   bool extra_reported_ = false;
@@ -624,7 +699,7 @@ std::vector<KeywordSpec> step_keyword_specs() {
   stat.params = {
       {"DIRECT", ParamKind::OptionalValue}, unsupported_param("STABILIZE"),
       unsupported_param("ALLSDTOL"),        unsupported_param("CONTINUE"),
-      unsupported_param("FACTOR"),          unsupported_param("RIKS"),
+      unsupported_param("FACTOR"),          {"RIKS", ParamKind::Flag},
       unsupported_param("LONG TERM"),       unsupported_param("ADAPTIVE"),
   };
   stat.make_handler = &make<StaticHandler>;

@@ -12,16 +12,21 @@ void ConnectorStepProblem::begin_step(std::size_t step, bool nlgeom) {
   system_.set_nlgeom(nlgeom);
   conditions_.begin_step(step, system_);
   dynamic_step_started_ = false;
+  const Step& s = model_.history.steps[step];
+  period_ = s.procedure ? s.procedure->period : 1.0;
+  load_factor_ = 1.0;
 }
 
 void ConnectorStepProblem::end_step(double period, double total_time) {
-  conditions_.end_step(period, total_time);
+  conditions_.end_step(period, total_time, load_factor_);
 }
 
 void ConnectorStepProblem::begin_increment(double step_time, double total_time, double dt,
                                            double extrapolate_scale) {
   system_.set_integration(nullptr, dt);
   system_.set_time(total_time, dt);
+  total_time_ = total_time;
+  system_.set_load_factor(step_time / period_);
   conditions_.apply(system_, step_time, total_time);
   system_.start_increment(extrapolate_scale);
 }
@@ -37,8 +42,20 @@ void ConnectorStepProblem::begin_dynamic_increment(double step_time, double tota
   }
   system_.set_integration(&procedure, dt);
   system_.set_time(total_time, dt);
+  total_time_ = total_time;
+  system_.set_load_factor(step_time / period_);
   conditions_.apply(system_, step_time, total_time);
   system_.start_increment(0.0);
+}
+
+void ConnectorStepProblem::set_load_factor(double lpf) {
+  load_factor_ = lpf;
+  system_.set_load_factor(lpf);
+  conditions_.apply(system_, lpf * period_, total_time_);
+}
+
+double ConnectorStepProblem::nodal_value(std::int32_t node, int dof) const {
+  return system_.nodal_value(node, dof);
 }
 
 std::string ConnectorStepProblem::check_tangent(int step, int increment) {

@@ -26,6 +26,9 @@ class ConnectorStepProblem final : public StepProblem {
                                const DynamicProcedure& procedure) override;
   std::string check_tangent(int step, int increment) override;
 
+  void set_load_factor(double lpf) override;
+  double nodal_value(std::int32_t node, int dof) const override;
+
   void commit() override { system_.commit(); }
   void revert() override { system_.revert(); }
   bool update_active_set() override { return system_.update_active_set(); }
@@ -49,6 +52,9 @@ class ConnectorStepProblem final : public StepProblem {
   ConnectorSystem& system_;
   StepConditions conditions_;
   bool dynamic_step_started_ = false;  // this step's start state has been taken
+  double period_ = 1.0;      // of the step's ramps
+  double total_time_ = 0.0;  // at the end of the increment
+  double load_factor_ = 1.0;  // τ where the step's conditions end (1 but in a Riks step)
 };
 
 }  // namespace clinch

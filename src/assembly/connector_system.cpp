@@ -402,6 +402,17 @@ void ConnectorSystem::scatter(std::span<const int> l, std::size_t offset, const 
   }
 }
 
+void ConnectorSystem::path_weights(Eigen::VectorXd& weights) const {
+  weights.resize(size());
+  for (int i = 0; i < size(); ++i) {
+    switch (plan_.dofs.field(plan_.dependents.equation(i))) {
+      case EquationField::Translation: weights[i] = 1.0; break;
+      case EquationField::Rotation: weights[i] = plan_.length_scale * plan_.length_scale; break;
+      default: weights[i] = 0.0;  // a multiplier is a force, not a motion
+    }
+  }
+}
+
 void ConnectorSystem::finish_dependent_rows(Eigen::VectorXd& residual, SparseMatrix* tangent) {
   const DependentDofs& dependents = plan_.dependents;
   const Eigen::VectorXd& external = conditions_.external();
@@ -668,10 +679,21 @@ std::string ConnectorSystem::failure_note(int failed_equation) const {
     }
   }
   if (softening == plan_.connectors.size()) return {};
+  const bool loaded = (conditions_.external().size() > 0 &&
+                       conditions_.external().cwiseAbs().maxCoeff() > 0) ||
+                      conditions_.has_connector_loads();
+  if (!loaded) {
+    return fmt::format("connector element {} softening (d={:.3g})", elements_.label(softening),
+                       largest);
+  }
+  // docs/riks.md: past a softening peak no larger load has an equilibrium; say where and what
+  // the deck can do about it.
   return fmt::format(
-      "connector element {} softening (d={:.3g}) under load control, limit point "
-      "passed?",
-      elements_.label(softening), largest);
+      "connector element {} softening (d={:.3g}) under load control: a limit point, past "
+      "which no larger load has an equilibrium, at about {:.4g} of the step's loads; to go past "
+      "it, use *STATIC, RIKS, prescribe a displacement (*BOUNDARY) instead of the load, or "
+      "regularise the damage (*SECTION CONTROLS, VISCOSITY)",
+      elements_.label(softening), largest, load_factor_);
 }
 
 double ConnectorSystem::nodal_value(std::int32_t node, int dof) const {

@@ -79,6 +79,12 @@ class ConnectorSystem final : public NonlinearProblem {
   bool moving_prescribed() const override { return predicting_; }
   void measure(const Eigen::VectorXd& residual, const Eigen::VectorXd* correction,
                IterationNorms& norms) const override;
+  // Translations count as they are, rotations times L̄, multipliers not at all (docs/riks.md).
+  void path_weights(Eigen::VectorXd& weights) const override;
+  // The LPF history column (docs/riks.md): a Riks step's load proportionality factor; in other
+  // steps the fraction of the step's ramps, step time / period.
+  void set_load_factor(double factor) { load_factor_ = factor; }
+  double load_factor() const { return load_factor_; }
 
   // ---- between solves (StepProblem, connector_step_problem.hpp, passes these on) ----
   void commit();
@@ -188,12 +194,13 @@ class ConnectorSystem final : public NonlinearProblem {
   // The loads on dependent DOFs as they act on the DOFs they depend on (Tᵀ f): part of the
   // reaction of a prescribed reference node.
   Eigen::VectorXd constraint_load_;
-  std::string dependent_failure_;
+  std::string dependent_failure_;  // why the dependent DOFs could not follow the last correction
   std::optional<NewmarkIncrement> newmark_;  // set during a dynamic step
   bool rates_frozen_ = false;  // evaluate at the converged velocities (start_dynamic_step)
   Eigen::VectorXd inertia_force_;  // M a per equation at the last evaluation (reactions)
   // With dependent DOFs: the residual over every equation, and a correction expanded to them.
-  Eigen::VectorXd full_residual_, full_correction_;  // why the dependent DOFs could not follow the last correction
+  Eigen::VectorXd full_residual_, full_correction_;
+  double load_factor_ = 0.0;  // the LPF column's value
 };
 
 }  // namespace clinch

@@ -38,8 +38,9 @@ class Builder {
         d.reference = f.reference;
         if (dof <= 3) {
           d.map = DependentDof::Map::RigidTranslation;
-          if (f.rigid_arm) d.arm = position(model_, f.node) - position(model_, f.reference);
-          add_term(map_.equation(f.reference, dof), 0.0);
+          const std::int32_t source = f.translation_source();
+          if (f.rigid_arm) d.arm = position(model_, f.node) - position(model_, source);
+          add_term(map_.equation(source, dof), 0.0);
           if (d.arm != Vector3::Zero()) {
             for (int i = 0; i < 3; ++i) {
               add_term(i == d.axis ? -1 : map_.equation(f.reference, 4 + i), 0.0);

@@ -21,7 +21,8 @@ struct Model;
 
 struct DependentDof {
   // How the value follows from its first-level terms:
-  //   RigidTranslation  u = u_ref,k + ((R_ref − I)·arm)_k   (small displacements: (θ_ref × arm)_k)
+  //   RigidTranslation  u = u_ref,k + ((R_ref − I)·arm)_k   (small displacements: (θ_ref × arm)_k;
+  //                     a body anchored at another node reads u_k there: constraint_model.hpp)
   //   Rotation          θ = θ_ref,k                          (NLGEOM: R = R_ref)
   //   Linear            u = Σ c_t u_t                          (*EQUATION)
   //   LinkTranslation   x_k = x_other,k + s·√(L² − Σ_{j≠k} d_j²), d = x − x_other (MPC LINK)
@@ -29,9 +30,10 @@ struct DependentDof {
   Map map = Map::Linear;
   int equation = -1;
   std::int32_t node = -1;
-  std::int32_t reference = -1;  // the followed node, or a link's other node
+  std::int32_t reference = -1;  // the followed node (its rotation), or a link's other node
   int axis = 0;                 // 0…2: the component k
-  Vector3 arm = Vector3::Zero();  // RigidTranslation: X − X_ref; Link: X − X_other initially
+  // RigidTranslation: X − X of the node whose u_k it reads; Link: X − X_other initially.
+  Vector3 arm = Vector3::Zero();
   // First-level terms: the equations the map reads, in the order dependent_motion.cpp writes
   // their coefficients (Linear: the coefficients, constant).
   std::uint32_t first_term = 0, term_count = 0;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -32,6 +33,10 @@ class IncrementConditions {
   const std::vector<int>& prescribed() const { return prescribed_list_; }
   double target(int equation) const { return target_[equation]; }
   const Eigen::VectorXd& external() const { return external_; }
+  bool has_connector_loads() const {
+    return std::any_of(slots_.begin(), slots_.end(),
+                       [](const ConnectorConditions& c) { return c.load != Vector6::Zero(); });
+  }
   // The motion and load conditions of a connector (none for most connectors).
   const ConnectorConditions& connector(std::size_t c) const {
     const std::int32_t s = slot_of_connector_[c];

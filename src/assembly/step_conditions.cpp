@@ -44,8 +44,13 @@ StepConditions::Condition StepConditions::define(const ConditionBlock& block, co
   Condition c;
   c.start = start;
   c.magnitude = magnitude;
+  // A Riks step scales its values by the load proportionality factor, P₀ + λ(P_ref − P₀), the
+  // ramp at τ = λ; amplitudes are ignored (docs/riks.md).
+  const bool riks = step.procedure && step.procedure->riks;
   if (block.fixed) {
     c.mode = Mode::Fixed;
+  } else if (riks) {
+    c.mode = Mode::Ramp;
   } else if (block.amplitude_index >= 0 &&
              amplitudes_[static_cast<std::size_t>(block.amplitude_index)]) {
     c.amplitude = block.amplitude_index;
@@ -193,13 +198,13 @@ void StepConditions::apply(ConnectorSystem& system, double step_time, double tot
   }
 }
 
-void StepConditions::end_step(double period, double total_time) {
+void StepConditions::end_step(double period, double total_time, double tau) {
   for (Table* table : {&boundaries_, &loads_, &motions_, &connector_loads_}) {
     for (auto& [key, c] : *table) {
       const bool follows_total_time =
           c.amplitude >= 0 && model_.history.amplitudes[static_cast<std::size_t>(c.amplitude)].total_time;
       if (follows_total_time) continue;
-      c = Condition{Mode::Hold, 0.0, c.value(1.0, period, total_time, amplitudes_), -1};
+      c = Condition{Mode::Hold, 0.0, c.value(tau, period, total_time, amplitudes_), -1};
     }
   }
   released_loads_.clear();

@@ -25,8 +25,9 @@ class StepConditions {
   void begin_step(std::size_t step, ConnectorSystem& system);
   // Pushes the values at (step time, total time) into the system. τ = step_time / period.
   void apply(ConnectorSystem& system, double step_time, double total_time) const;
-  // Records the values at the end of the step for the next one.
-  void end_step(double period, double total_time);
+  // Records the values at the end of the step for the next one: at τ = 1, or at the load
+  // proportionality factor a Riks step ended at.
+  void end_step(double period, double total_time, double tau = 1.0);
 
  private:
   enum class Mode : std::uint8_t { Ramp, Jump, Amplitude, AmplitudeAbsolute, Fixed, Hold };

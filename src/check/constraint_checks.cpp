@@ -99,13 +99,13 @@ class ConstraintChecker {
   void collect() {
     for (const NodeFollower& f : c_.followers) {
       const Vec3& x = model_.nodes[static_cast<std::size_t>(f.node)].x;
-      const Vec3& x_ref = model_.nodes[static_cast<std::size_t>(f.reference)].x;
-      const bool arm = f.rigid_arm && x != x_ref;
+      const Vec3& x_source = model_.nodes[static_cast<std::size_t>(f.translation_source())].x;
+      const bool arm = f.rigid_arm && x != x_source;
       for (int dof = 1; dof <= 6; ++dof) {
         if (!(f.dofs & bit(dof))) continue;
         Dependent d;
         d.source = f.source;
-        d.reads.push_back(key_of(f.reference, dof));
+        d.reads.push_back(key_of(dof <= 3 ? f.translation_source() : f.reference, dof));
         if (dof <= 3 && arm) {
           d.curved = true;
           for (int r = 4; r <= 6; ++r) {
@@ -180,15 +180,27 @@ class ConstraintChecker {
         sink_
             .report(DiagCode::dependent_dof_prescribed, bc.loc,
                     fmt::format("DOF {} of node {} is prescribed here, but {} makes it depend "
-                                "on {}; prescribe the independent DOFs (the reference node) "
-                                "instead",
+                                "on {}; {}",
                                 found_dof, node_display(model_, node), at_line(found->source),
-                                reads_display(*found)))
+                                reads_display(*found), remedy(*found, found_dof)))
             .notes.push_back({source(found->source).loc,
                               fmt::format("the {} is here", source(found->source).keyword)});
         break;  // one report per *BOUNDARY line
       }
     }
+  }
+
+  // A rigid body takes each of its DOFs at one node (anchor_rigid_bodies.cpp): a second
+  // prescribed translation would fix its rotation through the arms.
+  std::string remedy(const Dependent& d, int dof) const {
+    if (source(d.source).keyword != "*RIGID BODY") {
+      return "prescribe the independent DOFs (the reference node) instead";
+    }
+    return fmt::format("a rigid body takes a condition on DOF {} at one of its nodes only "
+                       "(the reference node or one other), and only while no other constraint "
+                       "eliminates that DOF of its reference node; prescribe the body's rotation "
+                       "at its reference node instead of a second translation",
+                       dof);
   }
 
   // "node 7" or "nodes 7 and 9": the nodes a dependent DOF reads.
@@ -339,11 +351,24 @@ class ConstraintChecker {
     for (std::size_t steps = 0; steps <= c_.followers.size(); ++steps) {
       auto it = rigid_follower_.find(n);
       if (it == rigid_follower_.end()) break;
-      const NodeFollower& f = c_.followers[it->second];
-      mask &= f.dofs;
-      n = f.reference;
+      mask &= it->second.dofs;
+      n = it->second.reference;
     }
     return {n, mask};
+  }
+
+  // Each node's rigid-arm followers as one: the node it moves with and in which DOFs. A body's
+  // anchor (anchor_rigid_bodies.cpp) moves with it in the DOFs it anchors.
+  void collect_rigid_followers() {
+    for (const NodeFollower& f : c_.followers) {
+      if (!f.rigid_arm) continue;
+      for (std::int32_t n : {f.node, f.anchor}) {
+        if (n < 0 || n == f.reference) continue;
+        Moves& m =
+            rigid_follower_.try_emplace(n, Moves{f.reference, 0, f.source}).first->second;
+        if (m.reference == f.reference) m.dofs |= f.dofs;
+      }
+    }
   }
 
   ComponentMask rigid_components(const ConnectorSection& section) const {
@@ -359,9 +384,7 @@ class ConstraintChecker {
   }
 
   void check_connectors() {
-    for (std::size_t i = 0; i < c_.followers.size(); ++i) {
-      if (c_.followers[i].rigid_arm) rigid_follower_.try_emplace(c_.followers[i].node, i);
-    }
+    collect_rigid_followers();
     if (rigid_follower_.empty()) return;
     const auto& section_of = model_.sections.section_of_element;
     const DofMask all = static_cast<DofMask>(translations_ | rotations_);
@@ -387,7 +410,7 @@ class ConstraintChecker {
       const ComponentMask over =
           static_cast<ComponentMask>((section.constrained | rigid_components(section)) & fixed);
       if (!over) continue;
-      const std::int32_t via = c_.followers[rigid_follower_.at(a != root_a ? a : b)].source;
+      const std::int32_t via = rigid_follower_.at(a != root_a ? a : b).source;
       std::string components;
       for (int k = 1; k <= 6; ++k) {
         if (over & (1u << (k - 1)))
@@ -413,7 +436,12 @@ class ConstraintChecker {
   const Step* nlgeom_step_ = nullptr;       // the first step with NLGEOM=YES
   std::map<DofKey, Dependent> dependents_;  // ordered: reports come in the same order every run
   std::set<std::pair<std::int32_t, std::int32_t>> reported_pairs_;
-  std::unordered_map<std::int32_t, std::size_t> rigid_follower_;  // node → its rigid follower
+  struct Moves {
+    std::int32_t reference = -1;
+    DofMask dofs = 0;
+    std::int32_t source = -1;
+  };
+  std::unordered_map<std::int32_t, Moves> rigid_follower_;  // node → how it moves rigidly
 };
 
 }  // namespace

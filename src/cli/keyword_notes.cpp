@@ -138,7 +138,8 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
        "Makes nodes and elements a rigid body that follows its reference node: nodes of the "
        "ELSET's elements, TIE NSET and NSET (CalculiX) in translation and rotation, PIN NSET in "
        "translation; the ELSET's elements need no section then. REF NODE= is required (as in "
-       "Abaqus/Standard: clinch does not generate a node as CalculiX does without it).",
+       "Abaqus/Standard: clinch does not generate a node as CalculiX does without it). "
+       "Connectors, loads and boundary conditions on any node of the body act on the body.",
        "Abaqus/Explicit's rigid element thickness (ignored with a warning).",
        {{"POSITION=CENTER OF MASS",
          "needs the masses of the body, which a static analysis does not have"},
@@ -312,9 +313,14 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
       {"END STEP", "Closes the step.", ""},
       {"STATIC",
        "A static procedure with automatic incrementation (cutbacks) or fixed increments "
-       "(DIRECT).",
-       "`initial increment, step time, minimum increment, maximum increment`.",
-       {{"STABILIZE, ALLSDTOL, CONTINUE, FACTOR, RIKS, LONG TERM, ADAPTIVE", "not implemented"}}},
+       "(DIRECT). With RIKS, the modified Riks method: the load proportionality factor (LPF "
+       "column) scales the step's loads, found with the state on an arc length (docs/riks.md).",
+       "`initial increment, step time, minimum increment, maximum increment`; with RIKS "
+       "`initial arc length, total arc length, minimum and maximum arc length, maximum LPF, "
+       "node, DOF, displacement`.",
+       {{"STABILIZE, ALLSDTOL, CONTINUE, FACTOR, LONG TERM, ADAPTIVE", "not implemented"},
+        {"a non-zero *BOUNDARY or *CONNECTOR MOTION value in a RIKS step",
+         "the LPF scales loads (*CLOAD, *CONNECTOR LOAD)"}}},
       {"CONTROLS",
        "Newton convergence criteria (FIELD), time incrementation and line search.",
        "With PARAMETERS=: the rows the manual gives for that parameter set.",

@@ -3,6 +3,10 @@
 #include <fmt/format.h>
 #include <petscsys.h>
 
+#include <cstdlib>
+
+#include "src/parallel/communicator.hpp"
+
 namespace clinch {
 namespace {
 
@@ -20,6 +24,10 @@ class PetscSession {
     static char* arguments[] = {program, skip_rc, no_signals, nullptr};
     int argc = 3;
     char** argv = arguments;
+    // A run that no launcher started is a singleton, for which Open MPI would start its daemon
+    // (orted) on MPI_Init: 0.3 s of every small run with PETSc (docs/parallel.md). Isolated, it
+    // starts none; a setting in the environment is left alone.
+    if (!launched_by_mpi()) setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
     const PetscErrorCode code = PetscInitialize(&argc, &argv, nullptr, nullptr);
     if (code != 0) {
       error_ = fmt::format("PETSc failed to initialize (error {})", static_cast<int>(code));

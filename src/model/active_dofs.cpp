@@ -101,8 +101,9 @@ DofMask element_dofs(const Model& model, const ConnectorDofs& connector_dofs,
   return 0;
 }
 
-// DOFs that *CLOAD lines load at each node (a load on a rigid body's node acts on the body), and
-// every DOF of the nodes that nodal output names (a rigid body's node reports how it moves).
+// DOFs that *CLOAD and *BOUNDARY lines name at each node (a load or a condition on a rigid
+// body's node acts on the body), and every DOF of the nodes that nodal output names (a rigid
+// body's node reports how it moves).
 std::vector<DofMask> named_dofs(const Model& model) {
   std::vector<DofMask> named(model.nodes.size(), 0);
   auto name = [&named](const std::vector<std::int32_t>& nodes, DofMask mask) {
@@ -112,7 +113,9 @@ std::vector<DofMask> named_dofs(const Model& model) {
       }
     }
   };
+  for (const BoundaryCondition& bc : model.history.model_boundaries) name(bc.resolved, bc.dofs);
   for (const Step& step : model.history.steps) {
+    for (const BoundaryCondition& bc : step.boundaries) name(bc.resolved, bc.dofs);
     for (const ConcentratedLoad& load : step.loads) name(load.resolved, dof_bit(load.dof));
     for (const OutputRequest& output : step.outputs) {
       for (const NodeOutputRequest& request : output.nodes) name(request.resolved, kAll3D);
@@ -150,11 +153,13 @@ void add_constraint_dofs(const Model& model, std::vector<DofMask>& active) {
       const DofMask dependent = (active[node] | named[node]) & f.dofs;
       if (!dependent) continue;
       changed |= set_dofs(active, f.node, dependent);
-      DofMask needed = dependent;
+      const std::int32_t source = f.translation_source();
+      changed |= set_dofs(active, source, dependent);
       const Vec3& x = model.nodes[node].x;
-      const Vec3& x_ref = model.nodes[static_cast<std::size_t>(f.reference)].x;
-      if (f.rigid_arm && (dependent & translations) && x != x_ref) needed |= rotations;
-      changed |= set_dofs(active, f.reference, needed);
+      const Vec3& x_source = model.nodes[static_cast<std::size_t>(source)].x;
+      if (f.rigid_arm && (dependent & translations) && x != x_source) {
+        changed |= set_dofs(active, f.reference, rotations);
+      }
     }
     for (const LinearConstraint& equation : c.equations) {
       const bool takes_part = std::any_of(

@@ -28,12 +28,19 @@ struct ConstraintSource {
 // nodes, MPC BEAM, TIE and PIN). With `rigid_arm`, the translations follow the rigid motion of the
 // reference node: u = u_ref + (R_ref − I)(X − X_ref) (small displacements: θ_ref × (X − X_ref));
 // without, they equal u_ref (MPC TIE and PIN). Rotations equal the reference node's rotation.
+// A rigid body prescribed in a translation at one of its other nodes is anchored there
+// (docs/constraints.md "Conditions on a body's nodes"): that node keeps the translation as its
+// own, and the body's nodes, the reference node among them, follow it in that translation,
+// u = u_anchor + (R_ref − I)(X − X_anchor), the reference node still giving the rotation.
 struct NodeFollower {
   std::int32_t node = -1;       // the dependent node (global index)
   std::int32_t reference = -1;  // the independent node (global index)
   DofMask dofs = 0;             // bit k − 1 for DOF k (a 2-D model uses 1, 2 and 6)
   bool rigid_arm = true;
   std::int32_t source = -1;     // into ConstraintModel::sources
+  std::int32_t anchor = -1;     // whose translations `dofs` follow, when not the reference's
+  // The node whose translations the follower's translations read.
+  std::int32_t translation_source() const { return anchor >= 0 ? anchor : reference; }
 };
 
 // One term a·u of a linear constraint: DOF `dof` (1…6) of global node `node`.

@@ -119,6 +119,23 @@ struct ConnectorCondition {
 
 // ---- Procedure and controls (keywords.md §15, §16) --------------------------------------------
 
+// *STATIC, RIKS with its data line, defaults resolved (docs/riks.md; the manual's *STATIC data
+// line for the Riks method). Arc lengths are in the scaled load-displacement space of
+// src/solver/arc_length_problem.hpp.
+struct RiksSettings {
+  double initial_arc = 1.0;  // Δl_in (default: the total arc length)
+  double arc_period = 1.0;   // l_period, the total arc length scale factor
+  double min_arc = 1e-5;     // Δl_min (default: min(Δl_in, 1e-5·l_period))
+  std::optional<double> max_arc;  // Δl_max (none: no limit)
+  std::optional<double> max_lpf;  // λ_end: the step ends once |LPF| reaches it
+  // The step ends once DOF `dof` of the monitored node crosses `displacement`.
+  std::optional<TargetRef> node;
+  int dof = 0;
+  double displacement = 0;
+  std::int32_t resolved_node = -1;  // global node, set by validation
+  std::array<SourceLoc, 8> field_loc{};  // fields 1–8 (invalid when blank)
+};
+
 // *STATIC with its data line, defaults resolved (§15).
 struct StaticProcedure {
   SourceLoc loc;                         // keyword line
@@ -130,6 +147,7 @@ struct StaticProcedure {
   double max_increment = 1.0;            // ignored with DIRECT
   SourceLoc data_loc;                    // the data line (invalid when absent)
   std::array<SourceLoc, 4> field_loc{};  // fields 1–4 (invalid when blank)
+  std::optional<RiksSettings> riks;      // RIKS: the data line is the Riks method's
 };
 
 // *DYNAMIC (implicit, docs/dynamics.md): the integration operator with its defaults resolved

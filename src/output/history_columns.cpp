@@ -84,6 +84,7 @@ void HistoryColumns::expand_steps() {
     const std::vector<Request> requests = expand_step({}, {}, true);
     index_names_ = true;
     step_requests_.assign(model_.history.steps.size(), requests);
+    add_load_factor_column();
     return;
   }
   // Requests carry over (keywords.md §13, §17, §18): OP=NEW drops earlier *OUTPUT requests,
@@ -111,6 +112,24 @@ void HistoryColumns::expand_steps() {
     std::vector<const PrintRequest*> prints = node_prints;
     prints.insert(prints.end(), element_prints.begin(), element_prints.end());
     step_requests_.push_back(expand_step(outputs, prints, false));
+  }
+  add_load_factor_column();
+}
+
+// A model with a Riks step has the column LPF in every step (docs/riks.md): the load
+// proportionality factor there, the fraction of the step's ramps elsewhere.
+void HistoryColumns::add_load_factor_column() {
+  const auto& steps = model_.history.steps;
+  if (std::none_of(steps.begin(), steps.end(),
+                   [](const Step& s) { return s.procedure && s.procedure->riks; })) {
+    return;
+  }
+  Column c;
+  c.variable = "LPF";
+  const Term term{Source::Model, 0};
+  const std::size_t column_index = column("LPF", c, std::span(&term, 1));
+  for (std::vector<Request>& requests : step_requests_) {
+    requests.push_back(Request{1, {column_index}});
   }
 }
 
@@ -434,6 +453,7 @@ double HistoryColumns::value(const Column& c, ConnectorSystem& system) {
           sum += system.nodal_rate(t.index, c.component, 2);
         }
         break;
+      case Source::Model: sum += system.load_factor(); break;
     }
   }
   return sum;

@@ -37,7 +37,7 @@ class HistoryColumns {
   void evaluate(ConnectorSystem& system, int increment, bool last, std::vector<double>& values);
 
  private:
-  enum class Source : std::uint8_t { Connector, Spring, Node };
+  enum class Source : std::uint8_t { Connector, Spring, Node, Model };
   struct Term {  // one contribution to a column (a total sums several)
     Source source = Source::Connector;
     std::int32_t index = 0;  // connector record, spring record, or global node
@@ -81,6 +81,7 @@ class HistoryColumns {
   // yet.
   std::size_t column(const std::string& name, Column column, std::span<const Term> terms);
   void expand_steps();
+  void add_load_factor_column();
   std::vector<Request> expand_step(const std::vector<const OutputRequest*>& outputs,
                                    const std::vector<const PrintRequest*>& prints,
                                    bool default_request);

@@ -52,6 +52,11 @@ void RunOutputs::note(int step, int increment, std::string_view text) {
                           : fmt::format("step {}: {}", step, text));
 }
 
+void RunOutputs::step_ended(int step, std::string_view why) {
+  status_.write_step_end(step, why);
+  log_.info(fmt::format("step {} ended: {}", step, why));
+}
+
 void RunOutputs::cut_back(int step, int increment, std::string_view reason, double dt) {
   log_.warning(
       fmt::format("step {} increment {}: {}; cutting back to {}", step, increment, reason, dt));

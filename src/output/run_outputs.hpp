@@ -45,6 +45,8 @@ class RunOutputs {
   // `increment` when > 0), a note that stands alone, a warning, and a cutback with its reason.
   void iteration(const IterationRecord& record) { log_.iteration(record); }
   void note(int step, int increment, std::string_view text);
+  // Why a step ended, when its procedure decided it (a Riks step): the .sta and the log.
+  void step_ended(int step, std::string_view why);
   void note(std::string_view text) { log_.info(text); }
   void warning(std::string_view text) { log_.warning(text); }
   void cut_back(int step, int increment, std::string_view reason, double dt);

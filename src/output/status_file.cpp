@@ -34,6 +34,10 @@ bool StatusFile::write_step(int step, std::string_view name) {
   return write_line(fmt::format("STEP {}: {}", step, name));
 }
 
+bool StatusFile::write_step_end(int step, std::string_view why) {
+  return write_line(fmt::format("STEP {} ENDED: {}", step, why));
+}
+
 bool StatusFile::write_completed() { return write_line("COMPLETED"); }
 
 bool StatusFile::write_failed(std::string_view reason, int step, int increment, double total_time) {

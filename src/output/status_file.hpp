@@ -33,6 +33,9 @@ class StatusFile {
   // `STEP <n>: <name>` before the first attempt of step n (docs/study-and-report.md, "Step
   // names"): not an attempt line, so readers that take lines of numbers pass over it.
   bool write_step(int step, std::string_view name);
+  // `STEP <n> ENDED: <why>` after the last attempt of a step whose procedure ended it (a Riks
+  // step's stopping criterion); not an attempt line either.
+  bool write_step_end(int step, std::string_view why);
   bool write_completed();
   // `FAILED: <reason> (step S, increment I, time T)`.
   bool write_failed(std::string_view reason, int step, int increment, double total_time);

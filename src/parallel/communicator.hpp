@@ -51,5 +51,7 @@ std::unique_ptr<Communicator> make_world_communicator(std::string* error);
 // True when the process was started by mpirun with more than one rank (read from the
 // environment, before MPI starts).
 bool launched_on_several_ranks();
+// True when an MPI launcher (mpirun, srun) started the process, with any number of ranks.
+bool launched_by_mpi();
 
 }  // namespace clinch

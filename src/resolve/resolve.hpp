@@ -24,6 +24,11 @@ void resolve_rigid_bodies(Model& model, DiagnosticSink& sink);
 // *MPC and *EQUATION into the followers, equations and links of constraint_model.hpp; before
 // resolve_history for the same reason (src/resolve/resolve_mpc_equations.cpp).
 void resolve_mpc_equations(Model& model, DiagnosticSink& sink);
+// A *BOUNDARY on a rigid body's node other than its reference node acts on the body: the body
+// is anchored at the node in that translation, and a tie node's rotation moves to the reference
+// node (src/resolve/anchor_rigid_bodies.cpp). Called by resolve_history once the *BOUNDARY
+// targets are resolved and before the active DOFs are, which read the followers.
+void anchor_rigid_bodies(Model& model);
 // Derived components, potentials and friction (derived-components-and-potentials.md, friction.md):
 // names inside each behaviour block, classification, and the rules that need it.
 void resolve_potentials_and_friction(Model& model, DiagnosticSink& sink);

@@ -10,6 +10,7 @@
 #include <array>
 #include <bit>
 #include <memory>
+#include <set>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -95,14 +96,19 @@ struct InForce {
 
 class HistoryValidator {
  public:
-  HistoryValidator(Model& model, DiagnosticSink& sink)
-      : model_(model),
-        sink_(sink),
-        active_(active_dofs(model)),
-        following_(following_dofs(model)) {}
+  HistoryValidator(Model& model, DiagnosticSink& sink) : model_(model), sink_(sink) {}
 
   void run() {
     HistoryModel& history = model_.history;
+    // The nodes of every *BOUNDARY first: a condition on a rigid body's node anchors the body
+    // there, which changes the followers that the active DOFs read.
+    for (BoundaryCondition& bc : history.model_boundaries) resolve(bc.target, false, bc.resolved);
+    for (Step& step : history.steps) {
+      for (BoundaryCondition& bc : step.boundaries) resolve(bc.target, false, bc.resolved);
+    }
+    anchor_rigid_bodies(model_);
+    active_ = active_dofs(model_);
+    following_ = following_dofs(model_);
     resolve_amplitudes(history.model_blocks);
     for (Step& step : history.steps) resolve_amplitudes(step.blocks);
     report_unused_amplitudes();
@@ -179,18 +185,71 @@ class HistoryValidator {
 
   // ---- Steps --------------------------------------------------------------------------------
 
-  void check_step_structure(const Step& step) {
+  void check_step_structure(Step& step) {
     // A closed step without a procedure was reported at its *END STEP; an unclosed one (E0603)
     // is reported here (input-syntax.md §8).
     if (!step.closed && !step.procedure && !step.procedure_refused) {
       sink_.report(DiagCode::step_procedure, step.loc,
                    fmt::format("step '{}' has no procedure (expected *STATIC or *DYNAMIC)", step.name.display));
     }
+    if (step.procedure && step.procedure->riks) check_riks(step);
     // keywords.md §14: UNSYMM=NO with a behaviour whose tangent is unsymmetric (friction).
     if (step.unsymmetric == Unsymmetric::No && uses_friction()) {
       sink_.report(DiagCode::symmetrized_tangent, step.unsymmetric_loc,
                    "UNSYMM=NO with connector friction: the tangent is symmetrised and "
                    "convergence may slow");
+    }
+  }
+
+  // docs/riks.md: the monitored node is one node; the loads the LPF scales are the step's own,
+  // as ramps (amplitudes are ignored, as the manual says of the Riks method).
+  void check_riks(Step& step) {
+    RiksSettings& riks = *step.procedure->riks;
+    if (riks.node) {
+      std::vector<std::int32_t> nodes;
+      if (resolve(*riks.node, false, nodes)) {
+        if (nodes.size() != 1) {
+          sink_.report(DiagCode::invalid_value, riks.node->loc,
+                       fmt::format("the monitored node must be one node; {} has {}",
+                                   describe(*riks.node, false), nodes.size()));
+        } else {
+          riks.resolved_node = nodes.front();
+        }
+      }
+    }
+    if (step.loads.empty() && step.connector_loads.empty()) {
+      sink_.report(DiagCode::step_procedure, step.procedure->loc,
+                   fmt::format("step '{}' is a Riks step without loads: the load proportionality "
+                               "factor scales the *CLOAD and *CONNECTOR LOAD values the step "
+                               "defines",
+                               step.name.display));
+    }
+    // The bordered system takes the LPF's effect on the loads; a prescribed value that moved with
+    // it would also move the free DOFs through the predictor of prescribed increments, which
+    // the arc length does not measure (docs/riks.md).
+    auto moving = [&](const SourceLoc& at, std::string_view what) {
+      sink_.report(DiagCode::unsupported_option, at,
+                   fmt::format("a non-zero {} in a Riks step is not supported: the load "
+                               "proportionality factor scales loads; prescribe the value in a "
+                               "*STATIC step before, and load the Riks step with *CLOAD or "
+                               "*CONNECTOR LOAD",
+                               what));
+    };
+    for (const BoundaryCondition& bc : step.boundaries) {
+      if (bc.magnitude != 0.0) moving(bc.magnitude_loc.valid() ? bc.magnitude_loc : bc.loc,
+                                      "*BOUNDARY value");
+    }
+    for (const ConnectorCondition& motion : step.motions) {
+      if (motion.magnitude != 0.0) moving(motion.magnitude_loc.valid() ? motion.magnitude_loc
+                                                                       : motion.loc,
+                                          "*CONNECTOR MOTION value");
+    }
+    std::set<std::int32_t> warned;
+    for (const ConditionBlock& block : step.blocks) {
+      if (block.amplitude.key.empty() || !warned.insert(block.loc.line).second) continue;
+      sink_.report(DiagCode::parameter_ignored, block.loc,
+                   "AMPLITUDE is ignored in a Riks step: the load proportionality factor "
+                   "scales the step's values");
     }
   }
 
@@ -226,7 +285,7 @@ class HistoryValidator {
 
   void check_boundary(BoundaryCondition& bc, const std::string& where, DofTable& seen,
                       DofTable& in_force) {
-    if (!resolve(bc.target, false, bc.resolved)) return;
+    if (bc.resolved.empty()) return;  // not resolved (reported), or moved to other lines
     DofMask dofs = bc.dofs;
     // In 2-D only the members 1, 2 and 6 of a named type apply (§9).
     if (!bc.named_type.empty() && model_.dimension == 2) dofs &= 0b100011;

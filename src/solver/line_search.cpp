@@ -28,13 +28,32 @@ EvalStatus search_line(NonlinearProblem& problem, Eigen::VectorXd& direction,
   EvalStatus status = problem.evaluate(residual, nullptr);
   // Only a descent direction (g(0) < 0) has a step that reduces the projected residual.
   if (!status.ok || !(g0 < -informative)) return status;
-  double s = 1.0;
+  // g changes sign between `low` (g < 0, s = 0 at first) and `high` once a step has overshot
+  // (g > 0). A stick–slip switch makes g piecewise linear with a steep piece as narrow as the
+  // stick band: a secant through (0, g(0)) and the last point alone then swings between s_max and
+  // f_s·s without ever landing in it, so the zero is sought inside the bracket (regula falsi,
+  // Illinois variant: the end kept twice in a row has its g halved, so both ends move).
+  double s = 1.0, g = projection();
+  double low = 0.0, g_low = g0, high = -1.0, g_high = 0.0;
+  int kept = 0;  // +1: `low` was kept in the last update, −1: `high`
+  double best = s, g_best = std::abs(g);
   for (int iteration = 0; iteration < controls.max_iterations; ++iteration) {
-    const double g = projection();
     if (std::abs(g) <= controls.eta * std::abs(g0)) break;
-    // Zero of the line through (0, g0) and (s, g); with g ≤ g0 the secant has no zero ahead
-    // and the step grows to s_max.
-    double next = g > g0 ? s * g0 / (g0 - g) : controls.s_max;
+    double next;
+    if (g > 0) {
+      if (kept == 1) g_low *= 0.5;
+      high = s, g_high = g, kept = 1;
+    } else {
+      if (kept == -1) g_high *= 0.5;
+      low = s, g_low = g, kept = high < 0 ? 0 : -1;
+    }
+    if (high >= 0) {
+      next = low - g_low * (high - low) / (g_high - g_low);
+    } else {
+      // No overshoot yet: the zero of the secant through (0, g0) and (s, g); with g ≤ g0 the
+      // secant has no zero ahead and the step grows to s_max.
+      next = g > g0 ? s * g0 / (g0 - g) : controls.s_max;
+    }
     // keywords.md §16: f_s limits the change of s in one iteration (here: how far it may fall).
     next = std::clamp(next, std::max(controls.f_s * s, controls.s_min), controls.s_max);
     if (next == s) break;
@@ -42,6 +61,14 @@ EvalStatus search_line(NonlinearProblem& problem, Eigen::VectorXd& direction,
     s = next;
     status = problem.evaluate(residual, nullptr);
     if (!status.ok) break;
+    g = projection();
+    if (std::abs(g) < g_best) best = s, g_best = std::abs(g);
+  }
+  // The search ends on the best step it evaluated, never on one it has not checked.
+  if (status.ok && best != s) {
+    problem.apply_correction((best - s) * direction);
+    s = best;
+    status = problem.evaluate(residual, nullptr);
   }
   direction *= s;
   return status;

@@ -12,10 +12,12 @@
 namespace clinch {
 
 // Called with the full step applied (the problem at x + d); `residual` holds R(x). Evaluates
-// R(x + d) and, while |g(s)| > η_ls·|g(0)|, moves s to the zero of the secant of g through
-// (0, g(0)) and (s, g(s)), kept within [max(f_s·s, s_min), s_max], at most N_ls times. The
-// problem is left at x + s d, `residual` = R there, and `direction` is scaled to s·d (the
-// correction the convergence tests see).
+// R(x + d) and, while |g(s)| > η_ls·|g(0)|, moves s to the zero of the secant of g, at most N_ls
+// times: through (0, g(0)) and (s, g(s)) until a step overshoots (g(s) > 0), then inside the
+// bracket where g changes sign (regula falsi, Illinois variant); s is kept within
+// [max(f_s·s, s_min), s_max]. The problem is left at the evaluated s with the smallest |g|,
+// `residual` = R there, and `direction` is scaled to s·d (the correction the convergence tests
+// see).
 EvalStatus search_line(NonlinearProblem& problem, Eigen::VectorXd& direction,
                        Eigen::VectorXd& residual, const LineSearchControls& controls);
 

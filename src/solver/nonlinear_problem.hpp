@@ -92,6 +92,9 @@ class NonlinearProblem {
   // is non-null.
   virtual void measure(const Eigen::VectorXd& residual, const Eigen::VectorXd* correction,
                        IterationNorms& norms) const = 0;
+  // How much a change of each equation counts as motion in the arc length of a Riks step
+  // (docs/riks.md): 1 for every equation unless the problem knows its fields.
+  virtual void path_weights(Eigen::VectorXd& weights) const { weights.setOnes(size()); }
 };
 
 }  // namespace clinch

@@ -1,11 +1,14 @@
 // A step's procedure (keywords.md §15): its time policy and what an increment means for it.
-// *STATIC (static_step_procedure.hpp) and implicit *DYNAMIC (dynamic_step_procedure.hpp); each
-// further step kind (arc length, frequency) is another implementation. The step driver runs any of them around the
-// same increment attempt, Newton and StepProblem, and never asks which one it has.
+// *STATIC (static_step_procedure.hpp), *STATIC, RIKS (riks_procedure.hpp) and implicit *DYNAMIC
+// (dynamic_step_procedure.hpp); each further step kind (frequency) is another implementation. The
+// step driver runs any of them around the same increment attempt, Newton and StepProblem, and
+// never asks which one it has.
 #pragma once
 
 #include <memory>
+#include <string>
 
+#include "src/linalg/linear_solver.hpp"
 #include "src/solver/step_problem.hpp"
 #include "src/solver/time_stepper.hpp"
 
@@ -38,6 +41,16 @@ class Procedure {
   // Starts the increment on `problem`: its times and conditions, and the predictor this
   // procedure uses from the converged state.
   virtual void begin_increment(StepProblem& problem, const IncrementTimes& times) const = 0;
+  // What Newton solves in this step: the problem and the step's linear solver themselves, or
+  // the system the procedure makes of them (RIKS: bordered by the arc length). Asked once the
+  // step has begun and its solver is chosen; valid until the procedure ends.
+  virtual NonlinearProblem& newton_problem(NonlinearProblem& problem, StepProblem& /*step*/) {
+    return problem;
+  }
+  virtual LinearSolver& newton_solver(LinearSolver& solver) { return solver; }
+  // Why the step ended, when the procedure decides it (a Riks step's stopping criterion), for
+  // the .sta and the log; empty when the step simply reached its period.
+  virtual std::string end_reason() const { return {}; }
 };
 
 // The procedure of `step`: *DYNAMIC (dynamic_step_procedure.hpp) or *STATIC (also when the step

@@ -100,7 +100,7 @@ class Driver {
     changes = 0;
     for (;;) {
       const auto start = std::chrono::steady_clock::now();
-      NewtonReport report = solve_increment(problem_, *solver_, criteria_, options);
+      NewtonReport report = solve_increment(*newton_problem_, *newton_solver_, criteria_, options);
       result_.newton_seconds +=
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       result_.linear_seconds += report.linear_seconds;
@@ -134,6 +134,8 @@ class Driver {
     const std::unique_ptr<Procedure> procedure = procedure_for(step);
     const int step_number = static_cast<int>(s) + 1;
     if (!begin_step(step, *procedure, step_number)) return false;
+    newton_problem_ = &procedure->newton_problem(problem_, step_problem_);
+    newton_solver_ = &procedure->newton_solver(*solver_);
     const std::unique_ptr<TimeStepper> time_stepper = procedure->time_stepper();
     TimeStepper& stepper = *time_stepper;
     Attempted last;
@@ -156,6 +158,9 @@ class Driver {
       proposal = stepper.next(last.outcome);
       result_.cutbacks = cutbacks_before + stepper.cutbacks();
       if (converged && !accept_increment(step_number, stepper, last)) return false;
+    }
+    if (const std::string why = procedure->end_reason(); !why.empty()) {
+      out_.step_ended(step_number, why);
     }
     step_problem_.end_step(procedure->period(), total_time_);
     for (const std::string& line : step_problem_.step_summary()) {
@@ -352,6 +357,9 @@ class Driver {
   const SolverFactory& solvers_;
   std::unique_ptr<LinearSolver> symmetric_solver_, full_solver_;
   LinearSolver* solver_ = nullptr;
+  // What Newton solves in the current step: problem_ and *solver_, or the procedure's system.
+  NonlinearProblem* newton_problem_ = nullptr;
+  LinearSolver* newton_solver_ = nullptr;
   RunOutputs& out_;
   const RunOptions& options_;
   ConvergenceCriteria criteria_;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,13 @@ class StepProblem {
   // `--check-tangent`: the assembled tangent against finite differences at the start of the
   // increment, as a report for the log; the state is left exactly as it was.
   virtual std::string check_tangent(int step, int increment) = 0;
+
+  // ---- a Riks step (docs/riks.md) ----
+  // Sets the step's conditions at the load proportionality factor `lpf` (its ramps at τ = lpf),
+  // leaving the state as it is; end_step then records the conditions where the step ended.
+  virtual void set_load_factor(double lpf) = 0;
+  // The current value of DOF `dof` (1–6) of global node `node`; 0 when the node has no such DOF.
+  virtual double nodal_value(std::int32_t node, int dof) const = 0;
 
   // ---- between solves ----
   virtual void commit() = 0;  // the trial state becomes the converged one

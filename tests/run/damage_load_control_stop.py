@@ -30,8 +30,10 @@ if past:
     pattern = (r"^FAILED: singular system: .*; connector element 1 fully damaged \(d=1\) "
                r"\(step 1, increment \d+, time [0-9.]+\)$")
 else:
-    pattern = (r"^FAILED: .*connector element 1 softening \(d=[0-9.e+-]+\) under load control, "
-               r"limit point passed\? \(step 1, increment \d+, time [0-9.]+\)$")
+    pattern = (r"^FAILED: .*connector element 1 softening \(d=[0-9.e+-]+\) under load control: "
+               r"a limit point, past which no larger load has an equilibrium, at about "
+               r"[0-9.e+-]+ of the step's loads; to go past it, use \*STATIC, RIKS, .* "
+               r"\(step 1, increment \d+, time [0-9.]+\)$")
 if not re.match(pattern, last):
     failures.append(f"status line: {last!r}")
 rows = list(csv.DictReader(open(os.path.join(work, job + ".history.csv"), encoding="utf-8")))

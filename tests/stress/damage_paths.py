@@ -35,12 +35,22 @@ tol = --rtol (default 1e-6) times the connector's peak force.
 
 The report gives, per kind and per drive, paths, how their decks ended (completed or stopped
 cleanly), rows checked, paths that failed completely (deleted), and the mean Newton iterations
-per converged increment (the .log's totals, cut-back attempts included).
+per converged increment (the .log's totals, cut-back attempts included); then the fraction of
+displacement-driven paths whose deck completed, over all decks and over the decks without a path
+that may snap back.
 
 Usage: damage_paths.py CLINCH [--paths N] [--per-deck M] [--seed S] [--work DIR] [--rtol T]
-                       [--min-completed R]
+                       [--min-completed R] [--min-completed-without-snap-back R]
+                       [--riks] [--min-riks-completed R]
 --min-completed: the least fraction of displacement-driven paths (direct, series) whose deck
 completes (load-driven paths may stop: that is the expected clean stop past a limit point).
+--min-completed-without-snap-back: the same over the decks where no series spring is softer than
+its path's steepest softening slope (a snap-back leaves no solution near the last one, and the
+run stops cleanly; the report counts the decks that hold such a path apart).
+--riks: each load-driven deck is run again as a *STATIC, RIKS step (docs/riks.md) with each
+path's largest load as its reference and the LPF up to 1, past the limit points a load-driven
+run stops at; checks 1-4 hold with the applied load LPF times the reference.
+--min-riks-completed: the least fraction of those rerun paths whose deck completes.
 """
 
 import argparse
@@ -138,6 +148,10 @@ class Path:
         stable = rng.random() < 0.9
         self.ratio = (steepest * rng.uniform(1.2, 3.0) if stable else
                       rng.uniform(0.5, 3.0) if drive == "series" else rng.uniform(0.05, 1.0))
+        # A series spring softer than that slope snaps back: past the peak the displacement of c
+        # no longer determines the state, and there is no solution near the last one (the run
+        # stops cleanly). The estimate is the one above (exact for LINEAR softening).
+        self.snap_back = drive == "series" and self.ratio < steepest
         self.radii = [rng.uniform(0.5, 1.5), rng.uniform(0.5, 1.5)]
         self.evolution_potential = rng.random() < 0.5
         self.times = time_grid(rng)
@@ -152,6 +166,10 @@ class Path:
             self.values = walk(rng, n, unit, 0.4)
             if self.kind in TWO_D:
                 self.values_y = walk(rng, n, unit, 0.2 * rng.choice([-1.0, 1.0]))
+
+    def riks_load(self):
+        """The reference load of the Riks rerun: the largest the random walk asks for."""
+        return max(abs(v) for v in self.values)
 
     def behavior_lines(self):
         lines = [f"*CONNECTOR BEHAVIOR, NAME=B{self.j}"]
@@ -227,7 +245,9 @@ class Path:
             lines += amplitude_lines(f"Y{self.j}", self.times, self.values_y)
         return lines
 
-    def step_lines(self):
+    def step_lines(self, riks=False):
+        if self.drive == "load" and riks:
+            return ["*CLOAD", f"{self.b}, 1, {fmt(self.riks_load())}"]
         if self.drive == "load":
             return [f"*CLOAD, AMPLITUDE=A{self.j}", f"{self.b}, 1, 1.0"]
         node = self.c if self.drive == "series" else self.b
@@ -237,17 +257,21 @@ class Path:
         return lines
 
 
-def write_deck(path, paths, control):
+def write_deck(path, paths, control, riks=False):
     lines = ["*HEADING", "Random damage paths (tests/stress/damage_paths.py)"]
     for p in paths:
         lines += p.model_lines()
-    if control[0] == "direct":
+    if riks:
+        # The Riks rerun of a load-driven deck: each path's largest load as the reference, the
+        # LPF up to 1 (or 300 increments), whatever limit points lie on the way (docs/riks.md).
+        lines += ["*STEP, NAME=PATH, INC=300", "*STATIC, RIKS", "0.05, 1., 1e-7, 0.2, 1."]
+    elif control[0] == "direct":
         lines += ["*STEP, NAME=PATH, INC=100000", "*STATIC, DIRECT", f"{control[1]}, 1.0"]
     else:
         lines += ["*STEP, NAME=PATH, INC=100000", "*STATIC", f"{control[1]}, 1.0, 1e-7, {control[2]}"]
     lines += ["*CONTROLS, PARAMETERS=FIELD", "1e-9, , , , 1e-9, 1e-12,"]
     for p in paths:
-        lines += p.step_lines()
+        lines += p.step_lines(riks)
     lines += ["*OUTPUT, HISTORY", "*ELEMENT OUTPUT, ELSET=DAMAGED", "CU, CTF, CDMG, CDIF, CDIM, CDIP"]
     if any(p.drive != "direct" for p in paths):
         lines += ["*ELEMENT OUTPUT, ELSET=OTHER", "CTF1"]
@@ -316,7 +340,8 @@ def check_path(p, rows, rtol):
         if p.drive == "series" and abs(forces[0] - r[f"CTF1@{p.other}"]) > tol:
             problems.append(f"{where}: series forces {forces[0]} and {r[f'CTF1@{p.other}']}")
         if p.drive == "load":
-            applied = interpolate(p.times, p.values, r["step_time"] if r["total_time"] > 0 else 0)
+            applied = (r["LPF"] * p.riks_load() if "LPF" in r else
+                       interpolate(p.times, p.values, r["step_time"] if r["total_time"] > 0 else 0))
             if abs(forces[0] + r[f"CTF1@{p.other}"] - applied) > tol:
                 problems.append(f"{where}: {forces[0]} + {r[f'CTF1@{p.other}']} != load {applied}")
     return problems, failed
@@ -331,6 +356,9 @@ def main():
     ap.add_argument("--work")
     ap.add_argument("--rtol", type=float, default=1e-6)
     ap.add_argument("--min-completed", type=float, default=0.0)
+    ap.add_argument("--min-completed-without-snap-back", type=float, default=0.0)
+    ap.add_argument("--riks", action="store_true")
+    ap.add_argument("--min-riks-completed", type=float, default=0.0)
     args = ap.parse_args()
     rng = random.Random(args.seed)
     work = args.work or tempfile.mkdtemp(prefix="damage-paths-")
@@ -338,6 +366,9 @@ def main():
     stats = {}
     problems = []
     total_increments = total_iterations = 0
+    snap_decks = [0, 0]  # decks holding a path that may snap back, and those that completed
+    smooth = [0, 0]  # displacement-driven paths in the other decks, and those that completed
+    riks = [0, 0]  # load-driven paths rerun with *STATIC, RIKS, and those whose deck completed
     done = 0
     deck_index = 0
     while done < args.paths:
@@ -354,8 +385,15 @@ def main():
         clean = (status == 0 and last == "COMPLETED") or (status == 2 and last.startswith("FAILED:"))
         if not clean:
             problems.append(f"{deck}: exit {status}, last status line {last!r}\n{stderr[-2000:]}")
+        snap = any(p.snap_back for p in paths)
+        if snap:
+            snap_decks[0] += 1
+            snap_decks[1] += status == 0
         for p in paths:
             path_problems, failed = check_path(p, rows, args.rtol)
+            if p.drive != "load" and not snap:
+                smooth[0] += 1
+                smooth[1] += status == 0
             problems += [f"{deck}: {x}" for x in path_problems[:3]]
             for key in (("kind", p.kind), ("drive", p.drive)):
                 s = stats.setdefault(key, {"paths": 0, "completed": 0, "stopped": 0, "rows": 0,
@@ -364,6 +402,18 @@ def main():
                 s["completed" if status == 0 else "stopped"] += 1
                 s["rows"] += len(rows)
                 s["deleted"] += failed
+        if args.riks and drive == "load":
+            riks_deck = os.path.join(work, f"damage_{deck_index:04d}_riks.inp")
+            write_deck(riks_deck, paths, control, riks=True)
+            status, last, _, _, rows, stderr = run_deck(args.clinch, riks_deck, work)
+            if not ((status == 0 and last == "COMPLETED") or
+                    (status == 2 and last.startswith("FAILED:"))):
+                problems.append(f"{riks_deck}: exit {status}, last status line {last!r}\n"
+                                f"{stderr[-2000:]}")
+            for p in paths:
+                problems += [f"{riks_deck}: {x}" for x in check_path(p, rows, args.rtol)[0][:3]]
+            riks[0] += count
+            riks[1] += count * (status == 0)
         done += count
         deck_index += 1
     print(f"{args.paths} damage paths in {deck_index} decks (seed {args.seed}), work dir {work}")
@@ -379,6 +429,13 @@ def main():
     paths_d = sum(s["paths"] for s in displacement)
     rate = sum(s["completed"] for s in displacement) / paths_d if paths_d else 1.0
     print(f"displacement-driven paths whose deck completed: {rate:.3f}")
+    if smooth[0]:
+        print(f"  in decks without a path that may snap back: {smooth[1]}/{smooth[0]} "
+              f"({smooth[1] / smooth[0]:.3f}); decks with one: {snap_decks[1]} of "
+              f"{snap_decks[0]} completed")
+    if riks[0]:
+        print(f"load-driven paths rerun with *STATIC, RIKS whose deck completed: "
+              f"{riks[1]}/{riks[0]} ({riks[1] / riks[0]:.3f})")
     for x in problems[:20]:
         print("FAIL:", x)
     if problems:
@@ -386,6 +443,15 @@ def main():
         return 1
     if rate < args.min_completed:
         print(f"FAIL: completion rate {rate:.3f} below {args.min_completed}")
+        return 1
+    smooth_rate = smooth[1] / smooth[0] if smooth[0] else 1.0
+    if smooth_rate < args.min_completed_without_snap_back:
+        print(f"FAIL: completion rate without snap-back {smooth_rate:.3f} below "
+              f"{args.min_completed_without_snap_back}")
+        return 1
+    riks_rate = riks[1] / riks[0] if riks[0] else 1.0
+    if riks_rate < args.min_riks_completed:
+        print(f"FAIL: Riks completion rate {riks_rate:.3f} below {args.min_riks_completed}")
         return 1
     if not args.work:
         shutil.rmtree(work)

@@ -58,7 +58,8 @@ convergence rate over paths (a path converges when its deck completes) to reach 
 The report gives, per connection type, paths and decks completed, increments, Newton iterations
 (the .log's total, cut-back attempts included) per converged increment, the most equilibrium
 iterations of a converged increment (.sta), cutbacks, and the number of slipping and lift-off
-(applied normal load exactly 0) connector rows checked; then the rate per drive.
+(applied normal load exactly 0) connector rows checked; then the rate per drive, the paths whose
+deck completed without a cutback, and the Newton iterations per increment over all decks.
 
 Without line search (--line-search 0), Newton cycles on load-driven paths: it alternates between
 forward and backward slip (the same residual and correction norms every iteration) when the
@@ -66,14 +67,12 @@ normal force changes within an increment that ends in stick; 40-50% of the load-
 stop. That is why clinch turns a line search on in steps with friction. With --per-deck 1 the
 rate per drive shows it. scripts/stress_friction.sh reports both.
 
-With DIRECT increments (--direct 0.005,0.01,0.0137,0.02 --inclined) every direct- and series-
-driven path completes, one or 50 to a deck; a load-driven path can still stop (1 of 200 with one
-connector per deck, seed 20261203): where the friction has to stick again, Newton's slip tangent
-sends it from one slip side of the narrow stick range (2 F_lim/k wide) to the other, the line
-search's secant lands on either side in turn, and a fixed increment cannot be cut back. In a deck
-of 50 such a connector stops all 50 paths, and so does one whose switches cut the one line-search
-step of the model to about f_s = 0.25 every iteration (the others then converge by 0.75 per
-iteration and run out of iterations): 1 of the 4 decks of seed 20261203 completes.
+With DIRECT increments (--direct 0.005,0.01,0.0137,0.02 --inclined) every path completes, one or
+50 to a deck (seed 20261203: 200 of 200 either way). One line-search step s serves every
+connector of a deck, so the search brackets the zero of the projected residual: a connector whose
+stick band is much narrower than its Newton step gets a step into the band, where a secant
+through s = 0 alone would swing between s = 1 and s = 0.25 and hold the other 49 connectors to a
+quarter step per iteration until the iterations run out (docs/decisions.md, "Line search").
 
 Usage: friction_paths.py CLINCH [--paths N] [--per-deck M] [--seed S] [--work DIR] [--min-rate R]
                          [--max-cutback-fraction F] [--rtol T] [--residual R_n]
@@ -506,6 +505,7 @@ def main():
     worst_slip = 0.0
     modes = {m: [0, 0] for m in MODES}  # paths, paths in completed decks
     remaining, deck_number = args.paths, 0
+    uncut = 0
     while remaining > 0:
         kind = args.kinds[deck_number % len(args.kinds)]
         count = min(args.per_deck, remaining)
@@ -537,6 +537,8 @@ def main():
         s[7] = max(s[7], max(per_inc, default=0))
         if not rows and code in (0, 2):
             problems.append(f"{deck}: no history rows")
+        # Paths converged at the deck's own increments: a completed deck without a cutback.
+        uncut += count if code == 0 and last == "COMPLETED" and cuts == 0 else 0
         for c in connectors:
             modes[c.mode][0] += 1
             modes[c.mode][1] += code == 0 and last == "COMPLETED"
@@ -563,6 +565,11 @@ def main():
           + " paths converged")
     print(f"  convergence rate {rate:.4f}; in slip, largest |CSF - F_lim| = {worst_slip:.3g} "
           f"x tol (tol = {args.rtol:g} x max(mu x peak normal load, F_int, 1))")
+    all_increments = sum(s[4] for s in stats.values())
+    all_iterations = sum(s[5] for s in stats.values())
+    print(f"  {uncut}/{total} paths converged without a cutback; "
+          f"{all_iterations / all_increments if all_increments else 0.0:.2f} Newton iterations "
+          f"per increment over all decks")
     for p in problems:
         print("PROBLEM:", p)
     if not args.work and not problems and rate >= args.min_rate:

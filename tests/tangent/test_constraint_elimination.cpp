@@ -22,7 +22,8 @@ NodeFollower follow(std::int32_t node, std::int32_t reference, DofMask dofs, boo
 }
 
 // Two rigid bodies (references 1 and 3, tie nodes 2 and 4, pin node 5 of body 3) joined by a
-// BUSHING between their tie nodes; a CARTESIAN from the pin node to node 6, which an MPC LINK
+// BUSHING between their tie nodes; body 3 anchored at its tie node 4 in translation 1, as a
+// *BOUNDARY there makes it (anchor_rigid_bodies.cpp), with a load on its reference node's u₁; a CARTESIAN from the pin node to node 6, which an MPC LINK
 // keeps at its distance from node 7; a SPRINGA from 7 to 8, whose DOF 2 an equation ties to
 // 0.5·u₇,₁; an MPC TIE (no arm) makes node 9 follow node 8, with a SPRING1 on node 9.
 std::string scene_deck(bool nlgeom) {
@@ -43,8 +44,18 @@ std::string scene_deck(bool nlgeom) {
 void add_scene_constraints(Model& model) {
   ConstraintModel& c = model.constraints;
   c.followers.push_back(follow(1, 0, 0b111111));
-  c.followers.push_back(follow(3, 2, 0b111111));
-  c.followers.push_back(follow(4, 2, 0b000111));
+  c.followers.push_back(follow(3, 2, 0b111110));
+  c.followers.push_back(follow(4, 2, 0b000110));
+  for (std::int32_t node : {2, 4}) {
+    NodeFollower anchored = follow(node, 2, 0b000001);
+    anchored.anchor = 3;
+    c.followers.push_back(anchored);
+  }
+  // The reference node's u₁ takes part when a *CLOAD names it (active_dofs.cpp).
+  ConcentratedLoad load;
+  load.resolved = {2};
+  load.dof = 1;
+  model.history.steps.front().loads.push_back(load);
   c.followers.push_back(follow(8, 7, 0b111111, false));
   c.links.push_back({5, 6, -1});
   c.equations.push_back({{{7, 2, 1.0}, {6, 1, -0.5}}, true, -1});
@@ -67,6 +78,7 @@ TEST(ConstraintElimination, CondensedTangentMatchesFiniteDifferences) {
     s.conditions().add_load(dofs.equation(1, 2), 40.0);   // a tie node
     s.conditions().add_load(dofs.equation(1, 6), -15.0);  // its rotation
     s.conditions().add_load(dofs.equation(4, 3), 25.0);   // the pin node
+    s.conditions().add_load(dofs.equation(2, 1), 30.0);   // a reference node that follows
     s.start_increment(0.0);
     for (unsigned seed : {7u, 8u}) {
       const Eigen::VectorXd state = random_state(s.size(), seed, 0.15);

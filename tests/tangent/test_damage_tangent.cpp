@@ -483,13 +483,35 @@ TEST(DamageControls, ViscousRegularisationTangent) {
   EXPECT_NEAR(d.output("CDMG", 1), 0.145 * (1 - std::pow(eta / (eta + dt), 2)), 1e-12);
 }
 
-TEST(DamageIncrementControl, AJumpOfDamageAsksForASmallerIncrement) {
+// §7.4 increment control: a MOTION evolution is a function of κ, so the damage at the end of an
+// increment is the same whatever its size, and a jump is kept (the next increment does not grow);
+// an ENERGY evolution integrates its work over the increment (trapezoidal) and VISCOSITY its ODE
+// (backward Euler), so there a jump misses the softening branch and is retried smaller.
+TEST(DamageIncrementControl, AJumpIsRetriedOnlyWhereTheIncrementSizeChangesTheDamage) {
   StackDriver d(kE12, kAxial);
   d.commit(vec(0.05));
-  // 0 → 0.9675 in one increment: retried smaller.
-  EXPECT_LT(d.evaluate(vec(0.28)).dt_ratio, 1.0);
+  // 0 → 0.9675 in one increment: kept, and the next increment does not grow.
+  EXPECT_EQ(d.evaluate(vec(0.28)).dt_ratio, 1.0);
   // 0 → 0.145: no request.
   EXPECT_TRUE(std::isinf(d.evaluate(vec(0.10)).dt_ratio));
+  // The kept jump of decks/verification/cae_damage_direct_jump: EXPONENTIAL (0.2, 5) from
+  // U = 0.08 (not initiated) to 0.2 in one increment, d = 0.974; its tangent, the crossing of
+  // initiation included, against central differences.
+  StackDriver x(kAxialElastic + kForceInitiation +
+                    "*CONNECTOR DAMAGE EVOLUTION, TYPE=MOTION, SOFTENING=EXPONENTIAL\n0.2, 5.\n",
+                kAxial);
+  x.commit(vec(0.08));
+  EXPECT_EQ(x.evaluate(vec(0.2)).dt_ratio, 1.0);
+  x.expect_fd_tangent(vec(0.2), 0.09, kAxial);
+  // ENERGY, G = 10: W = 0.155 (90 + 400 e^(−W/10)) ≈ 21.2 from 0.09 to 0.4, d ≈ 0.88: retried.
+  StackDriver e(
+      kAxialElastic + kForceInitiation + "*CONNECTOR DAMAGE EVOLUTION, TYPE=ENERGY\n10.\n", kAxial);
+  e.commit(vec(0.05));
+  EXPECT_LT(e.evaluate(vec(0.4)).dt_ratio, 1.0);
+  // E12 with VISCOSITY η = 1e-3 (Δt = 1): d_v ≈ 0.9665 in one increment: retried.
+  StackDriver v(kE12, kAxial, DamageControls{true, 1.0, 1e-3});
+  v.commit(vec(0.05));
+  EXPECT_LT(v.evaluate(vec(0.28)).dt_ratio, 1.0);
 }
 
 }  // namespace

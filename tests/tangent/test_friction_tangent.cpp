@@ -193,6 +193,27 @@ TEST(FrictionTangent, SlotAtZeroAndNearZeroContactForce) {
   EXPECT_NEAR(slip.out.force_tangent(0, 1), -0.3, 1e-12);
 }
 
+// SLOT on CONN2D2 (components 1, 2, 6; J = {1}, F_N = |f2| from the multiplier of 2, §2.3) in the
+// states of the verification case cae_friction_slot_series at its increment 39, where the normal
+// force changes sign inside the increment: slipping forward at N = −7.7 (committed), then the
+// states a Newton iteration and its line search pass through as the multiplier moves to +14.3
+// (μ = 0.3, k = 1e4): sticking at the full step, slipping forward with N of either sign, and
+// slipping backward; ∂f1/∂λ2 = μ·sgn(f1)·sgn(λ2) in slip (§4.2).
+TEST(FrictionTangent, Conn2d2SlotWhileTheNormalForceChangesSign) {
+  constexpr ComponentMask available = 0b100011, constrained = 0b000010;
+  FrictionDriver d(kSlot, available, constrained, Vector6::Zero());
+  d.commit(vec(0.01), vec(0, -7.7));  // F_lim = 2.31: u_s = 0.01 − 2.31e-4
+  const Vector6 forward = vec(0.0101), backward = vec(0.0097);  // f_tr = 3.31 and −0.69
+  d.expect_fd_tangent(forward, vec(0, 14.3), kStick, false);    // F_lim = 4.29: sticks
+  d.expect_fd_tangent(forward, vec(0, 5.0), kStick, true);      // F_lim = 1.5: slips
+  d.expect_fd_tangent(forward, vec(0, -5.0), kStick, true);
+  d.expect_fd_tangent(backward, vec(0, 1.0), kStick, true);  // F_lim = 0.3: slips back
+  EXPECT_NEAR(d.evaluate(forward, vec(0, 5.0)).out.force_tangent(0, 1), 0.3, 1e-12);
+  EXPECT_NEAR(d.evaluate(forward, vec(0, -5.0)).out.force_tangent(0, 1), -0.3, 1e-12);
+  EXPECT_NEAR(d.evaluate(backward, vec(0, 1.0)).out.force_tangent(0, 1), -0.3, 1e-12);
+  EXPECT_NEAR(d.evaluate(backward, vec(0, 1.0)).out.force[0], -0.3, 1e-12);
+}
+
 // The same through the closest-point return of a coupled potential (CONTACT FORCE from a
 // derived component of a multiplier, §2.1 form 3): no capacity at F_N = 0, and at F_N = 1e-6,
 // whose capacity 2e-7 is 1e-9 of the trial force, the return still converges (its residuals

@@ -1,5 +1,6 @@
 // Newton on a problem of one unknown, for the tests of Newton's own strategies (line search,
-// cycles): residual and correction tolerances of 1e-12 against q̄ = 1, a dense solver, and room
+// cycles): residual and correction tolerances of 1e-12 against q̄ = 1 (ε_l too, so that the
+// linear-increment test does not accept a residual of 1e-8), a dense solver, and room
 // for 30 iterations without the divergence check, so that only the strategy decides.
 #pragma once
 
@@ -33,6 +34,7 @@ inline NewtonReport solve_one_unknown(NonlinearProblem& p, NewtonOptions options
   Controls controls;
   controls.translation.residual = 1e-12;
   controls.translation.correction = 1e-12;
+  controls.translation.linear_residual = 1e-12;
   ConvergenceCriteria criteria(controls);
   auto solver = make_linear_solver(SolverChoice::Dense, true, false);
   std::string message;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include <gtest/gtest.h>
@@ -94,6 +95,47 @@ TEST(RigidBodies, TwoDimensionalBodiesUseDofsOneTwoSix) {
   EXPECT_EQ(f[1].second, DofMask{0x23});
   EXPECT_EQ(f[2].second, DofMask{0x23});
   EXPECT_EQ(f[3].second, DofMask{0x03});
+}
+
+// An ENCASTRE on tie node 1 (docs/constraints.md "Conditions on a body's nodes"): the body is
+// anchored at node 1 in its translations (node 1 keeps them, the other nodes and the reference
+// node 10 follow node 1 in them), and the rotations move to the reference node.
+TEST(RigidBodies, AConditionOnATieNodeAnchorsTheBodyThere) {
+  auto deck = read(std::string(kCube) + "*RIGID BODY, REF NODE=10, ELSET=BLOCK\n"
+                   "*STEP\n*STATIC\n*BOUNDARY\n1, ENCASTRE\n*END STEP\n");
+  EXPECT_TRUE(deck->sink.diagnostics().empty()) << deck->dump();
+  // (node, reference, anchor) → DOFs, by label (anchor 0: none).
+  std::map<std::tuple<std::int32_t, std::int32_t, std::int32_t>, DofMask> follows;
+  for (const NodeFollower& f : deck->model.constraints.followers) {
+    follows[{label(*deck, f.node), label(*deck, f.reference),
+             f.anchor < 0 ? 0 : label(*deck, f.anchor)}] |= f.dofs;
+  }
+  EXPECT_EQ(follows.size(), 1u + 1 + 2 * 7);
+  EXPECT_EQ((follows[{1, 10, 0}]), DofMask{0x38});  // node 1 keeps its translations
+  EXPECT_EQ((follows[{10, 10, 1}]), DofMask{0x07});
+  for (std::int32_t n : {2, 3, 4, 5, 6, 7, 8}) {
+    EXPECT_EQ((follows[{n, 10, 0}]), DofMask{0x38}) << n;
+    EXPECT_EQ((follows[{n, 10, 1}]), DofMask{0x07}) << n;
+  }
+  // The line is split at its own location: translations at node 1, rotations at node 10.
+  const auto& boundaries = deck->model.history.steps.at(0).boundaries;
+  std::map<std::int32_t, DofMask> prescribed;
+  for (const BoundaryCondition& bc : boundaries) {
+    EXPECT_EQ(bc.loc.line, boundaries.front().loc.line);
+    for (std::int32_t n : bc.resolved) prescribed[label(*deck, n)] |= bc.dofs;
+  }
+  EXPECT_EQ(prescribed, (std::map<std::int32_t, DofMask>{{1, 0x07}, {10, 0x38}}));
+}
+
+// A translation prescribed at two nodes of a body, or at its reference node and another, would
+// fix the body's rotation: no anchoring, and E0523 at the second node's line.
+TEST(RigidBodies, ATranslationPrescribedAtTwoNodesOfABodyIsRefused) {
+  for (const char* second : {"2, 1, 1\n", "10, 1, 1\n"}) {
+    auto deck = read(std::string(kCube) + "*RIGID BODY, REF NODE=10, ELSET=BLOCK\n"
+                     "*BOUNDARY\n1, 1, 1\n" + second + kStep);
+    for (const NodeFollower& f : deck->model.constraints.followers) EXPECT_LT(f.anchor, 0);
+    EXPECT_FALSE(deck->with(DiagCode::dependent_dof_prescribed).empty()) << deck->dump();
+  }
 }
 
 TEST(RigidBodies, CalculixRotNodeCarriesTheRotations) {

@@ -36,6 +36,8 @@ class IncrementRecorder final : public StepProblem {
   void use_storage(bool) override {}
   ProcedureNeeds procedure_needs() const override { return {}; }
   std::string check_tangent(int, int) override { return {}; }
+  void set_load_factor(double) override {}
+  double nodal_value(std::int32_t, int) const override { return 0.0; }
   void commit() override {}
   void revert() override {}
   bool update_active_set() override { return false; }

@@ -39,32 +39,50 @@ def turn(applied):
     return 0.5 * (lo + hi)
 
 
-names = ["CU1@1", "CTF1@1"]
-names += [f"{v}{i}@{n}" for n in (1, 2, 3, 4) for v in ("U", "UR", "RF") for i in (1, 2, 3)
-          if not (v == "UR" and n in (4,))]
-rows = []
-for inc, t in enumerate(TIMES):
-    theta = turn(M * t) if t > 0 else 0.0
-    x2, d, length, force, _ = connector(theta)
+def golden(nodes_at):
+    """Column names and rows over TIMES; nodes_at(theta, reaction) gives each node's
+    (U, UR or None, RF) at the lever's angle, `reaction` = F d/l being what the pivot holds."""
+    names = ["CU1@1", "CTF1@1"]
+    names += [f"{v}{i}@{n}" for n in (1, 2, 3, 4) for v in ("U", "UR", "RF") for i in (1, 2, 3)
+              if not (v == "UR" and n in (4,))]
+    rows = []
+    for inc, t in enumerate(TIMES):
+        theta = turn(M * t) if t > 0 else 0.0
+        _, d, length, force, _ = connector(theta)
+        by_node = nodes_at(theta, g.scale(force / length, d))
+        values = [length - H, force]
+        for n in (1, 2, 3, 4):
+            u, ur, rf = by_node[n]
+            values += u
+            if ur is not None:
+                values += ur
+            values += rf
+        rows.append((1, inc, t, t, values))
+    return names, rows
+
+
+def turned(x, theta):
+    """(R - I) x for the rotation by theta about z."""
     c, s = math.cos(theta), math.sin(theta)
-    u3 = [c * X3[0] - s * X3[1] - X3[0], s * X3[0] + c * X3[1] - X3[1], 0.0]
-    reaction = g.scale(force / length, d)  # what holds the reference node: F d/l
-    by_node = {
-        1: ([0.0] * 3, [0.0, 0.0, theta], reaction),
-        2: ([L * (c - 1), L * s, 0.0], [0.0, 0.0, theta], [0.0] * 3),
-        3: (u3, [0.0, 0.0, theta], [0.0] * 3),
-        4: ([0.0] * 3, None, g.scale(-1.0, reaction)),
-    }
-    values = [length - H, force]
-    for n in (1, 2, 3, 4):
-        u, ur, rf = by_node[n]
-        values += u
-        if ur is not None:
-            values += ur
-        values += rf
-    rows.append((1, inc, t, t, values))
-g.write_golden(__file__, [
-    "rigid_lever_nlgeom: lever of arm L = 1.5 turning about z by theta, AXIAL k = 1000 from tie",
-    "node 2 to node 4 at (L, -1); M = 1200 t = F L (H cos theta + L sin theta)/l with F = k (l - 1),",
-    "l = |x2 - x4|, solved by bisection; U of tie nodes = (R - I)(X - X_ref); RF@1 = F d/l",
-], names, rows)
+    return [c * x[0] - s * x[1] - x[0], s * x[0] + c * x[1] - x[1], 0.0]
+
+
+def main():
+    def nodes_at(theta, reaction):
+        return {
+            1: ([0.0] * 3, [0.0, 0.0, theta], reaction),
+            2: (turned([L, 0.0, 0.0], theta), [0.0, 0.0, theta], [0.0] * 3),
+            3: (turned(X3, theta), [0.0, 0.0, theta], [0.0] * 3),
+            4: ([0.0] * 3, None, g.scale(-1.0, reaction)),
+        }
+
+    names, rows = golden(nodes_at)
+    g.write_golden(__file__, [
+        "rigid_lever_nlgeom: lever of arm L = 1.5 turning about z by theta, AXIAL k = 1000 from tie",
+        "node 2 to node 4 at (L, -1); M = 1200 t = F L (H cos theta + L sin theta)/l with F = k (l - 1),",
+        "l = |x2 - x4|, solved by bisection; U of tie nodes = (R - I)(X - X_ref); RF@1 = F d/l",
+    ], names, rows)
+
+
+if __name__ == "__main__":
+    main()

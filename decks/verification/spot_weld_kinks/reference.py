@@ -11,7 +11,6 @@ subdifferential (the unit ball, or [0, 1] for the Macaulay term) and that every 
 discrete equations of §6.4 holds to 1e-12, and it asserts that each element spends plastic
 increments on its kink.
 """
-import importlib.util
 import os
 import sys
 
@@ -21,10 +20,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, ".."))
 import golden_lib as g  # noqa: E402
 
-_spec = importlib.util.spec_from_file_location(
-    "spot_weld_paths_reference", os.path.join(HERE, "..", "spot_weld_paths", "reference.py"))
-weld = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(weld)
+weld = g.case_reference("spot_weld_paths")
 
 # Targets of node b (u1, u2, u3, ur1, ur2, ur3) at the end of each step; unlisted dofs keep
 # their value. Nodes b are 2, 4, 6.

@@ -33,7 +33,9 @@ class DamageBehavior final : public Behavior {
   DamageBehavior(std::vector<DamageMechanism> mechanisms, const Matrix6& compliance,
                  const DamageControls& controls)
       : mechanisms_(std::move(mechanisms)), compliance_(compliance), controls_(controls) {
+    increment_sensitive_ = controls_.viscosity > 0;
     for (const DamageMechanism& m : mechanisms_) {
+      increment_sensitive_ = increment_sensitive_ || m.path_dependent();
       affected_ |= m.affected();
       force_criterion_ =
           force_criterion_ || m.criterion().criterion() == DamageInitiation::Criterion::Force;
@@ -156,7 +158,7 @@ class DamageBehavior final : public Behavior {
     h[deleted_] = failed && controls_.element_deletion ? 1.0 : 0.0;
     Eigen::Map<Vector6>(h + force_) = feff;
     record_criteria(h);
-    if (growth > kDamageJump) {
+    if (growth > kDamageJump && increment_sensitive_) {
       out.suggested_dt_ratio = kDamageTarget / growth;
       out.message = fmt::format("damage grew by {:.3g} in one increment (at most {} allowed)",
                                 growth, kDamageJump);
@@ -198,6 +200,7 @@ class DamageBehavior final : public Behavior {
   }
 
   std::vector<DamageMechanism> mechanisms_;
+  bool increment_sensitive_ = false;
   Matrix6 compliance_;
   DamageControls controls_;
   ComponentMask affected_ = 0;

@@ -52,6 +52,9 @@ class DamageMechanism {
                         std::span<double> history) const;
 
   ComponentMask affected() const { return affected_; }
+  // Its damage depends on the path within an increment: the work of an ENERGY evolution is
+  // integrated over the increment (trapezoidal), the other laws are functions of κ (§7.2).
+  bool path_dependent() const { return law_ && law_->energy_based(); }
   DamageEvolution::Degradation degradation() const { return degradation_; }
   const DamageInitiationCriterion& criterion() const { return criterion_; }
 

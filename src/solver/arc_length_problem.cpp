@@ -1,0 +1,130 @@
+#include "src/solver/arc_length_problem.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace clinch {
+
+ArcLengthProblem::ArcLengthProblem(NonlinearProblem& problem, StepProblem& step)
+    : problem_(problem), step_(step) {}
+
+void ArcLengthProblem::begin_step() {
+  problem_.path_weights(weights_);
+  converged_lpf_ = delta_lpf_ = previous_lpf_ = 0.0;
+  delta_q_.setZero(problem_.size());
+  previous_q_.setZero(problem_.size());
+  scale_squared_ = 0.0;
+  has_previous_ = false;
+}
+
+void ArcLengthProblem::begin_increment(double arc) {
+  arc_ = arc;
+  delta_lpf_ = 0.0;
+  delta_q_.setZero(problem_.size());
+  predicting_ = true;
+}
+
+void ArcLengthProblem::commit() {
+  previous_q_ = delta_q_;
+  previous_lpf_ = delta_lpf_;
+  converged_lpf_ += delta_lpf_;
+  delta_lpf_ = 0.0;
+  delta_q_.setZero();
+  has_previous_ = true;
+}
+
+double ArcLengthProblem::scaled_dot(const Eigen::VectorXd& x, const Eigen::VectorXd& y) const {
+  return x.cwiseProduct(weights_).dot(y) / scale_squared_;
+}
+
+double ArcLengthProblem::constraint() const {
+  if (scale_squared_ == 0.0) return 0.0;  // before the first predictor: nothing to measure
+  return 0.5 * (scaled_dot(delta_q_, delta_q_) + delta_lpf_ * delta_lpf_) - arc_ * arc_;
+}
+
+EvalStatus ArcLengthProblem::evaluate(Eigen::VectorXd& residual, SparseMatrix* tangent) {
+  // r is linear in λ (the step's values are ramps in λ), so its rate is the difference of two
+  // residuals one unit apart at the same state; the second evaluation leaves the conditions at λ.
+  step_.set_load_factor(load_factor() + 1.0);
+  EvalStatus status = problem_.evaluate(shifted_residual_, nullptr);
+  step_.set_load_factor(load_factor());
+  if (!status.ok) return status;
+  status = problem_.evaluate(residual_, tangent);
+  if (!status.ok) return status;
+  load_rate_ = shifted_residual_ - residual_;
+  const int n = problem_.size();
+  residual.resize(n + 1);
+  residual.head(n) = residual_;
+  residual[n] = constraint();
+  return status;
+}
+
+void ArcLengthProblem::apply_correction(const Eigen::VectorXd& correction) {
+  const int n = problem_.size();
+  const Eigen::VectorXd dq = correction.head(n);
+  problem_.apply_correction(dq);
+  delta_q_ += dq;
+  delta_lpf_ += correction[n];
+  predicting_ = false;
+}
+
+void ArcLengthProblem::measure(const Eigen::VectorXd& residual, const Eigen::VectorXd* correction,
+                               IterationNorms& norms) const {
+  const int n = problem_.size();
+  const Eigen::VectorXd r = residual.head(n);
+  if (correction) {
+    const Eigen::VectorXd c = correction->head(n);
+    problem_.measure(r, &c, norms);
+  } else {
+    problem_.measure(r, nullptr, norms);
+  }
+  // The point may sit off the sphere by 1e-6 of its radius squared: every point that satisfies
+  // equilibrium lies on the path, and the constraint only chooses which.
+  if (arc_ > 0) {
+    norms.constraint_violation =
+        std::max(norms.constraint_violation, std::abs(residual[n]) / (1e-6 * arc_ * arc_));
+  }
+}
+
+bool ArcLengthProblem::correction(const Eigen::VectorXd& rhs, const Eigen::VectorXd& a,
+                                  const Eigen::VectorXd& v, Eigen::VectorXd& out) {
+  const int n = problem_.size();
+  out.resize(n + 1);
+  double dlpf = 0.0;
+  if (predicting_) {
+    // ū: the weighted size of the response to a unit λ at the step's first predictor.
+    if (scale_squared_ == 0.0) {
+      const double size = v.cwiseProduct(weights_).dot(v);
+      scale_squared_ = size > 0 ? size : 1.0;
+    }
+    // The root that continues the path. Later increments go on in the direction of the last
+    // converged one (a secant predictor): at a damaged state the tangent cannot tell loading
+    // from unloading, and the elastic unloading branch is an equilibrium path too. The first
+    // increment of a step goes along the tangent (v, 1), with λ growing. Either is scaled to
+    // the length Δl.
+    if (has_previous_) {
+      const double previous =
+          std::sqrt(0.5 * (scaled_dot(previous_q_, previous_q_) + previous_lpf_ * previous_lpf_));
+      if (previous > 0) {
+        const double scale = arc_ / previous;
+        out.head(n) = a + scale * previous_q_;
+        out[n] = scale * previous_lpf_;
+        return true;
+      }
+    }
+    dlpf = arc_ / std::sqrt(0.5 * (scaled_dot(v, v) + 1.0));
+  } else {
+    // The linearised constraint: ∂g/∂q = W Δq / ū², ∂g/∂λ = Δλ.
+    const double along = scaled_dot(delta_q_, v) + delta_lpf_;
+    const double scale = std::abs(scaled_dot(delta_q_, delta_q_)) + delta_lpf_ * delta_lpf_;
+    if (!(std::abs(along) > 1e-12 * std::sqrt(scale) * std::sqrt(0.5 * (scaled_dot(v, v) + 1)))) {
+      return false;
+    }
+    dlpf = (rhs[n] - scaled_dot(delta_q_, a)) / along;
+  }
+  out.head(n) = a + dlpf * v;
+  out[n] = dlpf;
+  return true;
+}
+
+}  // namespace clinch

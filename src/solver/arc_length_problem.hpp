@@ -1,0 +1,80 @@
+// The system Newton solves in an increment of a Riks step (docs/riks.md): the problem's
+// equilibrium residual r(q, λ) at the load proportionality factor λ (the step's values at
+// P₀ + λ(P_ref − P₀)), bordered by the arc-length constraint of the increment
+//   g(Δq, Δλ) = ½(‖Δq‖²_w / ū² + Δλ²) − Δl² = 0,
+// a sphere of radius Δl in the scaled load-displacement space: Δq and Δλ are the changes since
+// the converged state, w the problem's path weights (translations, rotations times L̄, no
+// multipliers) and ū the weighted size of the response to a unit λ at the start of the step, so
+// that a linear response covers Δλ = Δl (the manual's Δλ_in = Δl_in / l_period).
+//
+// The unknowns are (q, λ): size() is one more than the problem's, and the last entry of residuals
+// and corrections is g and δλ. The tangent Newton assembles is the problem's K; the border
+// (∂r/∂λ, ∂g/∂q, ∂g/∂λ) stays here and BorderedSolver (bordered_solver.hpp) eliminates it:
+//   δq = a + δλ v,  K a = −r,  K v = −∂r/∂λ,  δλ = (−g − ∂g/∂q·a) / (∂g/∂q·v + ∂g/∂λ).
+// The first correction of an increment is the predictor along the tangent v (Newton does not
+// test the state before it); the corrections after it solve the consistently linearised
+// constraint.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "src/solver/nonlinear_problem.hpp"
+#include "src/solver/step_problem.hpp"
+
+namespace clinch {
+
+class ArcLengthProblem final : public NonlinearProblem {
+ public:
+  ArcLengthProblem(NonlinearProblem& problem, StepProblem& step);
+
+  // ---- the step and its increments ----
+  // Starts the step at λ = 0 (the step's values at P₀).
+  void begin_step();
+  // Starts an increment of arc length `arc` from the converged state.
+  void begin_increment(double arc);
+  // The converged increment becomes the start of the next one.
+  void commit();
+  double load_factor() const { return converged_lpf_ + delta_lpf_; }
+  // Before the increment's first correction: the next one is the predictor.
+  bool predicting() const { return predicting_; }
+
+  // ---- NonlinearProblem ----
+  int size() const override { return problem_.size() + 1; }
+  const SparseMatrix& pattern() const override { return problem_.pattern(); }
+  EvalStatus evaluate(Eigen::VectorXd& residual, SparseMatrix* tangent) override;
+  void apply_correction(const Eigen::VectorXd& correction) override;
+  bool moving_prescribed() const override { return predicting_; }
+  void measure(const Eigen::VectorXd& residual, const Eigen::VectorXd* correction,
+               IterationNorms& norms) const override;
+
+  // ---- the border, for BorderedSolver ----
+  // ∂r/∂λ at the last evaluation (exact: r is linear in λ).
+  const Eigen::VectorXd& load_rate() const { return load_rate_; }
+  // The border's last row ∂g/∂(q, λ): W Δq / ū² in the problem's columns, Δλ in the last.
+  double constraint_gradient(int column) const {
+    return column < problem_.size() ? weights_[column] * delta_q_[column] / scale_squared_
+                                    : delta_lpf_;
+  }
+  // The correction (δq, δλ) from the solutions a = K⁻¹(head of `rhs`) and v = −K⁻¹ ∂r/∂λ; false
+  // when the bordered system is singular (the constraint does not cut the tangent).
+  // The predictor also fixes ū at the step's first increment.
+  bool correction(const Eigen::VectorXd& rhs, const Eigen::VectorXd& a, const Eigen::VectorXd& v,
+                  Eigen::VectorXd& out);
+
+ private:
+  double scaled_dot(const Eigen::VectorXd& x, const Eigen::VectorXd& y) const;
+  double constraint() const;
+
+  NonlinearProblem& problem_;
+  StepProblem& step_;
+  Eigen::VectorXd weights_;
+  Eigen::VectorXd residual_, shifted_residual_, load_rate_;
+  Eigen::VectorXd delta_q_, previous_q_;  // this increment's Δq; the last converged one's
+  double converged_lpf_ = 0.0, delta_lpf_ = 0.0, previous_lpf_ = 0.0;
+  double arc_ = 0.0;
+  double scale_squared_ = 0.0;  // ū², 0 until the first predictor sets it
+  bool predicting_ = false;
+  bool has_previous_ = false;
+};
+
+}  // namespace clinch
