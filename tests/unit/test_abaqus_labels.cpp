@@ -60,7 +60,9 @@ TEST(AbaqusLabels, MeaningsAndQuantities) {
   EXPECT_EQ(column_quantity("U3@3"), Quantity::Displacement);
   EXPECT_EQ(column_quantity("CDIF@1"), Quantity::Ratio);
   EXPECT_EQ(column_quantity("CSLST1@1"), Quantity::Status);
-  EXPECT_EQ(column_quantity("V@1"), Quantity::Other);
+  EXPECT_EQ(column_quantity("V@1"), Quantity::Rate);
+  EXPECT_EQ(column_quantity("VR2@1"), Quantity::Rate);
+  EXPECT_EQ(column_quantity("XYZ@1"), Quantity::Other);
   const ColumnDescription d = describe_column("CRM1@Part-1-1.7");
   EXPECT_EQ(d.variable, "CRF");
   EXPECT_EQ(d.component, 4);

@@ -337,8 +337,11 @@ TEST(OutputVariables, NodalNames) {
   // Identifiers Abaqus and CalculiX define and clinch does not are known, not supported (E0904).
   EXPECT_EQ(parse_output_identifier("NT", OutputContext::NodePrint).status,
             IdentifierStatus::Unsupported);
-  EXPECT_EQ(parse_output_identifier("V2", OutputContext::NodeOutput).status,
+  EXPECT_EQ(parse_output_identifier("COORD", OutputContext::NodeOutput).status,
             IdentifierStatus::Unsupported);
+  auto vr = parse_output_identifier("VR3", OutputContext::NodeOutput);
+  EXPECT_EQ(vr.id.variable, "V");
+  EXPECT_EQ(vr.id.components, 1u << 5);
   EXPECT_EQ(parse_output_identifier("XYZ", OutputContext::NodeOutput).status,
             IdentifierStatus::Unknown);
 }
