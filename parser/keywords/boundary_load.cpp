@@ -5,7 +5,9 @@
 #include <fmt/format.h>
 
 #include <cctype>
+#include <cmath>
 
+#include "base/fold_name.hpp"
 #include "parser/keywords/history_keywords.hpp"
 
 namespace clinch {
@@ -49,6 +51,10 @@ class ConditionHandler : public KeywordHandler {
         skip_ = report_unsupported_params(ctx, {"USER"});
         break;
       case ConditionKind::ConnectorLoad:
+        break;
+      case ConditionKind::Gravity:
+        skip_ = report_unsupported_params(ctx, {"FOLLOWER", "USER", "LOAD CASE", "ORIENTATION",
+                                                "REF NODE", "CONSTANT RESULTANT", "SUBMODEL"});
         break;
     }
     const std::string_view type = params.enum_value("TYPE");
@@ -129,6 +135,9 @@ class ConditionHandler : public KeywordHandler {
       case ConditionKind::Motion:
       case ConditionKind::ConnectorLoad:
         connector_line(ctx, line, fields);
+        break;
+      case ConditionKind::Gravity:
+        gravity_line(ctx, line, fields);
         break;
     }
   }
@@ -251,6 +260,53 @@ class ConditionHandler : public KeywordHandler {
     current_step(ctx).loads.push_back(std::move(load));
   }
 
+  // `element or set, GRAV, g, d1, d2, d3` (docs/dynamics.md "Gravity"): a blank first field is
+  // the whole model; the direction is normalised. Other load types act on surfaces and volumes
+  // that connector models do not have.
+  void gravity_line(BlockContext& ctx, const DataLine& line, std::vector<Field>& fields) {
+    ctx.check_field_count(line, fields, 6, "element or element set, GRAV, magnitude, direction");
+    GravityLoad load;
+    load.block = block_;
+    load.loc = line.loc;
+    if (!fields.empty() && !fields[0].empty()) {
+      load.target = ctx.target(fields[0], "element");
+      if (!load.target) return;
+    }
+    if (fields.size() < 2 || fields[1].empty()) {
+      ctx.missing(fields.size() < 2 ? BlockContext::end_of_line(line) : fields[1].loc,
+                  "load type");
+      return;
+    }
+    if (fold_name(fields[1].text) != "GRAV") {
+      ctx.report(DiagCode::unsupported_option, fields[1],
+                 fmt::format("*DLOAD type {} is not supported by clinch (only GRAV: connector "
+                             "models have no surfaces or volumes to load)",
+                             fields[1].text));
+      return;
+    }
+    SourceLoc magnitude_loc;
+    auto magnitude = read_magnitude(ctx, fields, 2, magnitude_loc);
+    if (!magnitude) return;
+    double length = 0.0;
+    for (std::size_t i = 0; i < 3; ++i) {
+      if (3 + i >= fields.size() || fields[3 + i].empty()) continue;
+      auto value = ctx.real(fields[3 + i], "the gravity direction");
+      if (!value) return;
+      load.direction[i] = *value;
+      length += *value * *value;
+    }
+    load.direction_loc = fields.size() > 3 ? fields[3].loc : BlockContext::end_of_line(line);
+    if (length == 0.0) {
+      ctx.report(DiagCode::invalid_value, load.direction_loc,
+                 "the gravity direction (fields 4-6) is zero; give the components of the "
+                 "direction in which gravity acts");
+      return;
+    }
+    for (double& d : load.direction) d /= std::sqrt(length);
+    load.magnitude = *magnitude;
+    current_step(ctx).gravity.push_back(std::move(load));
+  }
+
   void connector_line(BlockContext& ctx, const DataLine& line, std::vector<Field>& fields) {
     ctx.check_field_count(line, fields, 3, "element or element set, component, magnitude");
     auto target = read_target(ctx, line, fields, true);
@@ -349,6 +405,21 @@ std::vector<KeywordSpec> condition_keyword_specs() {
   load.params = {op, amplitude};
   load.make_handler = &make_condition<ConditionKind::ConnectorLoad>;
   specs.push_back(std::move(load));
+
+  KeywordSpec dload;
+  dload.name = "DLOAD";
+  dload.level = KeywordLevel::History;
+  dload.params = {op,
+                  amplitude,
+                  unsupported_param("FOLLOWER"),
+                  unsupported_param("USER"),
+                  unsupported_param("LOAD CASE"),
+                  unsupported_param("ORIENTATION"),
+                  unsupported_param("REF NODE"),
+                  unsupported_param("CONSTANT RESULTANT"),
+                  unsupported_param("SUBMODEL")};
+  dload.make_handler = &make_condition<ConditionKind::Gravity>;
+  specs.push_back(std::move(dload));
   return specs;
 }
 

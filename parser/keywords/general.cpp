@@ -70,14 +70,13 @@ std::vector<KeywordSpec> general_keyword_specs() {
   specs.push_back(no_effect("EL FILE", KeywordLevel::History));
   specs.push_back(no_effect("ENERGY PRINT", KeywordLevel::History));
   specs.push_back(no_effect("ENERGY FILE", KeywordLevel::History));
-  specs.push_back(no_effect("ENERGY OUTPUT", KeywordLevel::History));
   specs.push_back(no_effect("CONTACT FILE", KeywordLevel::History));
 
   // Known Abaqus/CalculiX keywords that change results and that clinch v1 does not implement
   // (input-syntax.md §9, keywords.md §1).
   for (std::string_view name :
        {"BEAM GENERAL SECTION",
-        "TRANSFORM", "SYSTEM", "GAP", "DLOAD", "DSLOAD",
+        "TRANSFORM", "SYSTEM", "GAP", "DSLOAD",
         "TEMPERATURE", "TIME POINTS", "NO ANALYSIS", "PARAMETER DEPENDENCE",
         "PARAMETER TABLE", "PARAMETER TABLE TYPE", "PARAMETER SHAPE VARIATION",
         "CONNECTOR UNIAXIAL BEHAVIOR", "CHANGE FRICTION", "SURFACE INTERACTION",

@@ -31,21 +31,15 @@ void read_identifiers(BlockContext& ctx, const std::vector<Field>& fields, Outpu
         ctx.report(DiagCode::output_unsupported_variable, field,
                    fmt::format("output variable '{}' is not supported by clinch", field.text));
         break;
-      case IdentifierStatus::WrongKind: {
-        const bool nodal_keyword =
-            context == OutputContext::NodeOutput || context == OutputContext::NodePrint;
+      case IdentifierStatus::WrongKind:
         ctx.report(DiagCode::output_unknown_variable, field,
                    fmt::format("unknown output variable '{}' for {}", field.text,
                                ctx.keyword_display()))
-            .notes.push_back(
-                {field.loc,
-                 fmt::format(
-                     "'{}' is {} output variable; request it with {}", field.text, parsed.kind_hint,
-                     nodal_keyword
-                         ? (context == OutputContext::NodePrint ? "*EL PRINT" : "*ELEMENT OUTPUT")
-                         : (context == OutputContext::ElPrint ? "*NODE PRINT" : "*NODE OUTPUT"))});
+            .notes.push_back({field.loc, fmt::format("'{}' is {} output variable; request it "
+                                                     "with {}",
+                                                     field.text, parsed.kind_hint,
+                                                     parsed.request_with)});
         break;
-      }
       case IdentifierStatus::Unknown: {
         Diagnostic& d = ctx.report(DiagCode::output_unknown_variable, field,
                                    fmt::format("unknown output variable '{}'", field.text));
@@ -266,6 +260,57 @@ class OutputBlockHandler : public KeywordHandler {
   bool field_ = false;
 };
 
+// ---- *ENERGY OUTPUT ---------------------------------------------------------------------------
+
+// Whole-model energies (docs/dynamics.md "Energies"): the listed ones, or with VARIABLE= or no
+// data line every energy clinch writes.
+class EnergyOutputHandler : public KeywordHandler {
+ public:
+  void begin(BlockContext& ctx) override {
+    Step& step = current_step(ctx);
+    if (step.outputs.empty()) {
+      ctx.report(
+          DiagCode::output_without_output_keyword, ctx.keyword().loc,
+          fmt::format("{} must follow an *OUTPUT keyword in the same step", ctx.keyword_display()));
+      skip_ = true;
+      return;
+    }
+    field_ = step.outputs.back().field;
+    listed_ = !ctx.params().has("VARIABLE");
+    // Energies of an element set (ELSET=) are not written: E0210 at the parameter.
+    skip_ = report_unsupported_params(ctx, {"ELSET"});
+  }
+
+  void data_line(BlockContext& ctx, const DataLine& line, std::vector<Field>& fields) override {
+    if (skip_ || field_ || line.blank) return;
+    if (!listed_) {
+      ctx.report(DiagCode::unexpected_data_line, line.loc,
+                 "*ENERGY OUTPUT with VARIABLE= takes no data lines");
+      skip_ = true;
+      return;
+    }
+    read_identifiers(ctx, fields, OutputContext::EnergyOutput,
+                     current_step(ctx).outputs.back().energies);
+    read_any_ = true;
+  }
+
+  void end(BlockContext& ctx) override {
+    if (skip_ || field_ || read_any_) return;
+    std::vector<OutputIdentifier>& energies = current_step(ctx).outputs.back().energies;
+    for (std::string_view v : {"ALLKE", "ALLIE", "ALLFD", "ALLVD", "ALLWK", "ETOTAL"}) {
+      IdentifierParse parsed = parse_output_identifier(v, OutputContext::EnergyOutput);
+      parsed.id.loc = ctx.keyword().loc;
+      energies.push_back(std::move(parsed.id));
+    }
+  }
+
+ private:
+  bool skip_ = false;
+  bool field_ = false;
+  bool listed_ = true;
+  bool read_any_ = false;
+};
+
 // ---- *NODE PRINT / *EL PRINT ------------------------------------------------------------------
 
 class PrintHandler : public KeywordHandler {
@@ -437,6 +482,18 @@ std::vector<KeywordSpec> output_keyword_specs() {
   };
   el_print.make_handler = [] { return std::unique_ptr<KeywordHandler>(new PrintHandler(false)); };
   specs.push_back(std::move(el_print));
+
+  KeywordSpec energy_output;
+  energy_output.name = "ENERGY OUTPUT";
+  energy_output.level = KeywordLevel::History;
+  energy_output.params = {
+      unsupported_param("ELSET"),
+      {"VARIABLE", ParamKind::Enum, false, {"PRESELECT", "ALL"}},
+  };
+  energy_output.make_handler = [] {
+    return std::unique_ptr<KeywordHandler>(new EnergyOutputHandler());
+  };
+  specs.push_back(std::move(energy_output));
   return specs;
 }
 

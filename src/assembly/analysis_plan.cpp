@@ -59,6 +59,10 @@ class PlanBuilder {
     plan_.dynamic =
         std::any_of(steps.begin(), steps.end(), [](const Step& s) { return s.dynamic; });
     if (plan_.dynamic) plan_.inertia = nodal_inertia(model_, plan_.dofs);
+    plan_.energies = plan_.dynamic || std::any_of(steps.begin(), steps.end(), [](const Step& s) {
+                       return std::any_of(s.outputs.begin(), s.outputs.end(),
+                                          [](const OutputRequest& r) { return !r.energies.empty(); });
+                     });
     section_laws_.assign(model_.sections.connector_sections.size(), {});
     section_laws_built_.assign(model_.sections.connector_sections.size(), false);
     section_stops_.assign(model_.sections.connector_sections.size(), nullptr);

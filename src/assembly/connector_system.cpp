@@ -66,6 +66,11 @@ ConnectorSystem::ConnectorSystem(const Model& model, const AnalysisPlan& plan)
       constraint_load_(Eigen::VectorXd::Zero(plan.dependents.empty() ? 0 : plan.dofs.equations())),
       inertia_force_(Eigen::VectorXd::Zero(plan.dynamic ? plan.dofs.equations() : 0)) {
   use_storage(true);
+  if (plan.energies) {
+    std::vector<bool> dashpots;
+    for (const SpringRecord& s : plan.springs) dashpots.push_back(s.dashpot);
+    energy_.emplace(plan.dofs.node_equations(), plan.connectors.size(), std::move(dashpots));
+  }
   // *INITIAL CONDITIONS, TYPE=VELOCITY: the velocities of the initial state.
   for (const InitialVelocity& velocity : model.history.initial_velocities) {
     for (std::int32_t node : velocity.resolved) {
@@ -73,6 +78,7 @@ ConnectorSystem::ConnectorSystem(const Model& model, const AnalysisPlan& plan)
       if (eq >= 0 && state_.v.size() > 0) state_.v[eq] = state_.v_n[eq] = velocity.value;
     }
   }
+  if (state_.v_n.size() > 0) initial_kinetic_ = kinetic_energy(plan_.inertia, state_.v_n);
 }
 
 void ConnectorSystem::set_integration(const DynamicProcedure* procedure, double dt) {
@@ -98,12 +104,14 @@ void ConnectorSystem::start_dynamic_step(bool initial_acceleration) {
   if (!status.ok) return;
   const auto n = state_.r_n.size();
   state_.r_n = internal_.head(n) - conditions_.external().head(n);
+  if (energy_) energy_->restart(energy_forces());
   if (!initial_acceleration) return;
   initial_accelerations(plan_.inertia, conditions_, state_.r_n, state_.a_n);
   state_.a = state_.a_n;
 }
 
 void ConnectorSystem::commit() {
+  if (energy_) energy_->add_increment(state_.x - state_.x_n, energy_forces());
   state_.commit();
   if (!newmark_) return;
   // The converged I − P of this increment is the next increment's HHT α term.
@@ -635,6 +643,17 @@ std::vector<std::string> ConnectorSystem::step_summary() const {
     lines.push_back(fmt::format("{}: {:.6g} ({} {})", sum.total.what, sum.total.value, sum.count,
                                 sum.total.holders));
   }
+  if (energy_) {
+    // The balance (docs/dynamics.md "Energies"): the change of ETOTAL against the largest energy
+    // of the run shows how much the integration created or lost.
+    const ModelEnergies e = energies();
+    const double scale = std::max(energy_->largest(), initial_kinetic_);
+    lines.push_back(fmt::format(
+        "energies: ALLKE {:.6g}, ALLIE {:.6g}, ALLFD {:.6g}, ALLVD {:.6g}, ALLWK {:.6g}; "
+        "ETOTAL {:.6g}, changed by {:.3g} of the largest energy since the start",
+        e.kinetic, e.internal, e.frictional, e.viscous, e.work, e.total(),
+        scale > 0 ? std::abs(e.total() - initial_kinetic_) / scale : 0.0));
+  }
   return lines;
 }
 
@@ -715,8 +734,26 @@ double ConnectorSystem::nodal_rate(std::int32_t node, int dof, int order) const 
   return eq >= 0 && eq < rate.size() ? rate[eq] : 0.0;
 }
 
-double ConnectorSystem::kinetic_energy() const {
-  return state_.v.size() > 0 ? clinch::kinetic_energy(plan_.inertia, state_.v) : 0.0;
+ModelEnergies ConnectorSystem::energies() const {
+  if (!energy_) return {};
+  ModelEnergies e = energy_->energies();
+  // Of the converged velocities: at the start, those of *INITIAL CONDITIONS.
+  e.kinetic = state_.v_n.size() > 0 ? kinetic_energy(plan_.inertia, state_.v_n) : 0.0;
+  return e;
+}
+
+// The forces of the last evaluation for the energy balance: the loads on free DOFs, and what
+// holds a prescribed DOF there (the reaction and the load on it).
+EnergyForces ConnectorSystem::energy_forces() {
+  const int n = plan_.dofs.node_equations();
+  external_force_ = conditions_.external().head(n);
+  for (int eq : conditions_.prescribed()) {
+    if (eq >= n) continue;
+    const double moved = constraint_load_.size() > 0 ? constraint_load_[eq] : 0.0;
+    const double inertia = inertia_force_.size() > 0 ? inertia_force_[eq] : 0.0;
+    external_force_[eq] = internal_[eq] + inertia - moved;
+  }
+  return {internal_, external_force_, state_.results, springs_};
 }
 
 double ConnectorSystem::applied_load(std::int32_t node, int dof) const {

@@ -15,6 +15,7 @@
 #include "src/assembly/constrained_elements.hpp"
 #include "src/assembly/dependent_motion.hpp"
 #include "src/assembly/dynamic_terms.hpp"
+#include "src/assembly/energy_balance.hpp"
 #include "src/assembly/increment_conditions.hpp"
 #include "src/assembly/spring_element.hpp"
 #include "src/parallel/communicator.hpp"
@@ -131,7 +132,8 @@ class ConnectorSystem final : public NonlinearProblem {
   double applied_load(std::int32_t node, int dof) const;  // CF/CM
   // V/VR (order 1) and A/AR (order 2) of DOF `dof` of `node` (0 without a dynamic step).
   double nodal_rate(std::int32_t node, int dof, int order) const;
-  double kinetic_energy() const;  // ALLKE of the nodal masses
+  // The whole-model energies at the last converged increment (plan().energies; else zero).
+  ModelEnergies energies() const;
   ConnectorOutput connector_output(std::size_t connector) const;
   const SpringResult& spring_output(std::size_t spring) const { return springs_[spring]; }
   const AnalysisPlan& plan() const { return plan_; }
@@ -198,6 +200,10 @@ class ConnectorSystem final : public NonlinearProblem {
   std::optional<NewmarkIncrement> newmark_;  // set during a dynamic step
   bool rates_frozen_ = false;  // evaluate at the converged velocities (start_dynamic_step)
   Eigen::VectorXd inertia_force_;  // M a per equation at the last evaluation (reactions)
+  std::optional<EnergyBalance> energy_;  // plan().energies
+  Eigen::VectorXd external_force_;       // loads, and at prescribed DOFs what holds them
+  double initial_kinetic_ = 0.0;         // ETOTAL at the start (*INITIAL CONDITIONS)
+  EnergyForces energy_forces();
   // With dependent DOFs: the residual over every equation, and a correction expanded to them.
   Eigen::VectorXd full_residual_, full_correction_;
   double load_factor_ = 0.0;  // the LPF column's value

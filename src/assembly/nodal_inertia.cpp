@@ -41,7 +41,27 @@ std::vector<std::int32_t> inertia_element_nodes(const Model& model) {
   return node_of;
 }
 
+// *MASS: m in each direction, or m1, m2, m3 with TYPE=ANISOTROPIC (keywords.md).
+Vector3 section_mass(const ElementSection& section) {
+  return anisotropic(section)
+             ? Vector3(row_value(section, 0), row_value(section, 1), row_value(section, 2))
+             : Vector3::Constant(row_value(section, 0));
+}
+
 }  // namespace
+
+std::vector<PointMass> point_masses(const Model& model) {
+  const std::vector<std::int32_t> node_of = inertia_element_nodes(model);
+  std::vector<PointMass> masses;
+  for (const ElementSection& section : model.structure.sections) {
+    if (section.kind != ElementSection::Kind::Mass) continue;
+    for (std::int32_t e : section.elements) {
+      const std::int32_t node = node_of[static_cast<std::size_t>(e)];
+      if (node >= 0) masses.push_back({e, node, section_mass(section)});
+    }
+  }
+  return masses;
+}
 
 std::vector<NodeInertia> nodal_inertia(const Model& model, const DofMap& dofs) {
   const std::vector<std::int32_t> node_of = inertia_element_nodes(model);
@@ -54,9 +74,7 @@ std::vector<NodeInertia> nodal_inertia(const Model& model, const DofMap& dofs) {
     Vector3 m = Vector3::Zero();
     Matrix3 j = Matrix3::Zero();
     if (mass) {
-      m = anisotropic(section) ? Vector3(row_value(section, 0), row_value(section, 1),
-                                         row_value(section, 2))
-                               : Vector3::Constant(row_value(section, 0));
+      m = section_mass(section);
     } else {
       j.diagonal() << row_value(section, 0), row_value(section, 1), row_value(section, 2);
       j(0, 1) = j(1, 0) = row_value(section, 3);

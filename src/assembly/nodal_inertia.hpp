@@ -22,6 +22,13 @@ struct NodeInertia {
   Matrix3 rotary = Matrix3::Zero();            // symmetric
 };
 
+// A MASS element with a node: its mass per translational direction (gravity loads it).
+struct PointMass {
+  std::int32_t element = 0, node = 0;
+  Vector3 mass = Vector3::Zero();
+};
+std::vector<PointMass> point_masses(const Model& model);
+
 // The nodes that carry inertia and have active DOFs, in node order. A MASS or ROTARYI element
 // whose node has no active DOF carries no equation of motion and is left out.
 std::vector<NodeInertia> nodal_inertia(const Model& model, const DofMap& dofs);

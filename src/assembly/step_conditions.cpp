@@ -15,6 +15,15 @@ StepConditions::StepConditions(const Model& model, const AnalysisPlan& plan)
     if (a.valid) amplitudes_.emplace_back(AmplitudeFunction(a));
     else amplitudes_.emplace_back(std::nullopt);
   }
+  const auto& steps = model_.history.steps;
+  if (std::any_of(steps.begin(), steps.end(), [](const Step& s) { return !s.gravity.empty(); })) {
+    point_masses_ = point_masses(model_);
+    point_mass_of_element_.assign(model_.elements.size(), -1);
+    for (std::size_t i = 0; i < point_masses_.size(); ++i) {
+      point_mass_of_element_[static_cast<std::size_t>(point_masses_[i].element)] =
+          static_cast<std::int32_t>(i);
+    }
+  }
 }
 
 double StepConditions::Condition::value(
@@ -63,6 +72,13 @@ StepConditions::Condition StepConditions::define(const ConditionBlock& block, co
     c.mode = Mode::Ramp;
   }
   return c;
+}
+
+// v₀ of a load: its value at the end of the previous step, 0 when new (keywords.md §13).
+double StepConditions::load_start(const Table& table, std::int64_t key) {
+  const auto it = table.find(key);
+  if (it == table.end()) return 0.0;
+  return it->second.mode == Mode::Hold ? it->second.magnitude : it->second.start;
 }
 
 // keywords.md §13, "across steps": OP=NEW removes every earlier condition of the kind; a removed
@@ -130,6 +146,7 @@ void StepConditions::begin_step(std::size_t s, ConnectorSystem& system) {
   carry_over(loads_, step.replaces(ConditionKind::Load), true, step, released_loads_);
   carry_over(connector_loads_, step.replaces(ConditionKind::ConnectorLoad), true, step,
              released_connector_loads_);
+  carry_over(gravity_, step.replaces(ConditionKind::Gravity), true, step, released_loads_);
 
   for (const BoundaryCondition& bc : step.boundaries) {
     const ConditionBlock& block = step.blocks[static_cast<std::size_t>(bc.block)];
@@ -148,12 +165,7 @@ void StepConditions::begin_step(std::size_t s, ConnectorSystem& system) {
     for (std::int32_t node : load.resolved) {
       const int eq = plan_.dofs.equation(node, load.dof);
       if (eq < 0) continue;
-      // v₀ of a load is its value at the end of the previous step (0 when new).
-      const auto previous = loads_.find(eq);
-      const double start = previous == loads_.end()          ? 0.0
-                           : previous->second.mode == Mode::Hold ? previous->second.magnitude
-                                                                 : previous->second.start;
-      loads_[eq] = define(block, step, load.magnitude, start, false);
+      loads_[eq] = define(block, step, load.magnitude, load_start(loads_, eq), false);
     }
   }
   auto connector_conditions = [&](const std::vector<ConnectorCondition>& list, Table& table,
@@ -168,8 +180,8 @@ void StepConditions::begin_step(std::size_t s, ConnectorSystem& system) {
         if (motion) {
           start = system.connector_output(static_cast<std::size_t>(c)).change[cc.component - 1];
           released_connector_loads_.erase(key);
-        } else if (auto it = table.find(key); it != table.end()) {
-          start = it->second.mode == Mode::Hold ? it->second.magnitude : it->second.start;
+        } else {
+          start = load_start(table, key);
         }
         table[key] = define(block, step, cc.magnitude, start, motion);
       }
@@ -177,6 +189,19 @@ void StepConditions::begin_step(std::size_t s, ConnectorSystem& system) {
   };
   connector_conditions(step.motions, motions_, true);
   connector_conditions(step.connector_loads, connector_loads_, false);
+  // A later GRAV line on the same element replaces its acceleration, like a load on a DOF.
+  for (const GravityLoad& g : step.gravity) {
+    const ConditionBlock& block = step.blocks[static_cast<std::size_t>(g.block)];
+    for (std::int32_t e : g.resolved) {
+      const std::int32_t p = point_mass_of_element_[static_cast<std::size_t>(e)];
+      if (p < 0) continue;
+      for (int d = 0; d < 3; ++d) {
+        const std::int64_t key = static_cast<std::int64_t>(p) * 8 + d;
+        gravity_[key] = define(block, step, g.magnitude * g.direction[static_cast<std::size_t>(d)],
+                               load_start(gravity_, key), false);
+      }
+    }
+  }
 }
 
 void StepConditions::apply(ConnectorSystem& system, double step_time, double total_time) const {
@@ -187,6 +212,12 @@ void StepConditions::apply(ConnectorSystem& system, double step_time, double tot
   for (const auto& [eq, c] : boundaries_) conditions.prescribe(static_cast<int>(eq), value(c));
   for (const auto& [eq, c] : loads_) conditions.add_load(static_cast<int>(eq), value(c));
   for (const auto& [eq, c] : released_loads_) conditions.add_load(static_cast<int>(eq), value(c));
+  for (const auto& [key, c] : gravity_) {
+    const PointMass& p = point_masses_[static_cast<std::size_t>(key / 8)];
+    const int d = static_cast<int>(key % 8);
+    const int eq = plan_.dofs.equation(p.node, d + 1);
+    if (eq >= 0) conditions.add_load(eq, p.mass[d] * value(c));
+  }
   for (const auto& [key, c] : motions_) {
     conditions.prescribe_motion(static_cast<int>(key / 8), static_cast<int>(key % 8), value(c));
   }
@@ -199,7 +230,7 @@ void StepConditions::apply(ConnectorSystem& system, double step_time, double tot
 }
 
 void StepConditions::end_step(double period, double total_time, double tau) {
-  for (Table* table : {&boundaries_, &loads_, &motions_, &connector_loads_}) {
+  for (Table* table : {&boundaries_, &loads_, &motions_, &connector_loads_, &gravity_}) {
     for (auto& [key, c] : *table) {
       const bool follows_total_time =
           c.amplitude >= 0 && model_.history.amplitudes[static_cast<std::size_t>(c.amplitude)].total_time;

@@ -39,17 +39,22 @@ class StepConditions {
     double value(double tau, double step_time, double total_time,
                  const std::vector<std::optional<AmplitudeFunction>>& amplitudes) const;
   };
-  // Key: equation (BC, load) or connector·8 + component (motion, connector load).
+  // Key: equation (BC, load), connector·8 + component (motion, connector load) or point mass·8 +
+  // direction (gravity: the acceleration, which the mass multiplies).
   using Table = std::map<std::int64_t, Condition>;
 
   Condition define(const ConditionBlock& block, const Step& step, double magnitude, double start,
                    bool prescribed_kind) const;
+  static double load_start(const Table& table, std::int64_t key);
   void carry_over(Table& table, bool replaced, bool load_kind, const Step& step, Table& removed);
 
   const Model& model_;
   const AnalysisPlan& plan_;
   std::vector<std::optional<AmplitudeFunction>> amplitudes_;
-  Table boundaries_, loads_, motions_, connector_loads_;
+  Table boundaries_, loads_, motions_, connector_loads_, gravity_;
+  // The MASS elements gravity loads (nodal_inertia.hpp), and the point mass of each element.
+  std::vector<PointMass> point_masses_;
+  std::vector<std::int32_t> point_mass_of_element_;
   // Removed prescribed conditions become loads that decay to zero over the step.
   Table released_loads_, released_connector_loads_;
   double period_ = 1.0;

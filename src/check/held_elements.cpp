@@ -2,6 +2,8 @@
 // docs/decisions.md "Elements held as nodes"): one decision per *ELEMENT block.
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "base/diagnostic.hpp"
 #include "src/check/check.hpp"
 #include "src/model/element_library.hpp"
@@ -52,8 +54,8 @@ BlockCount count_deformable(const Model& model, std::int32_t part, const Element
 // *RIGID BODY lifts this for the elements its ELSET carries: then only their nodes count. A block
 // that is only partly inside rigid bodies is refused once, for its deformable elements. MASS and
 // ROTARYI carry inertia only, which plays no role in *STATIC (Abaqus Analysis User's Guide,
-// "Static stress analysis"): in a deck without a *DYNAMIC step they are kept and noted, not
-// refused; a dynamic step uses them (nodal_inertia.hpp).
+// "Static stress analysis"): in a deck without a *DYNAMIC step or gravity they are kept and
+// noted, not refused; a dynamic step uses them (nodal_inertia.hpp), gravity loads their masses.
 void judge_block(const Model& model, std::int32_t part, const ElementBlock& block,
                  const std::vector<bool>& rigid, bool dynamic, DiagnosticSink& sink) {
   if (block.count == 0) return;
@@ -85,7 +87,11 @@ void judge_block(const Model& model, std::int32_t part, const ElementBlock& bloc
 
 void check_held_elements(const Model& model, DiagnosticSink& sink) {
   const std::vector<bool> rigid = rigid_elements(model);
-  const bool dynamic = has_dynamic_step(model);
+  // Gravity (*DLOAD, GRAV) loads the masses in any step.
+  const bool dynamic =
+      has_dynamic_step(model) ||
+      std::any_of(model.history.steps.begin(), model.history.steps.end(),
+                  [](const Step& s) { return !s.gravity.empty(); });
   for (std::size_t p = 0; p < model.parts.size(); ++p) {
     if (!part_is_placed(model, static_cast<std::int32_t>(p))) continue;
     for (const ElementBlock& block : model.parts[p].element_blocks) {

@@ -338,6 +338,13 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
          "not implemented"},
         {"kinematic constraints, *CONNECTOR DAMPING, CV and CA output in the step",
          "not implemented"}}},
+      {"ENERGY OUTPUT",
+       "Whole-model energies as history columns: ALLKE, ALLIE, ALLFD, ALLVD, ALLWK, ETOTAL "
+       "(docs/dynamics.md).",
+       "The energies to write; none, or VARIABLE=PRESELECT or ALL: all six.",
+       {{"ELSET (energies of an element set)", "not implemented"},
+        {"ALLSE, ALLPD, ALLDMD and the other energies",
+         "ALLIE holds the elastic, plastic and damage work together"}}},
       {"INITIAL CONDITIONS",
        "With TYPE=VELOCITY: the nodal velocities at the start of the analysis, read by the first "
        "*DYNAMIC step (docs/dynamics.md).",
@@ -364,6 +371,13 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
         {"USER", "not implemented"}}},
       {"CONNECTOR LOAD", "Applies a force or moment on a connector component.",
        "`element or set, component, magnitude`."},
+      {"DLOAD",
+       "Gravity (GRAV) on the masses of MASS elements, in any step, with OP and AMPLITUDE as "
+       "*CLOAD (docs/dynamics.md).",
+       "`element or set (blank: every MASS element), GRAV, g, direction x, y, z`.",
+       {{"load types other than GRAV", "connector models have no surfaces or volumes to load"},
+        {"FOLLOWER, USER, LOAD CASE, ORIENTATION, REF NODE, CONSTANT RESULTANT, SUBMODEL",
+         "not implemented"}}},
       {"AMPLITUDE",
        "A time variation for loads and prescribed motions (the definitions not refused below).",
        "TABULAR and SMOOTH STEP: pairs `time, value`, four per line. EQUALLY SPACED: values "

@@ -12,6 +12,8 @@ const char* condition_keyword(ConditionKind kind) {
       return "*CLOAD";
     case ConditionKind::ConnectorLoad:
       return "*CONNECTOR LOAD";
+    case ConditionKind::Gravity:
+      return "*DLOAD";
   }
   return "";
 }

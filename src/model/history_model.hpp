@@ -68,7 +68,7 @@ struct Amplitude {
 
 // ---- Conditions and loads (keywords.md §9–§13) ------------------------------------------------
 
-enum class ConditionKind : std::uint8_t { Boundary, Motion, Load, ConnectorLoad };
+enum class ConditionKind : std::uint8_t { Boundary, Motion, Load, ConnectorLoad, Gravity };
 const char* condition_keyword(ConditionKind kind);  // "*BOUNDARY", "*CONNECTOR MOTION", ...
 
 // One keyword block of a condition or load: what its parameters say for all its data lines.
@@ -105,6 +105,18 @@ struct ConcentratedLoad {
   int dof = 0;
   double magnitude = 0;
   SourceLoc loc, dof_loc;
+};
+
+// *DLOAD data line of type GRAV (docs/dynamics.md "Gravity"): the acceleration g along
+// `direction` (a unit vector) on the masses of the MASS elements of `target` (every MASS element
+// when the line names none).
+struct GravityLoad {
+  std::int32_t block = -1;
+  std::optional<TargetRef> target;     // empty: the whole model
+  std::vector<std::int32_t> resolved;  // global elements, set by validation
+  double magnitude = 0;
+  std::array<double, 3> direction{};
+  SourceLoc loc, direction_loc;
 };
 
 // *CONNECTOR MOTION and *CONNECTOR LOAD data line.
@@ -253,6 +265,7 @@ struct OutputRequest {
   std::optional<double> time_interval;
   std::vector<ElementOutputRequest> elements;
   std::vector<NodeOutputRequest> nodes;
+  std::vector<OutputIdentifier> energies;  // *ENERGY OUTPUT: whole-model energies
 };
 
 // *NODE PRINT / *EL PRINT (§18).
@@ -299,6 +312,7 @@ struct Step {
   std::vector<ConditionBlock> blocks;
   std::vector<BoundaryCondition> boundaries;
   std::vector<ConcentratedLoad> loads;
+  std::vector<GravityLoad> gravity;
   std::vector<ConnectorCondition> motions;
   std::vector<ConnectorCondition> connector_loads;
 

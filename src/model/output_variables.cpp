@@ -53,7 +53,7 @@ constexpr std::array<OutputVariableInfo, 2> kDerived{{
     {"CDERU", OutputKind::Connector, OutputProducer::Derived, "derived components"},
 }};
 
-constexpr std::array<OutputVariableInfo, 7> kOther{{
+constexpr std::array<OutputVariableInfo, 13> kOther{{
     {"U", OutputKind::Nodal, OutputProducer::Always, ""},
     {"V", OutputKind::Nodal, OutputProducer::StaticZero, ""},
     {"A", OutputKind::Nodal, OutputProducer::StaticZero, ""},
@@ -61,6 +61,13 @@ constexpr std::array<OutputVariableInfo, 7> kOther{{
     {"CF", OutputKind::Nodal, OutputProducer::Always, ""},
     {"S", OutputKind::Spring, OutputProducer::Always, ""},
     {"E", OutputKind::Spring, OutputProducer::Always, ""},
+    // Whole-model energies (energy_balance.hpp).
+    {"ALLKE", OutputKind::Model, OutputProducer::StaticZero, ""},
+    {"ALLIE", OutputKind::Model, OutputProducer::Always, ""},
+    {"ALLFD", OutputKind::Model, OutputProducer::Always, ""},
+    {"ALLVD", OutputKind::Model, OutputProducer::Always, ""},
+    {"ALLWK", OutputKind::Model, OutputProducer::Always, ""},
+    {"ETOTAL", OutputKind::Model, OutputProducer::Always, ""},
 }};
 
 // Variables that are one scalar column when no component is given (output-variables.md §1.2).
@@ -110,7 +117,7 @@ constexpr std::array<NodalName, 14> kNodalNames{{
 // Known identifiers that clinch v1 does not support (output-variables.md §5), and the Abaqus and
 // CalculiX identifiers keywords.md §18 names (velocities, accelerations, temperatures, energies,
 // stresses and strains of continuum elements): E0904, not "unknown".
-constexpr std::array<std::string_view, 40> kUnsupported{{
+constexpr std::array<std::string_view, 34> kUnsupported{{
     "NT", "PN", "MF", "TF", "POR", "NFORC",
     "ENER", "ELSE", "EVOL", "PEEQ", "SDV", "COORD", "ELEN", "ELKE", "ELPD", "ELSD", "ESEDEN",
     "SENER", "MISES", "LE", "PE", "NE", "SF", "SM",
@@ -118,17 +125,11 @@ constexpr std::array<std::string_view, 40> kUnsupported{{
     "CIVC",
     "ALLSE",
     "ALLPD",
-    "ALLIE",
-    "ALLKE",
-    "ALLWK",
     "ALLAE",
     "ALLCD",
-    "ALLFD",
-    "ALLVD",
     "ALLDMD",
     "ALLSD",
     "ALLEE",
-    "ETOTAL",
     "ALLCCE",
 }};
 
@@ -170,7 +171,9 @@ bool accepts(OutputKind kind, OutputContext context) {
       return kind == OutputKind::Nodal;
     case OutputContext::ElementOutput:
     case OutputContext::ElPrint:
-      return kind != OutputKind::Nodal;
+      return kind == OutputKind::Connector || kind == OutputKind::Spring;
+    case OutputContext::EnergyOutput:
+      return kind == OutputKind::Model;
   }
   return false;
 }
@@ -180,6 +183,12 @@ std::vector<std::string> candidates(OutputContext context) {
   const bool nodal = context == OutputContext::NodeOutput || context == OutputContext::NodePrint;
   if (nodal) {
     for (const auto& n : kNodalNames) out.emplace_back(n.name);
+    return out;
+  }
+  if (context == OutputContext::EnergyOutput) {
+    for (const auto& v : kOther) {
+      if (v.kind == OutputKind::Model) out.emplace_back(v.name);
+    }
     return out;
   }
   for (const auto& v : kVariables) out.emplace_back(v.name);
@@ -237,6 +246,10 @@ IdentifierParse classify(std::string_view text) {
     return ok(find_in(u.substr(0, 1)), 0b1, u.size() > 1);
   }
 
+  // Whole-model energies: one scalar each.
+  if (const OutputVariableInfo* info = find_in(u); info && info->kind == OutputKind::Model) {
+    return ok(info, 0, false);
+  }
   // Connector variables, bare.
   if (const OutputVariableInfo* info = find_in(u); info && info->kind == OutputKind::Connector) {
     if (is_coupled_form(u) || scalar_by_default(u)) return ok(info, 0, false);
@@ -275,7 +288,14 @@ IdentifierParse parse_output_identifier(std::string_view text, OutputContext con
   IdentifierParse result = classify(text);
   if (result.status == IdentifierStatus::Ok && !accepts(result.info->kind, context)) {
     result.status = IdentifierStatus::WrongKind;
-    result.kind_hint = result.info->kind == OutputKind::Nodal ? "a nodal" : "an element";
+    const OutputKind kind = result.info->kind;
+    const bool print = context == OutputContext::NodePrint || context == OutputContext::ElPrint;
+    result.kind_hint = kind == OutputKind::Nodal   ? "a nodal"
+                       : kind == OutputKind::Model ? "a whole-model"
+                                                   : "an element";
+    result.request_with = kind == OutputKind::Model   ? "*ENERGY OUTPUT"
+                          : kind == OutputKind::Nodal ? (print ? "*NODE PRINT" : "*NODE OUTPUT")
+                                                      : (print ? "*EL PRINT" : "*ELEMENT OUTPUT");
     result.info = nullptr;
     return result;
   }

@@ -16,7 +16,13 @@
 namespace clinch {
 
 // The request keyword an identifier stands under: each accepts its own set (§17, §18).
-enum class OutputContext : std::uint8_t { NodeOutput, ElementOutput, NodePrint, ElPrint };
+enum class OutputContext : std::uint8_t {
+  NodeOutput,
+  ElementOutput,
+  NodePrint,
+  ElPrint,
+  EnergyOutput  // *ENERGY OUTPUT: whole-model energies (docs/dynamics.md "Energies")
+};
 
 // What makes a connector variable non-zero (output-variables.md §2 "prod."): a variable whose
 // producer the element's behaviour lacks gives zero columns and `output-no-behavior`.
@@ -35,7 +41,7 @@ enum class OutputProducer : std::uint8_t {
   StaticZero,  // CV, CA: always 0 in a static step (W0904)
 };
 
-enum class OutputKind : std::uint8_t { Nodal, Connector, Spring };
+enum class OutputKind : std::uint8_t { Nodal, Connector, Spring, Model };
 
 struct OutputVariableInfo {
   std::string_view name;  // canonical identifier ("CTF")
@@ -52,6 +58,7 @@ struct IdentifierParse {
   const OutputVariableInfo* info = nullptr;  // when Ok
   std::string suggestion;                    // Unknown: closest identifier ("" if none)
   std::string kind_hint;                     // WrongKind: "an element" / "a nodal"
+  std::string_view request_with;             // WrongKind: the keyword that takes it
 };
 
 // Classifies one identifier written under `context`. `text` is the field as written.

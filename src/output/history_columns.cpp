@@ -10,6 +10,18 @@
 namespace clinch {
 namespace {
 
+// A whole-model column: LPF (docs/riks.md) or an energy (energy_balance.hpp).
+double model_value(std::string_view variable, const ConnectorSystem& system) {
+  if (variable == "LPF") return system.load_factor();
+  const ModelEnergies e = system.energies();
+  if (variable == "ALLKE") return e.kinetic;
+  if (variable == "ALLIE") return e.internal;
+  if (variable == "ALLFD") return e.frictional;
+  if (variable == "ALLVD") return e.viscous;
+  if (variable == "ALLWK") return e.work;
+  return e.total();  // ETOTAL
+}
+
 std::string set_label(const TargetRef& set, bool element) {
   if (set.is_label) return describe(set, element);
   return set.instance_display.empty() ? set.set_display
@@ -232,6 +244,13 @@ std::vector<HistoryColumns::Request> HistoryColumns::expand_step(
         node_columns(id, block.resolved, request, false, false, "");
       }
     }
+    // Whole-model energies: one column each, named as the variable (docs/dynamics.md).
+    for (const OutputIdentifier& id : r->energies) {
+      Column c;
+      c.variable = output_variable_info(id.variable)->name;
+      const Term term{Source::Model, 0};
+      request.columns.push_back(column(std::string(c.variable), c, std::span(&term, 1)));
+    }
     requests.push_back(std::move(request));
   }
   for (const PrintRequest* p : prints) {
@@ -453,7 +472,7 @@ double HistoryColumns::value(const Column& c, ConnectorSystem& system) {
           sum += system.nodal_rate(t.index, c.component, 2);
         }
         break;
-      case Source::Model: sum += system.load_factor(); break;
+      case Source::Model: sum += model_value(c.variable, system); break;
     }
   }
   return sum;

@@ -142,6 +142,7 @@ class HistoryValidator {
         check_connector(motion, ConditionKind::Motion, where, &seen, in_force);
       }
       for (ConcentratedLoad& load : step.loads) check_load(load, in_force);
+      for (GravityLoad& load : step.gravity) check_gravity(load);
       for (ConnectorCondition& load : step.connector_loads) {
         check_connector(load, ConditionKind::ConnectorLoad, where, nullptr, in_force);
       }
@@ -217,7 +218,7 @@ class HistoryValidator {
         }
       }
     }
-    if (step.loads.empty() && step.connector_loads.empty()) {
+    if (step.loads.empty() && step.connector_loads.empty() && step.gravity.empty()) {
       sink_.report(DiagCode::step_procedure, step.procedure->loc,
                    fmt::format("step '{}' is a Riks step without loads: the load proportionality "
                                "factor scales the *CLOAD and *CONNECTOR LOAD values the step "
@@ -356,6 +357,28 @@ class HistoryValidator {
                    fmt::format("initial velocity on DOF {} of node {}, which no element uses",
                                velocity.dof, node_name(model_, node)));
       return;
+    }
+  }
+
+  // docs/dynamics.md "Gravity": the MASS elements of the line's set (of the model when it names
+  // none); a set without one would load nothing, which the analyst should hear of.
+  void check_gravity(GravityLoad& load) {
+    std::vector<std::int32_t> named;
+    if (load.target && !resolve(*load.target, true, named)) return;
+    std::vector<bool> wanted(model_.elements.size(), !load.target);
+    for (std::int32_t e : named) wanted[static_cast<std::size_t>(e)] = true;
+    load.resolved.clear();
+    for (const ElementSection& section : model_.structure.sections) {
+      if (section.kind != ElementSection::Kind::Mass) continue;
+      for (std::int32_t e : section.elements) {
+        if (wanted[static_cast<std::size_t>(e)]) load.resolved.push_back(e);
+      }
+    }
+    if (load.resolved.empty()) {
+      sink_.report(DiagCode::inactive_dof, load.target ? load.target->loc : load.loc,
+                   fmt::format("*DLOAD, GRAV acts on MASS elements, and {} has none: connectors "
+                               "and springs have no mass",
+                               load.target ? describe(*load.target, true) : "the model"));
     }
   }
 
