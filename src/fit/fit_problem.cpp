@@ -8,25 +8,30 @@
 namespace clinch {
 namespace {
 
-// The residual of one measured point; the runs behind it are shared through the evaluator.
+// The residual of one measured point; the runs behind it are shared through the evaluator. Ceres
+// sees each parameter divided by its typical size, so that values of 1e5 and of 0.3 are alike to
+// its step and gradient tolerances, which are absolute.
 class PointResidual final : public ceres::CostFunction {
  public:
-  PointResidual(RunEvaluator& evaluator, Eigen::Index point, int parameters)
-      : evaluator_(evaluator), point_(point), parameters_(parameters) {
+  PointResidual(RunEvaluator& evaluator, Eigen::Index point, const std::vector<double>& typical)
+      : evaluator_(evaluator), point_(point), typical_(typical) {
     set_num_residuals(1);
-    mutable_parameter_block_sizes()->push_back(parameters);
+    mutable_parameter_block_sizes()->push_back(static_cast<int>(typical.size()));
   }
 
   bool Evaluate(double const* const* values, double* residual,
                 double** jacobians) const override {
-    const std::vector<double> x(values[0], values[0] + parameters_);
+    std::vector<double> x(typical_.size());
+    for (std::size_t k = 0; k < x.size(); ++k) x[k] = values[0][k] * typical_[k];
     const Eigen::VectorXd* r = evaluator_.residuals(x);
     if (r == nullptr) return false;
     residual[0] = (*r)(point_);
     if (jacobians != nullptr && jacobians[0] != nullptr) {
       const Eigen::MatrixXd* j = evaluator_.jacobian(x);
       if (j == nullptr) return false;
-      for (int k = 0; k < parameters_; ++k) jacobians[0][k] = (*j)(point_, k);
+      for (std::size_t k = 0; k < x.size(); ++k) {
+        jacobians[0][k] = (*j)(point_, static_cast<Eigen::Index>(k)) * typical_[k];
+      }
     }
     return true;
   }
@@ -34,7 +39,7 @@ class PointResidual final : public ceres::CostFunction {
  private:
   RunEvaluator& evaluator_;
   Eigen::Index point_;
-  int parameters_;
+  const std::vector<double>& typical_;
 };
 
 class IterationReport final : public ceres::IterationCallback {
@@ -71,8 +76,10 @@ FitOutcome solve_fit(RunEvaluator& evaluator, const std::vector<double>& initial
                      const std::vector<double>& lower, const std::vector<double>& upper,
                      const FitSettings& settings) {
   FitOutcome outcome;
-  outcome.values = initial;
+  const std::vector<double>& typical = evaluator.typical();
   const int n = static_cast<int>(initial.size());
+  std::vector<double> scaled(initial.size());
+  for (int j = 0; j < n; ++j) scaled[j] = initial[j] / typical[j];
   ceres::Problem::Options problem_options;
   // One loss object serves every block.
   problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
@@ -80,12 +87,16 @@ FitOutcome solve_fit(RunEvaluator& evaluator, const std::vector<double>& initial
   const std::unique_ptr<ceres::LossFunction> loss = make_loss(settings.loss, settings.loss_scale);
   const auto m = static_cast<Eigen::Index>(evaluator.residual_count());
   for (Eigen::Index i = 0; i < m; ++i) {
-    problem.AddResidualBlock(new PointResidual(evaluator, i, n), loss.get(),
-                             outcome.values.data());
+    problem.AddResidualBlock(new PointResidual(evaluator, i, typical), loss.get(),
+                             scaled.data());
   }
   for (int j = 0; j < n; ++j) {
-    if (std::isfinite(lower[j])) problem.SetParameterLowerBound(outcome.values.data(), j, lower[j]);
-    if (std::isfinite(upper[j])) problem.SetParameterUpperBound(outcome.values.data(), j, upper[j]);
+    if (std::isfinite(lower[j])) {
+      problem.SetParameterLowerBound(scaled.data(), j, lower[j] / typical[j]);
+    }
+    if (std::isfinite(upper[j])) {
+      problem.SetParameterUpperBound(scaled.data(), j, upper[j] / typical[j]);
+    }
   }
   ceres::Solver::Options options;
   options.minimizer_type = ceres::TRUST_REGION;
@@ -101,6 +112,8 @@ FitOutcome solve_fit(RunEvaluator& evaluator, const std::vector<double>& initial
   options.callbacks.push_back(&report);
   ceres::Solver::Summary summary;
   ceres::Solve(options, &problem, &summary);
+  outcome.values.resize(initial.size());
+  for (int j = 0; j < n; ++j) outcome.values[j] = scaled[j] * typical[j];
   outcome.converged = summary.termination_type == ceres::CONVERGENCE;
   outcome.termination = summary.message;
   outcome.iterations = static_cast<int>(summary.iterations.size()) - 1;

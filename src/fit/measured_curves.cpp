@@ -138,7 +138,7 @@ std::optional<std::vector<double>> model_values(const MeasuredCurves& curves, co
   for (std::size_t k = 1; k < order.size(); ++k) {
     if (xs[order[k]] < xs[order[k - 1]]) {
       *error = fmt::format(
-          "{}:{}: the run's {} turns back at {} (row {}): the model has no single value there; "
+          "{}:{}: error: the run's {} turns back at {} (row {}): the model has no single value there; "
           "measure against total_time (--x total_time)",
           run.path, run.row_lines[order[k]], run.columns[x_column], xs[order[k]], order[k] + 1);
       return std::nullopt;
@@ -157,7 +157,7 @@ std::optional<std::vector<double>> model_values(const MeasuredCurves& curves, co
   for (std::size_t r = 0; r < data.rows.size(); ++r) {
     const double x = data.rows[r][curves.abscissa];
     if (x < sorted_x.front() - tolerance || x > sorted_x.back() + tolerance) {
-      *error = fmt::format("{}:{}: {} = {} lies outside the run's range [{}, {}]", data.path,
+      *error = fmt::format("{}:{}: error: {} = {} lies outside the run's range [{}, {}]", data.path,
                            data.row_lines[r], data.columns[curves.abscissa], x, sorted_x.front(),
                            sorted_x.back());
       return std::nullopt;

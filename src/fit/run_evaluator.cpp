@@ -89,26 +89,26 @@ std::vector<std::optional<Eigen::VectorXd>> RunEvaluator::evaluate(
       } else {
         error = failure_reason(setting.out_dir, outcome);
       }
-      if (table && complete) {
-        for (const MeasuredCurves* data : rig.data) {
-          if (!check_columns_written(*data, *table, rig.deck_name, &error)) {
-            input_error_ = error;
-            table.reset();
-            break;
-          }
-          const std::optional<std::vector<double>> model = model_values(*data, *table, &error);
-          if (!model) {
-            table.reset();
-            break;
-          }
-          append_residuals(*data, *model, r);
-        }
-      }
+      if (tables) (*tables)[p].push_back(table);
       if (!table) {
         complete = false;
         if (!stopped_) failures_.push_back({points[p], rig.deck_name, error});
+        continue;
       }
-      if (tables) (*tables)[p].push_back(std::move(table));
+      for (const MeasuredCurves* data : rig.data) {
+        if (!check_columns_written(*data, *table, rig.deck_name, &error)) {
+          input_error_ = error;
+          complete = false;
+          break;
+        }
+        const std::optional<std::vector<double>> model = model_values(*data, *table, &error);
+        if (!model) {
+          complete = false;
+          failures_.push_back({points[p], rig.deck_name, error});
+          break;
+        }
+        append_residuals(*data, *model, r);
+      }
     }
     if (complete && std::all_of(r.begin(), r.end(), [](double v) { return std::isfinite(v); })) {
       results.emplace_back(Eigen::Map<const Eigen::VectorXd>(r.data(),

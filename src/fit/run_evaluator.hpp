@@ -49,8 +49,8 @@ class RunEvaluator {
     std::function<int()> stop_signal;  // as LadderOptions::stop_signal
   };
 
-  // `typical` gives each parameter's size for the difference step where its value is 0;
-  // lower/upper keep the perturbed points inside the bounds.
+  // `typical` gives each parameter's size (> 0), for the difference step where its value is 0
+  // and for the scaling of the problem; lower/upper keep the perturbed points inside the bounds.
   RunEvaluator(std::vector<FitRig> rigs, Options options, std::vector<double> typical,
                std::vector<double> lower, std::vector<double> upper);
 
@@ -65,6 +65,7 @@ class RunEvaluator {
                                                   const std::string& label);
 
   std::size_t residual_count() const;
+  const std::vector<double>& typical() const { return typical_; }
   const std::vector<FitRig>& rigs() const { return rigs_; }
   int run_count() const { return runs_; }
   const std::vector<RunFailure>& failures() const { return failures_; }
