@@ -1,5 +1,5 @@
-// The clinch command line (cli-contract.md): `run`, `check`, `compare`, `study`, `fit`, `report` and
-// `keywords`.
+// The clinch command line (cli-contract.md): `run`, `check`, `compare`, `study`, `fit`, `report`
+// and `keywords`.
 // Usage errors, and standard output that cannot be written, exit with 3.
 #include <csignal>
 #include <iostream>
@@ -191,8 +191,8 @@ int run_command_line(int argc, char** argv) {
       "per connector the parts of each component's force against its motion (Abaqus names), "
       "time histories with step names, the Newton convergence "
       "of each increment with cutbacks marked, golden overlays with the tolerance band and the "
-      "worst deviation, and a study's work-precision plot; exit 0 = written, 3 = usage or I/O "
-      "error");
+      "worst deviation, a study's work-precision plot, and a fit's measured and fitted "
+      "curves; exit 0 = written, 3 = usage or I/O error");
   report->add_option("RUN_DIR", report_options.run_dir, "directory a `clinch run` wrote")
       ->required();
   report->add_option("--job", report_options.job,
@@ -209,6 +209,9 @@ int run_command_line(int argc, char** argv) {
       ->check(tolerance)
       ->capture_default_str();
   report->add_option("--study", report_options.study, "a <job>.study.csv of `clinch study`");
+  report->add_option("--fit", report_options.fit,
+                     "a <job>.fit-curves.csv of `clinch fit`: the measured curves with the model "
+                     "before and after the fit");
   report
       ->add_option("--connectors", report_options.max_connectors,
                    "draw the first N connectors and nodes of the history table")

@@ -162,21 +162,24 @@ int run_fit(const FitOptions& options) {
   }
   if (vary.empty()) return usage("--vary names no parameter");
   if (options.decks.size() > 1 && options.data.size() != options.decks.size()) {
-    return usage(fmt::format("{} decks and {} data files: with several decks, give one --data per "
-                             "deck, in the same order",
-                             options.decks.size(), options.data.size()));
+    return usage(
+        fmt::format("{} decks and {} data files: with several decks, give one --data per "
+                    "deck, in the same order",
+                    options.decks.size(), options.data.size()));
   }
   const std::optional<std::pair<FitLoss, double>> loss = parse_loss(options.loss);
   if (!loss) {
-    return usage(fmt::format("--loss '{}': none, huber, cauchy or soft_l1, the last three with an "
-                             "optional :S (a scale > 0 of the scaled residual)",
-                             options.loss));
+    return usage(
+        fmt::format("--loss '{}': none, huber, cauchy or soft_l1, the last three with an "
+                    "optional :S (a scale > 0 of the scaled residual)",
+                    options.loss));
   }
   std::map<std::string, double> scales;
   for (const std::string& text : options.scales) {
     const std::size_t eq = text.rfind('=');
-    const std::optional<double> s =
-        eq == std::string::npos ? std::nullopt : parse_number(std::string_view(text).substr(eq + 1));
+    const std::optional<double> s = eq == std::string::npos
+                                        ? std::nullopt
+                                        : parse_number(std::string_view(text).substr(eq + 1));
     if (!s || *s <= 0.0) {
       return usage(fmt::format("--scale '{}': COLUMN=S with S a finite number > 0", text));
     }
@@ -195,9 +198,10 @@ int run_fit(const FitOptions& options) {
     if (!parameters) return usage(error);
     FitRig rig{deck, fs::path(deck).stem().string(), std::move(*parameters), {}};
     if (!jobs.insert(rig.job).second) {
-      return usage(fmt::format("two decks are named '{}': rename one, their runs would share a "
-                               "directory",
-                               rig.job));
+      return usage(
+          fmt::format("two decks are named '{}': rename one, their runs would share a "
+                      "directory",
+                      rig.job));
     }
     rigs.push_back(std::move(rig));
   }
@@ -206,17 +210,19 @@ int run_fit(const FitOptions& options) {
   for (std::size_t j = 0; j < vary.size(); ++j) {
     for (const FitRig& rig : rigs) {
       if (rig.deck.values()[j] != initial[j]) {
-        return usage(fmt::format("{}: error: --vary {}: this deck starts at {}, {} at {}: one "
-                                 "parameter set serves every rig",
-                                 rig.deck.positions()[j], names[j], rig.deck.values()[j],
-                                 rigs.front().deck_name, initial[j]));
+        return usage(
+            fmt::format("{}: error: --vary {}: this deck starts at {}, {} at {}: one "
+                        "parameter set serves every rig",
+                        rig.deck.positions()[j], names[j], rig.deck.values()[j],
+                        rigs.front().deck_name, initial[j]));
       }
     }
     if (initial[j] < vary[j].lower || initial[j] > vary[j].upper) {
-      return usage(fmt::format("{}: error: --vary {}: the deck's value {} lies outside the bounds "
-                               "{}",
-                               rigs.front().deck.positions()[j], names[j], initial[j],
-                               bounds_text(vary[j].lower, vary[j].upper)));
+      return usage(
+          fmt::format("{}: error: --vary {}: the deck's value {} lies outside the bounds "
+                      "{}",
+                      rigs.front().deck.positions()[j], names[j], initial[j],
+                      bounds_text(vary[j].lower, vary[j].upper)));
     }
   }
   std::vector<MeasuredCurves> data;
@@ -231,8 +237,8 @@ int run_fit(const FitOptions& options) {
     bool found = false;
     for (const MeasuredCurves& d : data) {
       for (const MeasuredColumn& c : d.columns) {
-        found = found || canonical_column_name(d.table.columns[c.index]) ==
-                             canonical_column_name(name);
+        found =
+            found || canonical_column_name(d.table.columns[c.index]) == canonical_column_name(name);
       }
     }
     if (!found) return usage(fmt::format("--scale {}: no data file measures '{}'", name, name));
@@ -246,8 +252,8 @@ int run_fit(const FitOptions& options) {
   std::error_code ec;
   fs::create_directories(work, ec);
   if (ec) {
-    return usage(fmt::format("cannot create the work directory '{}': {}", work.string(),
-                             ec.message()));
+    return usage(
+        fmt::format("cannot create the work directory '{}': {}", work.string(), ec.message()));
   }
   std::vector<double> lower, upper, typical;
   for (std::size_t j = 0; j < vary.size(); ++j) {
@@ -255,7 +261,7 @@ int run_fit(const FitOptions& options) {
     upper.push_back(vary[j].upper);
     // The size of the difference step where the value is 0: the bounds' width, else 1.
     const double width = vary[j].upper - vary[j].lower;
-    typical.push_back(initial[j] != 0.0 ? std::abs(initial[j])
+    typical.push_back(initial[j] != 0.0      ? std::abs(initial[j])
                       : std::isfinite(width) ? width
                                              : 1.0);
   }
@@ -290,8 +296,8 @@ int run_fit(const FitOptions& options) {
         std::optional<std::vector<double>> model = model_values(*d, *initial_tables[r], &error);
         if (!model) {
           release_stop_signals();
-          return usage(fmt::format("{} (the run of {} at the deck's values)", error,
-                                   fit_rigs[r].deck_name));
+          return usage(
+              fmt::format("{} (the run of {} at the deck's values)", error, fit_rigs[r].deck_name));
         }
         pair.initial = std::move(*model);
       }
@@ -311,13 +317,12 @@ int run_fit(const FitOptions& options) {
 
   const std::size_t m = evaluator.residual_count();
   if (!options.quiet) {
-    std::cout << fmt::format("{}: fit of {} parameter{} to {} data file{} ({} points), {} "
-                             "(Ceres Solver), runs in {}\n",
-                             fit_rigs.front().deck_name, names.size(),
-                             names.size() == 1 ? "" : "s", data.size(),
-                             data.size() == 1 ? "" : "s", m,
-                             options.method == "dogleg" ? "dogleg" : "Levenberg-Marquardt",
-                             work.string());
+    std::cout << fmt::format(
+        "{}: fit of {} parameter{} to {} data file{} ({} points), {} "
+        "(Ceres Solver), runs in {}\n",
+        fit_rigs.front().deck_name, names.size(), names.size() == 1 ? "" : "s", data.size(),
+        data.size() == 1 ? "" : "s", m,
+        options.method == "dogleg" ? "dogleg" : "Levenberg-Marquardt", work.string());
   }
   FitSettings settings;
   settings.loss = loss->first;
@@ -341,7 +346,8 @@ int run_fit(const FitOptions& options) {
   // The statistics at the optimum, and the runs there for the "after" curves.
   const Eigen::MatrixXd* jacobian = evaluator.jacobian(outcome.values);
   const Eigen::VectorXd* residuals = evaluator.residuals(outcome.values);
-  std::vector<std::optional<CsvTable>> fitted_tables = evaluator.run_tables(outcome.values, "fitted");
+  std::vector<std::optional<CsvTable>> fitted_tables =
+      evaluator.run_tables(outcome.values, "fitted");
   const char* const stopped_by = stop_signal_name();
   release_stop_signals();
   FitStatistics statistics;
@@ -392,8 +398,7 @@ int run_fit(const FitOptions& options) {
   for (std::size_t j = 0; j < names.size(); ++j) {
     text += fmt::format("{:<{}}  {:>12}  {:>12}  {:>12}  {}\n", names[j], width,
                         value_text(initial[j]), value_text(outcome.values[j]),
-                        value_text(statistics.standard_errors[j]),
-                        bounds_text(lower[j], upper[j]));
+                        value_text(statistics.standard_errors[j]), bounds_text(lower[j], upper[j]));
   }
   if (statistics.identifiable() && names.size() > 1) {
     text += "correlation\n";
@@ -412,8 +417,8 @@ int run_fit(const FitOptions& options) {
     for (const MeasuredColumn& col : c.data->columns) {
       columns += (columns.empty() ? "" : ", ") + c.data->table.columns[col.index];
     }
-    text += fmt::format("  {}  ({} against {}, {} points): {} -> {}\n", c.data->table.path,
-                        columns, c.data->table.columns[c.data->abscissa], c.data->point_count(),
+    text += fmt::format("  {}  ({} against {}, {} points): {} -> {}\n", c.data->table.path, columns,
+                        c.data->table.columns[c.data->abscissa], c.data->point_count(),
                         value_text(root_mean_square(c.initial, *c.data)),
                         c.fitted.empty() ? "-" : value_text(root_mean_square(c.fitted, *c.data)));
   }

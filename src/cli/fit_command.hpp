@@ -21,7 +21,7 @@ namespace clinch {
 struct FitOptions {
   std::vector<std::string> decks;
   std::vector<std::string> data;
-  std::vector<std::string> vary;   // NAME or NAME=LO:HI, either bound may be left out
+  std::vector<std::string> vary;  // NAME or NAME=LO:HI, either bound may be left out
   std::string abscissa = "total_time";
   std::vector<std::string> scales;  // COLUMN=S
   std::string loss = "none";        // none, huber, cauchy or soft_l1, with an optional :S

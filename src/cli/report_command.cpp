@@ -7,6 +7,7 @@
 #include <iostream>
 #include <set>
 
+#include "src/fit/fit_tables.hpp"
 #include "src/output/abaqus_labels.hpp"
 #include "src/output/csv_table.hpp"
 #include "src/output/iteration_log_reader.hpp"
@@ -140,6 +141,19 @@ int run_report(const ReportOptions& options) {
     }
     inputs.study_csv = fs::absolute(*options.study).string();
   }
+  if (options.fit) {
+    std::ifstream probe(*options.fit);
+    std::string header;
+    if (!probe || !std::getline(probe, header)) {
+      std::cerr << fmt::format("clinch: error: cannot read the fit curves '{}'\n", *options.fit);
+      return kExitUsage;
+    }
+    if (header != kFitCurvesHeader) {
+      std::cerr << fmt::format(
+          "clinch: error: {}:1: not a <job>.fit-curves.csv of `clinch fit`\n", *options.fit);
+      return kExitUsage;
+    }
+  }
   const std::string page = options.output.value_or((dir / (*job + ".report.html")).string());
   const std::string data_path = page + ".json";
   {
@@ -156,6 +170,10 @@ int run_report(const ReportOptions& options) {
   if (inputs.study_csv) {
     script_args.push_back("--study");
     script_args.push_back(*inputs.study_csv);
+  }
+  if (options.fit) {
+    script_args.push_back("--fit");
+    script_args.push_back(fs::absolute(*options.fit).string());
   }
   const bool drawn = run_plot_script("report_page.py", script_args, &error);
   fs::remove(data_path, ec);

@@ -19,13 +19,10 @@ class PointResidual final : public ceres::CostFunction {
     mutable_parameter_block_sizes()->push_back(static_cast<int>(typical.size()));
   }
 
-  bool Evaluate(double const* const* values, double* residual,
-                double** jacobians) const override {
+  bool Evaluate(double const* const* values, double* residual, double** jacobians) const override {
     std::vector<double> x(typical_.size());
     for (std::size_t k = 0; k < x.size(); ++k) x[k] = values[0][k] * typical_[k];
-    const Eigen::VectorXd* r = evaluator_.residuals(x);
-    if (r == nullptr) return false;
-    residual[0] = (*r)(point_);
+    // The Jacobian first: its batch runs the point together with the difference steps.
     if (jacobians != nullptr && jacobians[0] != nullptr) {
       const Eigen::MatrixXd* j = evaluator_.jacobian(x);
       if (j == nullptr) return false;
@@ -33,6 +30,9 @@ class PointResidual final : public ceres::CostFunction {
         jacobians[0][k] = (*j)(point_, static_cast<Eigen::Index>(k)) * typical_[k];
       }
     }
+    const Eigen::VectorXd* r = evaluator_.residuals(x);
+    if (r == nullptr) return false;
+    residual[0] = (*r)(point_);
     return true;
   }
 
@@ -87,8 +87,7 @@ FitOutcome solve_fit(RunEvaluator& evaluator, const std::vector<double>& initial
   const std::unique_ptr<ceres::LossFunction> loss = make_loss(settings.loss, settings.loss_scale);
   const auto m = static_cast<Eigen::Index>(evaluator.residual_count());
   for (Eigen::Index i = 0; i < m; ++i) {
-    problem.AddResidualBlock(new PointResidual(evaluator, i, typical), loss.get(),
-                             scaled.data());
+    problem.AddResidualBlock(new PointResidual(evaluator, i, typical), loss.get(), scaled.data());
   }
   for (int j = 0; j < n; ++j) {
     if (std::isfinite(lower[j])) {
@@ -100,9 +99,8 @@ FitOutcome solve_fit(RunEvaluator& evaluator, const std::vector<double>& initial
   }
   ceres::Solver::Options options;
   options.minimizer_type = ceres::TRUST_REGION;
-  options.trust_region_strategy_type = settings.method == FitMethod::Dogleg
-                                           ? ceres::DOGLEG
-                                           : ceres::LEVENBERG_MARQUARDT;
+  options.trust_region_strategy_type =
+      settings.method == FitMethod::Dogleg ? ceres::DOGLEG : ceres::LEVENBERG_MARQUARDT;
   options.linear_solver_type = ceres::DENSE_QR;
   options.max_num_iterations = settings.max_iterations;
   options.logging_type = ceres::SILENT;

@@ -21,8 +21,8 @@ inline constexpr double kIdentifiableSingularValue = 1e-3;
 
 struct FitStatistics {
   double residual_variance = 0.0;  // s²: the scaled residuals' variance, m − n degrees of freedom
-  std::vector<double> standard_errors;  // NaN for a parameter not determined
-  Eigen::MatrixXd correlation;          // NaN rows and columns for those parameters
+  std::vector<double> standard_errors;   // NaN for a parameter not determined
+  Eigen::MatrixXd correlation;           // NaN rows and columns for those parameters
   double smallest_singular_value = 0.0;  // of the column-scaled Jacobian
   // The parameters the data do not determine (indices), and the direction in which the residual
   // does not change (in units of each column's length), for the message.

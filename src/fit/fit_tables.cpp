@@ -32,15 +32,16 @@ bool write_parameter_table(const std::string& path, const std::vector<FittedPara
   out << "\n";
   for (std::size_t i = 0; i < parameters.size(); ++i) {
     const FittedParameter& p = parameters[i];
-    const bool determined = std::find(statistics.undetermined.begin(),
-                                      statistics.undetermined.end(),
-                                      i) == statistics.undetermined.end();
+    const bool determined =
+        std::find(statistics.undetermined.begin(), statistics.undetermined.end(), i) ==
+        statistics.undetermined.end();
     out << csv_field(p.name) << "," << number_field(p.initial) << "," << number_field(p.fitted)
-        << "," << number_field(statistics.standard_errors[i]) << "," << number_field(p.lower)
-        << "," << number_field(p.upper) << "," << (determined ? 1 : 0);
+        << "," << number_field(statistics.standard_errors[i]) << "," << number_field(p.lower) << ","
+        << number_field(p.upper) << "," << (determined ? 1 : 0);
     for (std::size_t j = 0; j < parameters.size(); ++j) {
-      out << "," << number_field(statistics.correlation(static_cast<Eigen::Index>(i),
-                                                        static_cast<Eigen::Index>(j)));
+      out << ","
+          << number_field(statistics.correlation(static_cast<Eigen::Index>(i),
+                                                 static_cast<Eigen::Index>(j)));
     }
     out << "\n";
   }
@@ -50,7 +51,7 @@ bool write_parameter_table(const std::string& path, const std::vector<FittedPara
 bool write_curves_table(const std::string& path, const std::vector<CurvePair>& curves,
                         std::string* error) {
   std::ofstream out(path);
-  out << "data,column,abscissa,x,measured,initial,fitted\n";
+  out << kFitCurvesHeader << "\n";
   for (const CurvePair& c : curves) {
     const CsvTable& t = c.data->table;
     std::size_t i = 0;

@@ -28,6 +28,9 @@ struct CurvePair {
   std::vector<double> initial, fitted;  // empty when the run failed
 };
 
+// The header of <job>.fit-curves.csv, by which `clinch report --fit` knows one.
+inline constexpr const char* kFitCurvesHeader = "data,column,abscissa,x,measured,initial,fitted";
+
 bool write_curves_table(const std::string& path, const std::vector<CurvePair>& curves,
                         std::string* error);
 

@@ -44,9 +44,10 @@ std::optional<MeasuredCurves> read_measured_curves(const std::string& path,
   const std::string header = fmt::format("{}:{}:1", path, t.header_line);
   const std::optional<std::size_t> x = find_column(t, abscissa);
   if (!x) {
-    *error = fmt::format("{}: error: no column '{}' to measure the curves against (--x names the "
-                         "abscissa; total_time unless it is given)",
-                         header, abscissa);
+    *error = fmt::format(
+        "{}: error: no column '{}' to measure the curves against (--x names the "
+        "abscissa; total_time unless it is given)",
+        header, abscissa);
     return std::nullopt;
   }
   curves.abscissa = *x;
@@ -57,8 +58,8 @@ std::optional<MeasuredCurves> read_measured_curves(const std::string& path,
   for (std::size_t r = 0; r < t.rows.size(); ++r) {
     for (std::size_t c = 0; c < t.columns.size(); ++c) {
       if (!std::isfinite(t.rows[r][c])) {
-        *error = fmt::format("{}:{}: error: '{}' is not finite: a measured value is a number",
-                             path, t.row_lines[r], t.columns[c]);
+        *error = fmt::format("{}:{}: error: '{}' is not finite: a measured value is a number", path,
+                             t.row_lines[r], t.columns[c]);
         return std::nullopt;
       }
     }
@@ -84,9 +85,10 @@ std::optional<MeasuredCurves> read_measured_curves(const std::string& path,
       double peak = 0.0;
       for (const std::vector<double>& row : t.rows) peak = std::max(peak, std::abs(row[c]));
       if (peak == 0.0) {
-        *error = fmt::format("{}: error: '{}' is zero throughout: give its scale with --scale "
-                             "{}=S",
-                             curves.header_position(c), t.columns[c], t.columns[c]);
+        *error = fmt::format(
+            "{}: error: '{}' is zero throughout: give its scale with --scale "
+            "{}=S",
+            curves.header_position(c), t.columns[c], t.columns[c]);
         return std::nullopt;
       }
       column.scale = peak;
@@ -94,9 +96,10 @@ std::optional<MeasuredCurves> read_measured_curves(const std::string& path,
     curves.columns.push_back(column);
   }
   if (curves.columns.empty()) {
-    *error = fmt::format("{}: error: no measured column: the header names only the abscissa '{}' "
-                         "and key columns",
-                         header, t.columns[*x]);
+    *error = fmt::format(
+        "{}: error: no measured column: the header names only the abscissa '{}' "
+        "and key columns",
+        header, t.columns[*x]);
     return std::nullopt;
   }
   return curves;
@@ -113,9 +116,10 @@ bool check_columns_written(const MeasuredCurves& curves, const CsvTable& run,
       written += (k > 4 ? ", " : "") + run.columns[k];
     }
     if (run.columns.size() > 16) written += ", ...";
-    *error = fmt::format("{}: error: the run of {} writes no column '{}' (it writes {}): request "
-                         "it in the deck's *OUTPUT, HISTORY",
-                         curves.header_position(c), deck, curves.table.columns[c], written);
+    *error = fmt::format(
+        "{}: error: the run of {} writes no column '{}' (it writes {}): request "
+        "it in the deck's *OUTPUT, HISTORY",
+        curves.header_position(c), deck, curves.table.columns[c], written);
     return false;
   }
   return true;
@@ -138,7 +142,8 @@ std::optional<std::vector<double>> model_values(const MeasuredCurves& curves, co
   for (std::size_t k = 1; k < order.size(); ++k) {
     if (xs[order[k]] < xs[order[k - 1]]) {
       *error = fmt::format(
-          "{}:{}: error: the run's {} turns back at {} (row {}): the model has no single value there; "
+          "{}:{}: error: the run's {} turns back at {} (row {}): the model has no single value "
+          "there; "
           "measure against total_time (--x total_time)",
           run.path, run.row_lines[order[k]], run.columns[x_column], xs[order[k]], order[k] + 1);
       return std::nullopt;
@@ -164,8 +169,8 @@ std::optional<std::vector<double>> model_values(const MeasuredCurves& curves, co
     }
     // The last row at or before x (the later state at a repeated abscissa), and the next one.
     const auto after = std::upper_bound(sorted_x.begin(), sorted_x.end(), x + tolerance);
-    const std::size_t k = static_cast<std::size_t>(std::max<std::ptrdiff_t>(
-        0, std::distance(sorted_x.begin(), after) - 1));
+    const std::size_t k = static_cast<std::size_t>(
+        std::max<std::ptrdiff_t>(0, std::distance(sorted_x.begin(), after) - 1));
     const bool at_row = sorted_x[k] >= x - tolerance || k + 1 == sorted_x.size();
     const double w = at_row ? 0.0 : (x - sorted_x[k]) / (sorted_x[k + 1] - sorted_x[k]);
     for (std::size_t column : model_columns) {

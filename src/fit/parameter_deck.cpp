@@ -43,7 +43,7 @@ std::optional<ParameterDeck> ParameterDeck::prepare(const std::string& path,
       return std::nullopt;
     }
     if (!entry->ok || !entry->value.is_number()) {
-      *error = fmt::format("{}: error: --vary {}: the parameter is not a number", 
+      *error = fmt::format("{}: error: --vary {}: the parameter is not a number",
                            sources.format(entry->loc), name);
       return std::nullopt;
     }

@@ -84,8 +84,8 @@ std::vector<std::optional<Eigen::VectorXd>> RunEvaluator::evaluate(
       std::optional<CsvTable> table;
       std::string error;
       if (outcome.state == SettingState::Completed) {
-        table = read_csv_table(
-            (fs::path(setting.out_dir) / (rig.job + ".history.csv")).string(), &error);
+        table = read_csv_table((fs::path(setting.out_dir) / (rig.job + ".history.csv")).string(),
+                               &error);
       } else {
         error = failure_reason(setting.out_dir, outcome);
       }
@@ -111,8 +111,8 @@ std::vector<std::optional<Eigen::VectorXd>> RunEvaluator::evaluate(
       }
     }
     if (complete && std::all_of(r.begin(), r.end(), [](double v) { return std::isfinite(v); })) {
-      results.emplace_back(Eigen::Map<const Eigen::VectorXd>(r.data(),
-                                                             static_cast<Eigen::Index>(r.size())));
+      results.emplace_back(
+          Eigen::Map<const Eigen::VectorXd>(r.data(), static_cast<Eigen::Index>(r.size())));
     } else {
       results.emplace_back();
     }
@@ -122,6 +122,12 @@ std::vector<std::optional<Eigen::VectorXd>> RunEvaluator::evaluate(
 
 const Eigen::VectorXd* RunEvaluator::residuals(const std::vector<double>& x) {
   auto it = residuals_.find(x);
+  if (it == residuals_.end() && options_.jobs > 1) {
+    // Runs at once to spare: the difference steps run with the point, ready for when Ceres
+    // accepts it (most trial points of a trust-region method are accepted).
+    jacobian(x);
+    it = residuals_.find(x);
+  }
   if (it == residuals_.end()) {
     it = residuals_.emplace(x, std::move(evaluate({x}, {"point"}).front())).first;
   }

@@ -1,9 +1,10 @@
 // The residuals of a fit as functions of the varied parameters (docs/fit.md "How a fit runs"):
 // each evaluation writes a deck copy per rig with the parameter values and runs it as a child
 // `clinch run` (src/study/ladder_runner.hpp), several at once; the Jacobian comes from forward
-// differences over whole runs, the perturbed points run together with the point itself. Results
-// are kept per point, so that the many residual blocks of one Ceres evaluation cost one batch of
-// runs, and a point that failed is not run again.
+// differences over whole runs, the perturbed points run together with the point itself (with
+// more than one job, also for a point whose residuals alone are asked for). Results are kept per
+// point, so that the many residual blocks of one Ceres evaluation cost one batch of runs, and a
+// point that failed is not run again.
 #pragma once
 
 #include <Eigen/Dense>

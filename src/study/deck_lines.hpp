@@ -1,5 +1,5 @@
-// A deck copy written elsewhere than the deck (`clinch study`, `clinch fit`): the deck file's lines,
-// edits that replace a column range of one line, and the edits that make the deck's relative
+// A deck copy written elsewhere than the deck (`clinch study`, `clinch fit`): the deck file's
+// lines, edits that replace a column range of one line, and the edits that make the deck's relative
 // *INCLUDE and INPUT= paths absolute so that the copy reads the same files from another directory.
 #pragma once
 

@@ -14,10 +14,13 @@ and the RMS of the scaled residual after the fit (the residual's unit is the col
 (with 20 points or more the RMS of pure noise is within 40 % of its sigma with probability above
 0.99).
 With --expect undetermined, the fit must instead exit 2 and name the parameters as not determined.
+With --data, the measured curves are the files given (one per deck, made at the --truth values
+with --noise), not made here.
 
 Usage: recovery.py --clinch CLINCH --work DIR --deck D.inp [--deck D2.inp] --truth a=1,b=2
        --vary a=lo:hi,b=lo:hi --measure COL[,COL] [--x COL] [--noise 0.01] [--seed 1]
        [--sigmas 3] [--max-relative-error 0.05] [--expect recovered|undetermined]
+       [--data MEASURED.csv ...]
 """
 import argparse
 import csv
@@ -67,6 +70,7 @@ def main():
     p.add_argument("--sigmas", type=float, default=3.0)
     p.add_argument("--max-relative-error", type=float, default=0.05)
     p.add_argument("--expect", choices=("recovered", "undetermined"), default="recovered")
+    p.add_argument("--data", action="append")
     a = p.parse_args()
     truth = {k: float(v) for k, v in (item.split("=") for item in a.truth.split(","))}
     columns = a.measure.split(",")
@@ -79,8 +83,8 @@ def main():
     for deck in a.deck:
         decks.append(os.path.join(a.work, os.path.basename(deck)))
         shutil.copy(deck, decks[-1])
-    data = []
-    for deck in a.deck:
+    data = a.data or []
+    for deck in [] if a.data else a.deck:
         stem = os.path.splitext(os.path.basename(deck))[0]
         known = os.path.join(a.work, f"{stem}.truth.inp")
         truth_deck(deck, truth, known)
@@ -116,14 +120,19 @@ def main():
             failed |= not good
             print(f"{name}: known {known:g}, fitted {value:.6g} +- {error:.3g}: off by "
                   f"{off / error:.2f} standard errors {'ok' if good else 'FAIL'}")
+    checked = 0
     for line in fit.stdout.splitlines():
-        match = re.match(r"\s+(\S+measured\.csv)\s+\(.*\): \S+ -> (\S+)$", line)
+        match = re.match(r"\s+(\S+\.csv)\s+\(.*\): \S+ -> (\S+)$", line)
         if match:
+            checked += 1
             rms = float(match.group(2))
             good = abs(rms / a.noise - 1.0) <= 0.4
             failed |= not good
             print(f"{match.group(1)}: RMS scaled residual {rms:.4g} against noise {a.noise:g} "
                   f"{'ok' if good else 'FAIL'}")
+    if checked != len(data):
+        print(f"FAIL: {checked} residual lines for {len(data)} data files")
+        failed = True
     return 1 if failed else 0
 
 
