@@ -435,6 +435,7 @@ int run_fit(const FitOptions& options) {
     }
     text += fmt::format("  run failed at {} ({}): {}\n", at, f.rig, f.reason);
   }
+  if (failed > 5) text += fmt::format("  and {} more failed runs\n", failed - 5);
   if (!statistics.identifiable()) {
     std::string which, direction;
     for (std::size_t j : statistics.undetermined) {

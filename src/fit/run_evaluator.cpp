@@ -14,14 +14,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Why a run failed: the last error line it printed, else how its process ended.
+// Why a run failed: the first diagnostic or error line it printed, else how its process ended.
 std::string failure_reason(const std::string& out_dir, const SettingOutcome& outcome) {
   std::ifstream in(fs::path(out_dir) / "run.out");
-  std::string line, last_error;
+  std::string line;
   while (std::getline(in, line)) {
-    if (line.find("error") != std::string::npos) last_error = line;
+    if (line.find("error") != std::string::npos) return line;
   }
-  if (!last_error.empty()) return last_error;
   if (!outcome.note.empty()) return outcome.note;
   return fmt::format("exit {}", outcome.exit_code);
 }

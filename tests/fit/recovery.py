@@ -14,13 +14,14 @@ and the RMS of the scaled residual after the fit (the residual's unit is the col
 (with 20 points or more the RMS of pure noise is within 40 % of its sigma with probability above
 0.99).
 With --expect undetermined, the fit must instead exit 2 and name the parameters as not determined.
+With --failed-runs, some runs of the fit must have failed (and the fit converged all the same).
 With --data, the measured curves are the files given (one per deck, made at the --truth values
 with --noise), not made here.
 
 Usage: recovery.py --clinch CLINCH --work DIR --deck D.inp [--deck D2.inp] --truth a=1,b=2
        --vary a=lo:hi,b=lo:hi --measure COL[,COL] [--x COL] [--noise 0.01] [--seed 1]
        [--sigmas 3] [--max-relative-error 0.05] [--expect recovered|undetermined]
-       [--data MEASURED.csv ...]
+       [--data MEASURED.csv ...] [--failed-runs]
 """
 import argparse
 import csv
@@ -71,6 +72,7 @@ def main():
     p.add_argument("--max-relative-error", type=float, default=0.05)
     p.add_argument("--expect", choices=("recovered", "undetermined"), default="recovered")
     p.add_argument("--data", action="append")
+    p.add_argument("--failed-runs", action="store_true")
     a = p.parse_args()
     truth = {k: float(v) for k, v in (item.split("=") for item in a.truth.split(","))}
     columns = a.measure.split(",")
@@ -130,6 +132,10 @@ def main():
             failed |= not good
             print(f"{match.group(1)}: RMS scaled residual {rms:.4g} against noise {a.noise:g} "
                   f"{'ok' if good else 'FAIL'}")
+    failures = re.search(r"^runs: \d+ \((\d+) failed\)", fit.stdout, re.M)
+    if a.failed_runs and not (failures and int(failures.group(1)) > 0):
+        print("FAIL: no run of the fit failed")
+        failed = True
     if checked != len(data):
         print(f"FAIL: {checked} residual lines for {len(data)} data files")
         failed = True
