@@ -103,7 +103,8 @@ std::optional<std::pair<FitLoss, double>> parse_loss(const std::string& text) {
   return std::nullopt;
 }
 
-// Reads and checks a deck as `clinch run` would; false (diagnostics printed) when it has errors.
+// Reads and checks a deck as `clinch run` would; the exit status (diagnostics printed) when it
+// cannot be run, nothing when it can.
 std::optional<int> check_deck(const std::string& path) {
   SourceManager sources;
   DiagnosticSink sink;
@@ -350,12 +351,20 @@ int run_fit(const FitOptions& options) {
       evaluator.run_tables(outcome.values, "fitted");
   const char* const stopped_by = stop_signal_name();
   release_stop_signals();
+  // Without the runs at and beside the fitted values there is no Jacobian, and no errors.
+  const bool have_statistics = jacobian != nullptr && residuals != nullptr;
   FitStatistics statistics;
-  if (jacobian != nullptr && residuals != nullptr) {
-    statistics = fit_statistics(*jacobian, *residuals);
+  if (have_statistics) {
+    // A robust loss: the rows weighted by ρ'(r²), as in the least-squares problem whose
+    // optimum is the same (iteratively reweighted least squares).
+    const Eigen::VectorXd root_weights = loss_weights(settings, *residuals).cwiseSqrt();
+    statistics = fit_statistics(root_weights.asDiagonal() * *jacobian,
+                                root_weights.cwiseProduct(*residuals));
   } else {
-    statistics = fit_statistics(Eigen::MatrixXd::Zero(1, static_cast<Eigen::Index>(names.size())),
-                                Eigen::VectorXd::Zero(1));
+    const auto n = static_cast<Eigen::Index>(names.size());
+    statistics.standard_errors.assign(names.size(), std::numeric_limits<double>::quiet_NaN());
+    statistics.correlation =
+        Eigen::MatrixXd::Constant(n, n, std::numeric_limits<double>::quiet_NaN());
   }
   {
     std::size_t k = 0;
@@ -400,7 +409,7 @@ int run_fit(const FitOptions& options) {
                         value_text(initial[j]), value_text(outcome.values[j]),
                         value_text(statistics.standard_errors[j]), bounds_text(lower[j], upper[j]));
   }
-  if (statistics.identifiable() && names.size() > 1) {
+  if (have_statistics && statistics.identifiable() && names.size() > 1) {
     text += "correlation\n";
     for (std::size_t i = 0; i < names.size(); ++i) {
       text += fmt::format("  {:<{}}", names[i], width);
@@ -454,6 +463,9 @@ int run_fit(const FitOptions& options) {
                           "the column-scaled Jacobian)",
                           direction, statistics.smallest_singular_value));
   }
+  if (!have_statistics) {
+    text += "no standard errors: the runs at or beside the fitted values failed\n";
+  }
   std::cout << text;
   if (!options.quiet) {
     std::cout << fmt::format("wrote {}, {}, {}\n", fmt::join(written_decks, ", "), fit_csv,
@@ -469,6 +481,10 @@ int run_fit(const FitOptions& options) {
   }
   if (!statistics.identifiable()) {
     std::cerr << "clinch: error: the data do not determine every varied parameter\n";
+    return kExitNotFitted;
+  }
+  if (!have_statistics) {
+    std::cerr << "clinch: error: no standard errors at the fitted values\n";
     return kExitNotFitted;
   }
   return kExitFitted;

@@ -72,6 +72,18 @@ std::unique_ptr<ceres::LossFunction> make_loss(FitLoss loss, double scale) {
 
 }  // namespace
 
+Eigen::VectorXd loss_weights(const FitSettings& settings, const Eigen::VectorXd& residuals) {
+  Eigen::VectorXd weights = Eigen::VectorXd::Ones(residuals.size());
+  const std::unique_ptr<ceres::LossFunction> loss = make_loss(settings.loss, settings.loss_scale);
+  if (!loss) return weights;
+  for (Eigen::Index i = 0; i < residuals.size(); ++i) {
+    double rho[3];
+    loss->Evaluate(residuals(i) * residuals(i), rho);
+    weights(i) = rho[1];
+  }
+  return weights;
+}
+
 FitOutcome solve_fit(RunEvaluator& evaluator, const std::vector<double>& initial,
                      const std::vector<double>& lower, const std::vector<double>& upper,
                      const FitSettings& settings) {

@@ -35,6 +35,11 @@ struct FitOutcome {
   double initial_cost = 0.0, final_cost = 0.0;  // ½Σρ(r²)
 };
 
+// The weight of each residual under the settings' loss at the optimum, ρ'(r²) (1 without a
+// loss): the weights of the least-squares problem that has the same optimum, for the standard
+// errors of a robust fit (docs/fit.md "Standard errors").
+Eigen::VectorXd loss_weights(const FitSettings& settings, const Eigen::VectorXd& residuals);
+
 // Minimises from `initial` within [lower, upper] (±inf where unbounded).
 FitOutcome solve_fit(RunEvaluator& evaluator, const std::vector<double>& initial,
                      const std::vector<double>& lower, const std::vector<double>& upper,
