@@ -188,6 +188,12 @@ int run_fit(const FitOptions& options) {
   }
 
   for (const std::string& deck : options.decks) {
+    if (deck == "-") {
+      return usage("a fit reads its decks as files: standard input cannot be read again for "
+                   "each copy");
+    }
+  }
+  for (const std::string& deck : options.decks) {
     if (const std::optional<int> status = check_deck(deck)) return *status;
   }
   std::vector<std::string> names;
