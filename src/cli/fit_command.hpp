@@ -8,8 +8,8 @@
 // <deck>.fitted.inp beside each deck and <job>.fit.csv, <job>.fit-curves.csv into the work
 // directory. Exit 0 = converged with every parameter determined by the data, 1 = a deck has
 // errors (nothing was run), 2 = not converged, a parameter not determined, the runs at the
-// deck's own values failed, or stopped by SIGINT/SIGTERM, 3 = usage or I/O error (bad --vary,
-// a data column the run does not write, a missing file).
+// deck's own values or at the fitted ones failed, or stopped by SIGINT/SIGTERM, 3 = usage or
+// I/O error (bad --vary, a data column the run does not write, a missing file).
 #pragma once
 
 #include <optional>
