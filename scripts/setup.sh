@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 packages=(g++ cmake ninja-build pkg-config python3
           libeigen3-dev libsuitesparse-dev libopenblas-dev libopenblas0-pthread
           libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libfmt-dev nlohmann-json3-dev
-          libre2-dev petsc-dev
+          libre2-dev petsc-dev libceres-dev
           python3-matplotlib chromium)
 missing=()
 for p in "${packages[@]}"; do

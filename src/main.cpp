@@ -1,5 +1,5 @@
-// The clinch command line (cli-contract.md): `run`, `check`, `compare`, `study`, `report` and
-// `keywords`.
+// The clinch command line (cli-contract.md): `run`, `check`, `compare`, `study`, `fit`, `report`
+// and `keywords`.
 // Usage errors, and standard output that cannot be written, exit with 3.
 #include <csignal>
 #include <iostream>
@@ -8,6 +8,7 @@
 
 #include "src/cli/check_command.hpp"
 #include "src/cli/compare_command.hpp"
+#include "src/cli/fit_command.hpp"
 #include "src/cli/huge_pages.hpp"
 #include "src/cli/keywords_command.hpp"
 #include "src/cli/report_command.hpp"
@@ -131,6 +132,58 @@ int run_command_line(int argc, char** argv) {
       "skip the work-precision plot (it needs python3 with matplotlib)");
   study->add_flag("--quiet", study_options.quiet, "print nothing but warnings and errors");
 
+  clinch::FitOptions fit_options;
+  CLI::App* fit = app.add_subcommand(
+      "fit",
+      "Calibrate the deck's *PARAMETER values named by --vary against measured curves: each "
+      "evaluation runs a copy of the deck (never the deck itself) as a child `clinch run`, Ceres "
+      "Solver minimises the scaled differences at the data points (Levenberg-Marquardt or "
+      "dogleg, bounds, optional robust loss, derivatives by finite differences over whole runs); "
+      "prints the fitted values, standard errors, correlations, the residual per data file, runs "
+      "and time; writes <deck>.fitted.inp beside each deck, <job>.fit.csv and "
+      "<job>.fit-curves.csv into the work directory; exit 0 = converged with every parameter "
+      "determined, 1 = deck errors (nothing run), 2 = not converged, a parameter the data do not "
+      "determine, the runs at the deck's values failed, or stopped by SIGINT or SIGTERM, 3 = "
+      "usage or I/O error");
+  fit->add_option("DECK", fit_options.decks,
+                  "the deck (.inp); several decks are several rigs, each compared with its own "
+                  "--data file")
+      ->required();
+  fit->add_option("--data", fit_options.data,
+                  "measured curves (.csv): history column names as a run writes them (Abaqus "
+                  "labels accepted), the abscissa and one or more measured columns; repeat for "
+                  "several files")
+      ->required();
+  fit->add_option("--vary", fit_options.vary,
+                  "the *PARAMETER names to fit, NAME or NAME=LO:HI (bounds; either may be left "
+                  "out), comma-separated; the deck's values are the start")
+      ->delimiter(',')
+      ->required();
+  fit->add_option("--x", fit_options.abscissa,
+                  "the data's abscissa column (e.g. CU1@1); the run's curve is interpolated there")
+      ->capture_default_str();
+  fit->add_option("--scale", fit_options.scales,
+                  "COLUMN=S: the residual of COLUMN is (model - measured)/S (default: the "
+                  "column's largest |measured value|), comma-separated")
+      ->delimiter(',');
+  fit->add_option("--loss", fit_options.loss,
+                  "none, or a robust loss on each scaled residual: huber, cauchy or soft_l1, "
+                  "with :S its scale (default 1)")
+      ->capture_default_str();
+  fit->add_option("--method", fit_options.method, "trust-region strategy")
+      ->check(CLI::IsMember({"lm", "dogleg"}))
+      ->capture_default_str();
+  fit->add_option("--max-iterations", fit_options.max_iterations, "Ceres iterations at most")
+      ->check(CLI::Range(1, 10000))
+      ->capture_default_str();
+  fit->add_option("--jobs", fit_options.jobs, "runs at once (default: one per core)")
+      ->check(CLI::Range(1, 1024));
+  fit->add_option("--work", fit_options.work_dir,
+                  "directory for the deck copies, their runs and the fit's tables (default: "
+                  "<job>.fit)");
+  fit->add_flag("--quiet", fit_options.quiet,
+                "print the result only, not the iterations and what was written");
+
   clinch::ReportOptions report_options;
   CLI::App* report = app.add_subcommand(
       "report",
@@ -138,8 +191,8 @@ int run_command_line(int argc, char** argv) {
       "per connector the parts of each component's force against its motion (Abaqus names), "
       "time histories with step names, the Newton convergence "
       "of each increment with cutbacks marked, golden overlays with the tolerance band and the "
-      "worst deviation, and a study's work-precision plot; exit 0 = written, 3 = usage or I/O "
-      "error");
+      "worst deviation, a study's work-precision plot, and a fit's measured and fitted "
+      "curves; exit 0 = written, 3 = usage or I/O error");
   report->add_option("RUN_DIR", report_options.run_dir, "directory a `clinch run` wrote")
       ->required();
   report->add_option("--job", report_options.job,
@@ -156,6 +209,9 @@ int run_command_line(int argc, char** argv) {
       ->check(tolerance)
       ->capture_default_str();
   report->add_option("--study", report_options.study, "a <job>.study.csv of `clinch study`");
+  report->add_option("--fit", report_options.fit,
+                     "a <job>.fit-curves.csv of `clinch fit`: the measured curves with the model "
+                     "before and after the fit");
   report
       ->add_option("--connectors", report_options.max_connectors,
                    "draw the first N connectors and nodes of the history table")
@@ -224,6 +280,7 @@ int run_command_line(int argc, char** argv) {
   }
   if (compare->parsed()) return clinch::run_compare(compare_arguments);
   if (study->parsed()) return clinch::run_study(study_options);
+  if (fit->parsed()) return clinch::run_fit(fit_options);
   if (report->parsed()) return clinch::run_report(report_options);
   if (keywords->parsed()) {
     keywords_options.format = keywords_format == "markdown" ? clinch::KeywordsFormat::Markdown

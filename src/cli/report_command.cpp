@@ -4,9 +4,11 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <set>
 
+#include "src/fit/fit_tables.hpp"
 #include "src/output/abaqus_labels.hpp"
 #include "src/output/csv_table.hpp"
 #include "src/output/iteration_log_reader.hpp"
@@ -21,6 +23,22 @@ namespace fs = std::filesystem;
 
 constexpr int kExitWritten = 0, kExitUsage = 3;
 constexpr std::string_view kHistorySuffix = ".history.csv";
+
+// Whether the first line of the table at `path` is one `accepts`; says why not on stderr.
+bool has_header(const std::string& path, std::string_view what, std::string_view kind,
+                const std::function<bool(const std::string&)>& accepts) {
+  std::ifstream probe(path);
+  std::string header;
+  if (!probe || !std::getline(probe, header)) {
+    std::cerr << fmt::format("clinch: error: cannot read {} '{}'\n", what, path);
+    return false;
+  }
+  if (!accepts(header)) {
+    std::cerr << fmt::format("clinch: error: {}:1: not a {}\n", path, kind);
+    return false;
+  }
+  return true;
+}
 
 // The job whose history table RUN_DIR holds, when there is exactly one.
 std::optional<std::string> only_job(const fs::path& dir, std::string* error) {
@@ -126,19 +144,17 @@ int run_report(const ReportOptions& options) {
     inputs.golden = &*golden;
     inputs.comparison = &*comparison;
   }
-  if (options.study) {
-    std::ifstream probe(*options.study);
-    std::string header;
-    if (!probe || !std::getline(probe, header)) {
-      std::cerr << fmt::format("clinch: error: cannot read the study table '{}'\n", *options.study);
-      return kExitUsage;
-    }
-    if (header.rfind("setting,scale,state,", 0) != 0) {
-      std::cerr << fmt::format("clinch: error: {}:1: not a <job>.study.csv of `clinch study`\n",
-                               *options.study);
-      return kExitUsage;
-    }
-    inputs.study_csv = fs::absolute(*options.study).string();
+  // A study's or a fit's table is known by its header; the script reads the rest.
+  if (options.study &&
+      !has_header(*options.study, "the study table", "<job>.study.csv of `clinch study`",
+                  [](const std::string& h) { return h.rfind("setting,scale,state,", 0) == 0; })) {
+    return kExitUsage;
+  }
+  if (options.study) inputs.study_csv = fs::absolute(*options.study).string();
+  if (options.fit &&
+      !has_header(*options.fit, "the fit curves", "<job>.fit-curves.csv of `clinch fit`",
+                  [](const std::string& h) { return h == kFitCurvesHeader; })) {
+    return kExitUsage;
   }
   const std::string page = options.output.value_or((dir / (*job + ".report.html")).string());
   const std::string data_path = page + ".json";
@@ -156,6 +172,10 @@ int run_report(const ReportOptions& options) {
   if (inputs.study_csv) {
     script_args.push_back("--study");
     script_args.push_back(*inputs.study_csv);
+  }
+  if (options.fit) {
+    script_args.push_back("--fit");
+    script_args.push_back(fs::absolute(*options.fit).string());
   }
   const bool drawn = run_plot_script("report_page.py", script_args, &error);
   fs::remove(data_path, ec);

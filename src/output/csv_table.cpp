@@ -7,6 +7,7 @@
 #include <deque>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -144,6 +145,7 @@ std::optional<CsvTable> parse_csv_table(const std::string& path, std::string_vie
   std::string why;
   while (pos < text.size()) {
     const std::size_t record_line = line;
+    const std::size_t record_start = pos;
     if (!have_header) {
       // `#` lines before the header are notes, whatever they hold.
       std::size_t eol = text.find('\n', pos);
@@ -161,7 +163,17 @@ std::optional<CsvTable> parse_csv_table(const std::string& path, std::string_vie
     }
     if (record.blank()) continue;
     if (!have_header) {
+      table.header_line = record_line;
+      // A record starts a line: the names on it have a column, those of a quoted field that
+      // spans lines or holds doubled quotes (read into a copy) are given column 1.
+      const std::string_view header_text =
+          text.substr(record_start, text.find('\n', record_start) - record_start);
+      const std::less<const char*> before;
       for (const std::string_view name : record.fields) {
+        const bool on_line = !before(name.data(), header_text.data()) &&
+                             !before(header_text.data() + header_text.size(), name.data());
+        table.header_columns.push_back(
+            on_line ? static_cast<std::size_t>(name.data() - header_text.data()) + 1 : 1);
         if (name.empty()) {
           *error = fmt::format("{}:{}: empty column name in the header", path, record_line);
           return std::nullopt;

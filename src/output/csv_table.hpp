@@ -17,6 +17,9 @@ struct CsvTable {
   std::vector<std::string> columns;
   std::vector<std::vector<double>> rows;  // each row has columns.size() values
   std::vector<std::size_t> row_lines;     // 1-based file line of each row
+  // The header's 1-based file line, and the 1-based column of each name on it, for messages.
+  std::size_t header_line = 0;
+  std::vector<std::size_t> header_columns;
 
   // Index of the column named `name`, or nullopt.
   std::optional<std::size_t> column_index(std::string_view name) const;

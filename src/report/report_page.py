@@ -7,9 +7,10 @@ its motion, the components that carry nothing listed instead, and time histories
 quantity and the step names; per node, time histories; the Newton convergence of every increment attempt (residual and correction
 norms, log scale) with cutbacks marked; per golden column, the result over the golden values
 with the tolerance band of `clinch compare` and the worst deviation marked; the work-precision
-plot of a study.
+plot of a study; per measured column of a fit, the measured points with the model before and
+after (fit_plot.py).
 
-Usage: report_page.py DATA.json PAGE.html [--quiet] [--study STUDY.csv]
+Usage: report_page.py DATA.json PAGE.html [--quiet] [--study STUDY.csv] [--fit CURVES.csv]
 Exit 4 when matplotlib cannot be imported (clinch then tries another interpreter).
 """
 import html
@@ -29,6 +30,7 @@ except ImportError:
     sys.exit(4)
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import fit_plot  # noqa: E402
 import work_precision_plot  # noqa: E402
 from work_precision_plot import plain  # noqa: E402
 
@@ -454,12 +456,14 @@ def read_data(path):
 
 
 def main():
-    args, study_csv, rest = [], None, sys.argv[1:]
+    args, study_csv, fit_csv, rest = [], None, None, sys.argv[1:]
     while rest:
         arg = rest.pop(0)
         if arg == "--study" and rest:
             # The path as given, not through the JSON text, which holds names only as UTF-8.
             study_csv = rest.pop(0)
+        elif arg == "--fit" and rest:
+            fit_csv = rest.pop(0)
         elif arg != "--quiet":
             args.append(arg)
     if len(args) != 2:
@@ -546,6 +550,17 @@ def main():
                     "Estimated error of each setting of the study against its wall time",
                     settings=len(settings))
         page.add(settings_table(settings))
+    if fit_csv is not None:
+        try:
+            curves = fit_plot.read_curves(fit_csv)
+        except (OSError, ValueError, IndexError) as e:
+            print(f"report_page.py: {e}", file=sys.stderr)
+            return 3
+        page.add(f"<h2>Fit: {html.escape(fit_csv)}</h2>")
+        for (data_file, column), (abscissa, rows) in curves.items():
+            page.figure(fit_plot.figure(abscissa, column, rows), "fit",
+                        f"{column} of {data_file}: measured, and the model before and after "
+                        "the fit", column=column, data=data_file)
     if page.progress:
         sys.stderr.write("\r" + " " * 50 + "\r")
     with open(args[1], "w", encoding="utf-8") as f:

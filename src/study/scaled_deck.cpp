@@ -4,27 +4,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 
 namespace clinch {
 namespace {
 
-// A real as the deck reader takes it ("0.25", "1.0", "1e-05").
-std::string real_text(double value) {
-  std::string text = fmt::format("{}", value);
-  if (text.find_first_of(".eEn") == std::string::npos) text += ".0";
-  return text;
-}
-
 std::string static_data_line(const ScaledIncrements& s) {
-  if (s.direct) return fmt::format("{}, {}", real_text(s.initial), real_text(s.period));
-  return fmt::format("{}, {}, {}, {}", real_text(s.initial), real_text(s.period),
-                     real_text(s.minimum), real_text(s.maximum));
-}
-
-// Length of a line without its carriage return.
-std::size_t content_length(const std::string& line) {
-  return !line.empty() && line.back() == '\r' ? line.size() - 1 : line.size();
+  if (s.direct) return fmt::format("{}, {}", deck_real(s.initial), deck_real(s.period));
+  return fmt::format("{}, {}, {}, {}", deck_real(s.initial), deck_real(s.period),
+                     deck_real(s.minimum), deck_real(s.maximum));
 }
 
 }  // namespace
@@ -45,18 +32,8 @@ ScaledIncrements scale_increments(const StaticProcedure& procedure, int max_incr
 
 std::optional<ScaledDeck> ScaledDeck::prepare(const Model& model, const SourceManager& sources,
                                               std::string* error) {
-  namespace fs = std::filesystem;
   ScaledDeck deck;
-  const std::string_view text = sources.text(0);
-  for (std::size_t start = 0; start <= text.size();) {
-    const std::size_t end = text.find('\n', start);
-    if (end == std::string_view::npos) {
-      if (start < text.size()) deck.lines_.emplace_back(text.substr(start));
-      break;
-    }
-    deck.lines_.emplace_back(text.substr(start, end - start));
-    start = end + 1;
-  }
+  deck.lines_ = split_deck_lines(sources.text(0));
   const auto outside_deck = [&](SourceLoc loc, std::string_view what) {
     *error = fmt::format(
         "{}: error: {} lies in an included file: `clinch study` scales the "
@@ -88,7 +65,7 @@ std::optional<ScaledDeck> ScaledDeck::prepare(const Model& model, const SourceMa
       const std::string& line = deck.lines_[step.loc.line - 1];
       const std::size_t comma = line.find(',', step.loc.column - 1);
       inc.line = step.loc.line;
-      inc.begin = inc.end = (comma == std::string::npos ? content_length(line) : comma) + 1;
+      inc.begin = inc.end = (comma == std::string::npos ? line_content_length(line) : comma) + 1;
     }
     deck.edits_.push_back(inc);
     // The data line: replaced whole, or added after the keyword line and its continuations.
@@ -98,7 +75,7 @@ std::optional<ScaledDeck> ScaledDeck::prepare(const Model& model, const SourceMa
     if (procedure.data_loc.valid()) {
       data.line = procedure.data_loc.line;
       data.begin = 1;
-      data.end = content_length(deck.lines_[data.line - 1]) + 1;
+      data.end = line_content_length(deck.lines_[data.line - 1]) + 1;
     } else {
       std::size_t line = procedure.loc.line;
       while (line < deck.lines_.size()) {
@@ -108,49 +85,30 @@ std::optional<ScaledDeck> ScaledDeck::prepare(const Model& model, const SourceMa
         ++line;
       }
       data.line = line;
-      data.begin = data.end = content_length(deck.lines_[line - 1]) + 1;
+      data.begin = data.end = line_content_length(deck.lines_[line - 1]) + 1;
     }
     deck.edits_.push_back(data);
   }
-  for (std::uint32_t f = 1; f < sources.file_count(); ++f) {
-    const SourceLoc at = sources.file(f).included_from;
-    if (!at.valid() || at.file != 0) continue;
-    deck.edits_.push_back(Edit{.line = at.line,
-                               .begin = at.column,
-                               .end = at.column + at.length,
-                               .replacement = fs::absolute(sources.file(f).path).string()});
-  }
-  std::sort(deck.edits_.begin(), deck.edits_.end(), [](const Edit& a, const Edit& b) {
-    return a.line != b.line ? a.line < b.line : a.begin < b.begin;
-  });
+  deck.includes_ = absolute_include_edits(sources);
   return deck;
 }
 
 std::string ScaledDeck::text(double scale) const {
-  std::vector<std::string> lines = lines_;
-  // Right to left within a line, so that earlier columns stay valid.
-  for (auto it = edits_.rbegin(); it != edits_.rend(); ++it) {
-    std::string replacement = it->replacement;
-    if (it->kind != Edit::Kind::Fixed) {
-      const StepIncrements& s = steps_[it->step];
-      const ScaledIncrements scaled = scale_increments(s.procedure, s.max_increments, scale);
-      if (it->kind == Edit::Kind::StepInc) {
-        replacement = it->begin == it->end ? fmt::format(", INC={}", scaled.max_increments)
-                                           : fmt::format("{}", scaled.max_increments);
-      } else {
-        replacement = it->begin == it->end ? fmt::format("\n{}", static_data_line(scaled))
-                                           : static_data_line(scaled);
-      }
+  std::vector<DeckLineEdit> edits = includes_;
+  for (const Edit& e : edits_) {
+    const StepIncrements& s = steps_[e.step];
+    const ScaledIncrements scaled = scale_increments(s.procedure, s.max_increments, scale);
+    std::string replacement;
+    if (e.kind == Edit::Kind::StepInc) {
+      replacement = e.begin == e.end ? fmt::format(", INC={}", scaled.max_increments)
+                                     : fmt::format("{}", scaled.max_increments);
+    } else {
+      replacement = e.begin == e.end ? fmt::format("\n{}", static_data_line(scaled))
+                                     : static_data_line(scaled);
     }
-    std::string& line = lines[it->line - 1];
-    line.replace(it->begin - 1, it->end - it->begin, replacement);
+    edits.push_back({e.line, e.begin, e.end, std::move(replacement)});
   }
-  std::string out;
-  for (const std::string& line : lines) {
-    out += line;
-    out += '\n';
-  }
-  return out;
+  return apply_line_edits(lines_, std::move(edits));
 }
 
 }  // namespace clinch

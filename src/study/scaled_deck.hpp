@@ -12,6 +12,7 @@
 
 #include "parser/source_manager.hpp"
 #include "src/model/model.hpp"
+#include "src/study/deck_lines.hpp"
 
 namespace clinch {
 
@@ -41,13 +42,13 @@ class ScaledDeck {
   std::string text(double scale) const;
 
  private:
+  // An edit whose text depends on the scale: a step's INC or its *STATIC data line.
   struct Edit {
-    std::size_t line = 0;     // 1-based
-    std::size_t begin = 0;    // 1-based column of the first replaced character
-    std::size_t end = 0;      // 1-based column past the last one (begin == end: insertion)
-    std::string replacement;  // may depend on the scale: see Kind
-    enum class Kind { Fixed, StaticData, StepInc } kind = Kind::Fixed;
-    std::size_t step = 0;  // for StaticData and StepInc
+    std::size_t line = 0;   // 1-based
+    std::size_t begin = 0;  // 1-based column of the first replaced character
+    std::size_t end = 0;    // 1-based column past the last one (begin == end: insertion)
+    enum class Kind { StaticData, StepInc } kind = Kind::StaticData;
+    std::size_t step = 0;
   };
 
   std::vector<std::string> lines_;  // the deck's lines without their line ends
@@ -56,7 +57,8 @@ class ScaledDeck {
     int max_increments = 0;
   };
   std::vector<StepIncrements> steps_;
-  std::vector<Edit> edits_;  // sorted by (line, begin)
+  std::vector<Edit> edits_;
+  std::vector<DeckLineEdit> includes_;  // the include paths made absolute
 };
 
 }  // namespace clinch
