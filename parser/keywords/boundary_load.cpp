@@ -58,11 +58,20 @@ class ConditionHandler : public KeywordHandler {
         break;
     }
     const std::string_view type = params.enum_value("TYPE");
-    if (type == "VELOCITY" || type == "ACCELERATION") {
+    // A dynamic step's *BOUNDARY may prescribe the velocity or the acceleration of a DOF; the
+    // *DYNAMIC line comes before the conditions of its step.
+    const bool rate_boundary = (type == "VELOCITY" || type == "ACCELERATION") &&
+                               kind_ == ConditionKind::Boundary && in_step_ &&
+                               current_step(ctx).dynamic;
+    if ((type == "VELOCITY" || type == "ACCELERATION") && !rate_boundary) {
       ctx.report(DiagCode::unsupported_option, params.loc("TYPE", true),
-                 fmt::format("TYPE={} on {} is not supported by clinch (static steps prescribe "
-                             "displacements)",
-                             type, keyword));
+                 kind_ == ConditionKind::Boundary
+                     ? fmt::format("TYPE={} on {} is not supported by clinch outside a *DYNAMIC "
+                                   "step (static steps prescribe displacements)",
+                                   type, keyword)
+                     : fmt::format("TYPE={} on {} is not supported by clinch (it prescribes the "
+                                   "component's displacement)",
+                                   type, keyword));
       skip_ = true;
     }
     if (skip_) return;  // a rejected block defines nothing (and takes no part in W0805)
@@ -72,6 +81,7 @@ class ConditionHandler : public KeywordHandler {
     block.op_new = params.enum_value("OP") == "NEW";
     block.fixed = params.has("FIXED");
     block.explicit_type = type == "DISPLACEMENT";
+    block.rate_order = !rate_boundary ? 0 : type == "VELOCITY" ? 1 : 2;
     fixed_ = block.fixed;
     if (block.fixed && params.has("TYPE")) {
       ctx.report(DiagCode::conflicting_parameters, params.loc("FIXED"),

@@ -734,6 +734,18 @@ double ConnectorSystem::nodal_rate(std::int32_t node, int dof, int order) const 
   return eq >= 0 && eq < rate.size() ? rate[eq] : 0.0;
 }
 
+double ConnectorSystem::converged_rate(int equation, int order) const {
+  const Eigen::VectorXd& rate = order == 1 ? state_.v_n : state_.a_n;
+  return equation < rate.size() ? rate[equation] : 0.0;
+}
+
+double ConnectorSystem::displacement_of_rate(int equation, int order, double rate) const {
+  const double u0 = state_.x_n[equation];
+  // Outside an increment of a dynamic step (its start state) the DOF stays where it is.
+  if (!newmark_ || newmark_->dt <= 0.0 || equation >= state_.v_n.size()) return u0;
+  return newmark_->value_of_rate(u0, state_.v_n[equation], state_.a_n[equation], order, rate);
+}
+
 ModelEnergies ConnectorSystem::energies() const {
   if (!energy_) return {};
   ModelEnergies e = energy_->energies();

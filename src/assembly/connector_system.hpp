@@ -132,6 +132,13 @@ class ConnectorSystem final : public NonlinearProblem {
   double applied_load(std::int32_t node, int dof) const;  // CF/CM
   // V/VR (order 1) and A/AR (order 2) of DOF `dof` of `node` (0 without a dynamic step).
   double nodal_rate(std::int32_t node, int dof, int order) const;
+  // The converged velocity (order 1) or acceleration (2) of `equation`, 0 without a dynamic step.
+  double converged_rate(int equation, int order) const;
+  // The value of `equation` at the end of the increment whose velocity (order 1) or acceleration
+  // (2) there is `rate`, by the step's operator from the converged state (*BOUNDARY,
+  // TYPE=VELOCITY or ACCELERATION; docs/dynamics.md); the converged value outside a dynamic
+  // increment.
+  double displacement_of_rate(int equation, int order, double rate) const;
   // The whole-model energies at the last converged increment (plan().energies; else zero).
   ModelEnergies energies() const;
   ConnectorOutput connector_output(std::size_t connector) const;

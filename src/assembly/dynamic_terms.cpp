@@ -45,6 +45,16 @@ void NewmarkIncrement::update_rates(AnalysisState& s) const {
   s.v = s.v_n + dt * ((1.0 - gamma) * s.a_n + gamma * s.a);
 }
 
+double NewmarkIncrement::value_of_rate(double u0, double v0, double a0, int order,
+                                       double rate) const {
+  if (backward_euler) {
+    const double v1 = order == 1 ? rate : v0 + dt * rate;
+    return u0 + dt * v1;
+  }
+  const double a1 = order == 2 ? rate : (rate - v0 - dt * (1.0 - gamma) * a0) / (gamma * dt);
+  return u0 + dt * v0 + dt * dt * ((0.5 - beta) * a0 + beta * a1);
+}
+
 void add_inertia(const std::vector<NodeInertia>& inertia, const NewmarkIncrement& increment,
                  const AnalysisState& state, const IncrementConditions& conditions,
                  InertiaTarget target, Eigen::VectorXd& inertia_force, ForceEntries& entries) {

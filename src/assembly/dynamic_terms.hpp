@@ -26,6 +26,9 @@ struct NewmarkIncrement {
   static NewmarkIncrement of(const DynamicProcedure& procedure, double dt);
   // v₁ and a₁ of every nodal equation at the trial values, from the converged state.
   void update_rates(AnalysisState& state) const;
+  // u₁ whose velocity (order 1) or acceleration (order 2) is `rate`, from u₀, v₀, a₀: the same
+  // relations solved the other way (a prescribed rate, *BOUNDARY TYPE=VELOCITY/ACCELERATION).
+  double value_of_rate(double u0, double v0, double a0, int order, double rate) const;
 };
 
 // Where the inertia terms go: the residual over every equation, the tangent in the storage of

@@ -53,6 +53,7 @@ StepConditions::Condition StepConditions::define(const ConditionBlock& block, co
   Condition c;
   c.start = start;
   c.magnitude = magnitude;
+  c.rate_order = block.rate_order;
   // A Riks step scales its values by the load proportionality factor, P₀ + λ(P_ref − P₀), the
   // ramp at τ = λ; amplitudes are ignored (docs/riks.md).
   const bool riks = step.procedure && step.procedure->riks;
@@ -155,7 +156,11 @@ void StepConditions::begin_step(std::size_t s, ConnectorSystem& system) {
         if (!((bc.dofs >> (dof - 1)) & 1u)) continue;
         const int eq = plan_.dofs.equation(node, dof);
         if (eq < 0) continue;  // inactive DOF: W0803 at check time
-        boundaries_[eq] = define(block, step, bc.magnitude, system.converged_value(eq), true);
+        // A prescribed rate starts from the rate the DOF has (docs/dynamics.md).
+        const double start = block.rate_order > 0
+                                 ? system.converged_rate(eq, block.rate_order)
+                                 : system.converged_value(eq);
+        boundaries_[eq] = define(block, step, bc.magnitude, start, true);
         released_loads_.erase(eq);
       }
     }
@@ -209,7 +214,13 @@ void StepConditions::apply(ConnectorSystem& system, double step_time, double tot
   auto value = [&](const Condition& c) { return c.value(tau, step_time, total_time, amplitudes_); };
   IncrementConditions& conditions = system.conditions();
   conditions.clear();
-  for (const auto& [eq, c] : boundaries_) conditions.prescribe(static_cast<int>(eq), value(c));
+  for (const auto& [eq, c] : boundaries_) {
+    const int equation = static_cast<int>(eq);
+    conditions.prescribe(equation, c.rate_order == 0
+                                       ? value(c)
+                                       : system.displacement_of_rate(equation, c.rate_order,
+                                                                     value(c)));
+  }
   for (const auto& [eq, c] : loads_) conditions.add_load(static_cast<int>(eq), value(c));
   for (const auto& [eq, c] : released_loads_) conditions.add_load(static_cast<int>(eq), value(c));
   for (const auto& [key, c] : gravity_) {
@@ -232,10 +243,12 @@ void StepConditions::apply(ConnectorSystem& system, double step_time, double tot
 void StepConditions::end_step(double period, double total_time, double tau) {
   for (Table* table : {&boundaries_, &loads_, &motions_, &connector_loads_, &gravity_}) {
     for (auto& [key, c] : *table) {
+      if (c.mode == Mode::Hold) continue;
       const bool follows_total_time =
           c.amplitude >= 0 && model_.history.amplitudes[static_cast<std::size_t>(c.amplitude)].total_time;
       if (follows_total_time) continue;
-      c = Condition{Mode::Hold, 0.0, c.value(tau, period, total_time, amplitudes_), -1};
+      c = Condition{Mode::Hold, 0.0, c.value(tau, period, total_time, amplitudes_), -1,
+                    c.rate_order};
     }
   }
   released_loads_.clear();

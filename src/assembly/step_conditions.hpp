@@ -27,6 +27,8 @@ class StepConditions {
   void apply(ConnectorSystem& system, double step_time, double total_time) const;
   // Records the values at the end of the step for the next one: at τ = 1, or at the load
   // proportionality factor a Riks step ended at.
+  // Holds every condition at its value at the end of the step (a prescribed rate stays a rate,
+  // as Abaqus carries a velocity condition into the next step).
   void end_step(double period, double total_time, double tau = 1.0);
 
  private:
@@ -36,6 +38,7 @@ class StepConditions {
     double start = 0;      // v₀
     double magnitude = 0;  // m (Hold: the held value)
     std::int32_t amplitude = -1;
+    int rate_order = 0;  // a *BOUNDARY of TYPE=VELOCITY (1) or ACCELERATION (2)
     double value(double tau, double step_time, double total_time,
                  const std::vector<std::optional<AmplitudeFunction>>& amplitudes) const;
   };

@@ -357,9 +357,11 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
        "With PARAMETERS=: the rows the manual gives for that parameter set.",
        {{"PARAMETERS=CONSTRAINTS or DIRECT CYCLIC", "not implemented"}}},
       {"BOUNDARY",
-       "Fixes or prescribes nodal degrees of freedom (ENCASTRE, PINNED, ... or values).",
+       "Fixes or prescribes nodal degrees of freedom (ENCASTRE, PINNED, ... or values); in a "
+       "*DYNAMIC step TYPE=VELOCITY or ACCELERATION prescribes that rate (docs/dynamics.md).",
        "`node or set, first DOF, last DOF, value`, or `node or set, ENCASTRE`.",
-       {{"TYPE=VELOCITY or ACCELERATION", "static steps prescribe displacements"},
+       {{"TYPE=VELOCITY or ACCELERATION outside a *DYNAMIC step",
+         "static steps prescribe displacements"},
         {"USER, SUBMODEL, LOAD CASE, REGION TYPE", "not implemented"},
         {"non-zero values in model data", "prescribe them in a step"}}},
       {"CLOAD", "Concentrated nodal forces and moments.",

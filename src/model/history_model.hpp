@@ -80,6 +80,9 @@ struct ConditionBlock {
   std::int32_t amplitude_index = -1;  // into HistoryModel::amplitudes, set by validation
   bool fixed = false;                 // FIXED (BC and motion)
   bool explicit_type = false;  // TYPE=DISPLACEMENT written (always RAMP without amplitude, §13)
+  // *BOUNDARY, TYPE=VELOCITY (1) or ACCELERATION (2) in a *DYNAMIC step (docs/dynamics.md):
+  // the value is that rate of the DOF; 0: its displacement.
+  int rate_order = 0;
 };
 
 // *BOUNDARY data line. DOFs as a mask (bit d − 1 for DOF d) because the named types are not
