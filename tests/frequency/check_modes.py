@@ -131,7 +131,7 @@ def displacement_normalized(phi):
 
 
 def chain_reference(rows):
-    n, m, k = 8, 2.0, 1000.0
+    n, m, k = 30, 2.0, 1000.0
     modes = []
     for j in range(1, n + 1):
         omega = 2.0 * math.sqrt(k / 2.0 / m) * math.sin((2 * j - 1) * math.pi / (2 * (2 * n + 1)))
@@ -143,7 +143,7 @@ def chain_reference(rows):
             shape[f"U1@{2 * i}"] = 0.5 * (at_mass[i - 1] + (at_mass[i - 2] if i > 1 else 0.0))
         modes.append((omega * omega, shape))
     lowest = [(lam, displacement_normalized_dict(s)) for lam, s in modes]
-    ranged = [(lam, mass_normalized_dict(s, m)) for lam, s in modes[2:4]]
+    ranged = [(lam, mass_normalized_dict(s, m)) for lam, s in modes[6:10]]
     return {1: lowest[:5], 2: lowest, 3: ranged}, {1: m, 2: m, 3: m}
 
 
@@ -218,7 +218,7 @@ def mechanism_reference(rows):
 def generalized_mass(row, case):
     """phi^T M phi from the modes file's shape, with the deck's masses (independent of clinch's)."""
     if case == "chain":
-        return sum(2.0 * float(row[f"U1@{2 * i + 1}"]) ** 2 for i in range(1, 9))
+        return sum(2.0 * float(row[f"U1@{2 * i + 1}"]) ** 2 for i in range(1, 31))
     if case == "bushing":
         _, m = bushing_matrices(1.0)
         phi = [float(row[n]) for n in ["U1@2", "U2@2", "U3@2", "UR1@2", "UR2@2", "UR3@2"]]
