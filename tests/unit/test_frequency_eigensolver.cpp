@@ -14,30 +14,35 @@ namespace {
 
 // u1 (mass 2) on a spring of 100 to the ground and one of 50 to u2 (no mass); u3 (mass 3) on a
 // spring of 30 to the ground, tied to u2 by the multiplier λ of u3 − u2 = 0.
+// With u2 = u3 eliminated by hand: K = [[150, −50], [−50, 80]], M = diag(2, 3), whose dense
+// generalized eigensolve is the reference.
 struct TiedSprings {
-  Eigen::MatrixXd k{{150, -50, 0, 0}, {-50, 50, 0, -1}, {0, 0, 30, 1}, {0, -1, 1, 0}};
+  SparseMatrix k = from_dense(
+      Eigen::MatrixXd{{150, -50, 0, 0}, {-50, 50, 0, -1}, {0, 0, 30, 1}, {0, -1, 1, 0}},
+      Storage::Upper);
   LumpedMass mass{{{0, 0, 2.0}, {2, 2, 3.0}}, {{{0, std::sqrt(2.0)}}, {{2, std::sqrt(3.0)}}}};
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix2d> reference{
+      Eigen::Matrix2d{{150, -50}, {-50, 80}}, Eigen::Matrix2d{{2, 0}, {0, 3}}};
+
+  EigenResult solve(const EigenRequest& request) const {
+    // Dense LU: K − σM is indefinite with the multiplier.
+    std::unique_ptr<LinearSolver> solver = make_linear_solver(SolverChoice::Dense, true, false);
+    std::string message;
+    EXPECT_EQ(solver->analyze(k, &message), LinearStatus::Ok) << message;
+    return solve_frequency_eigenproblem(k, mass, request, *solver);
+  }
 };
 
 TEST(FrequencyEigensolver, MultiplierAndMasslessDofGiveTheEliminatedSystemsEigenpairs) {
   const TiedSprings system;
-  const SparseMatrix k = from_dense(system.k, Storage::Upper);
-  std::unique_ptr<LinearSolver> solver = make_linear_solver(SolverChoice::Dense, true, false);
-  std::string message;
-  ASSERT_EQ(solver->analyze(k, &message), LinearStatus::Ok) << message;
   EigenRequest request;
   request.shift = request.lower = -1e-3;
   request.count = 2;
-  const EigenResult result = solve_frequency_eigenproblem(k, system.mass, request, *solver);
+  const EigenResult result = system.solve(request);
   ASSERT_TRUE(result.error.empty()) << result.error;
   ASSERT_EQ(result.pairs.size(), 2u);
   EXPECT_EQ(result.available, 2);
-
-  // With u2 = u3 eliminated: K = [[150, −50], [−50, 80]], M = diag(2, 3).
-  const Eigen::Matrix2d reduced_k{{150, -50}, {-50, 80}};
-  const Eigen::Matrix2d reduced_m{{2, 0}, {0, 3}};
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix2d> reference(reduced_k,
-                                                                            reduced_m);
+  const auto& reference = system.reference;
   for (int i = 0; i < 2; ++i) {
     const EigenPair& pair = result.pairs[static_cast<std::size_t>(i)];
     // Both eigensolves are direct on a 2 × 2 problem: round-off of eigenvalues of order 100.
@@ -54,19 +59,14 @@ TEST(FrequencyEigensolver, MultiplierAndMasslessDofGiveTheEliminatedSystemsEigen
 
 TEST(FrequencyEigensolver, TheRangeKeepsOnlyTheEigenvaluesInIt) {
   const TiedSprings system;
-  const SparseMatrix k = from_dense(system.k, Storage::Upper);
-  std::unique_ptr<LinearSolver> solver = make_linear_solver(SolverChoice::Dense, true, false);
-  std::string message;
-  ASSERT_EQ(solver->analyze(k, &message), LinearStatus::Ok) << message;
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix2d> reference(
-      Eigen::Matrix2d{{150, -50}, {-50, 80}}, Eigen::Matrix2d{{2, 0}, {0, 3}});
+  const Eigen::Vector2d& lambda = system.reference.eigenvalues();
   EigenRequest request;
   // Between the two eigenvalues: only the higher one.
-  request.shift = request.lower = 0.5 * (reference.eigenvalues()[0] + reference.eigenvalues()[1]);
-  const EigenResult result = solve_frequency_eigenproblem(k, system.mass, request, *solver);
+  request.shift = request.lower = 0.5 * (lambda[0] + lambda[1]);
+  const EigenResult result = system.solve(request);
   ASSERT_TRUE(result.error.empty()) << result.error;
   ASSERT_EQ(result.pairs.size(), 1u);
-  EXPECT_NEAR(result.pairs[0].eigenvalue, reference.eigenvalues()[1], 1e-10);
+  EXPECT_NEAR(result.pairs[0].eigenvalue, lambda[1], 1e-10);
 }
 
 }  // namespace
