@@ -2,13 +2,14 @@
 # Installs what clinch needs on Debian 12 (as root), makes OpenBLAS the BLAS and LAPACK that
 # SuiteSparse uses, and builds a Release build/clinch. Safe to run again: it installs only
 # what is missing and rebuilds incrementally. matplotlib draws the plots of `clinch study` and
-# `clinch report`; Chromium loads the report page in its test. petsc-dev brings PETSc with hypre and
+# `clinch report`; Chromium loads the report page in its test. libspectra-dev is the Lanczos
+# eigensolver of *FREQUENCY steps. petsc-dev brings PETSc with hypre and
 # MUMPS, and OpenMPI (mpirun included) under it.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(g++ cmake ninja-build pkg-config python3
-          libeigen3-dev libsuitesparse-dev libopenblas-dev libopenblas0-pthread
+          libeigen3-dev libspectra-dev libsuitesparse-dev libopenblas-dev libopenblas0-pthread
           libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libfmt-dev nlohmann-json3-dev
           libre2-dev petsc-dev libceres-dev
           python3-matplotlib chromium)

@@ -93,9 +93,10 @@ std::vector<KeywordSpec> general_keyword_specs() {
         "DSECURRENT", "RELEASE", "MOTION", "INITIAL STATE", "IMPORT", "MAP SOLUTION"}) {
     specs.push_back(not_supported(name));
   }
-  // Step procedures that clinch does not run (keywords.md §15: *STATIC and *DYNAMIC are run).
+  // Step procedures that clinch does not run (keywords.md §15: *STATIC, *DYNAMIC and *FREQUENCY
+  // are run).
   for (std::string_view name :
-       {"FREQUENCY", "MODAL DYNAMIC", "STEADY STATE DYNAMICS", "BUCKLE",
+       {"MODAL DYNAMIC", "STEADY STATE DYNAMICS", "BUCKLE",
         "HEAT TRANSFER", "COUPLED TEMPERATURE-DISPLACEMENT", "VISCO", "GEOSTATIC", "SOILS",
         "RANDOM RESPONSE", "RESPONSE SPECTRUM", "SUBSTRUCTURE GENERATE", "MATRIX GENERATE"}) {
     KeywordSpec spec = not_supported(name);

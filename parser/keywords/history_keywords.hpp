@@ -17,6 +17,8 @@ namespace clinch {
 
 // *STEP, *END STEP, *STATIC, *CONTROLS (step_static.cpp).
 std::vector<KeywordSpec> step_keyword_specs();
+// *FREQUENCY (step_frequency.cpp).
+std::vector<KeywordSpec> frequency_keyword_specs();
 // *BOUNDARY, *CLOAD, *CONNECTOR MOTION, *CONNECTOR LOAD (boundary_load.cpp).
 std::vector<KeywordSpec> condition_keyword_specs();
 // *AMPLITUDE (amplitude.cpp).
@@ -30,6 +32,10 @@ std::vector<KeywordSpec> output_keyword_specs();
 // Step (its handler never runs), so missing steps are created here as placeholders: the
 // history data inside such a step is still read and checked.
 Step& current_step(BlockContext& ctx);
+
+// E0605 at the keyword when `step` already has a procedure (*STATIC, *DYNAMIC or *FREQUENCY;
+// input-syntax.md §8: exactly one per step), with a note at the first; true if so.
+bool report_second_procedure(BlockContext& ctx, const Step& step);
 
 // E0210 for every given parameter among `names` ("→ E0210" rows of keywords.md); true if any.
 bool report_unsupported_params(BlockContext& ctx, std::initializer_list<std::string_view> names);

@@ -9,8 +9,9 @@ namespace clinch {
 
 std::vector<KeywordSpec> history_keyword_specs() {
   std::vector<KeywordSpec> specs;
-  for (auto* family : {&step_keyword_specs, &condition_keyword_specs, &amplitude_keyword_specs,
-                       &initial_condition_keyword_specs, &output_keyword_specs}) {
+  for (auto* family : {&step_keyword_specs, &frequency_keyword_specs, &condition_keyword_specs,
+                       &amplitude_keyword_specs, &initial_condition_keyword_specs,
+                       &output_keyword_specs}) {
     for (KeywordSpec& spec : family()) specs.push_back(std::move(spec));
   }
   return specs;
@@ -32,6 +33,15 @@ Step& current_step(BlockContext& ctx) {
     steps.push_back(std::move(step));
   }
   return steps[static_cast<std::size_t>(index)];
+}
+
+bool report_second_procedure(BlockContext& ctx, const Step& step) {
+  if (!step.procedure && !step.frequency) return false;
+  ctx.report(DiagCode::step_procedure, ctx.keyword().loc,
+             fmt::format("step '{}' has more than one procedure", step.name.display))
+      .notes.push_back({step.procedure ? step.procedure->loc : step.frequency->loc,
+                        "first procedure is here"});
+  return true;
 }
 
 bool report_unsupported_params(BlockContext& ctx, std::initializer_list<std::string_view> names) {

@@ -146,10 +146,12 @@ class EndStepHandler : public KeywordHandler {
     step.closed = true;
     step.end_loc = ctx.keyword().loc;
     // input-syntax.md §8: exactly one procedure per step (the second one is reported where it
-    // stands, by *STATIC).
-    if (!step.procedure && !step.procedure_refused) {
+    // stands, by *STATIC, *DYNAMIC or *FREQUENCY).
+    if (!step.has_procedure()) {
       ctx.report(DiagCode::step_procedure, ctx.keyword().loc,
-                 fmt::format("step '{}' has no procedure (expected *STATIC or *DYNAMIC)", step.name.display))
+                 fmt::format("step '{}' has no procedure (expected *STATIC, *DYNAMIC or "
+                             "*FREQUENCY)",
+                             step.name.display))
           .notes.push_back({step.loc, "step defined here"});
     }
   }
@@ -180,13 +182,7 @@ class StaticHandler : public KeywordHandler {
         }
       }
     }
-    Step& step = current_step(ctx);
-    if (step.procedure) {
-      duplicate_ = true;
-      ctx.report(DiagCode::step_procedure, ctx.keyword().loc,
-                 fmt::format("step '{}' has more than one procedure", step.name.display))
-          .notes.push_back({step.procedure->loc, "first procedure is here"});
-    }
+    duplicate_ = report_second_procedure(ctx, current_step(ctx));
     read_operator(ctx);
   }
 

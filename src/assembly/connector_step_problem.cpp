@@ -2,6 +2,7 @@
 
 #include "src/assembly/connector_tangent_check.hpp"
 #include "src/assembly/failure_description.hpp"
+#include "src/assembly/frequency_mass.hpp"
 
 namespace clinch {
 
@@ -56,6 +57,10 @@ void ConnectorStepProblem::set_load_factor(double lpf) {
 
 double ConnectorStepProblem::nodal_value(std::int32_t node, int dof) const {
   return system_.nodal_value(node, dof);
+}
+
+FrequencyModel ConnectorStepProblem::frequency_model() const {
+  return clinch::frequency_model(model_, system_);
 }
 
 std::string ConnectorStepProblem::check_tangent(int step, int increment) {

@@ -29,6 +29,8 @@ class ConnectorStepProblem final : public StepProblem {
   void set_load_factor(double lpf) override;
   double nodal_value(std::int32_t node, int dof) const override;
 
+  FrequencyModel frequency_model() const override;
+
   void commit() override { system_.commit(); }
   void revert() override { system_.revert(); }
   bool update_active_set() override { return system_.update_active_set(); }

@@ -24,9 +24,16 @@ void check_held_elements(const Model& model, DiagnosticSink& sink);
 void check_constraints(const Model& model, DiagnosticSink& sink);
 
 // What a *DYNAMIC step cannot run yet (dynamic_step_checks.cpp), and the values of *MASS and
-// *ROTARY INERTIA that the inertia of a dynamic step reads.
+// *ROTARY INERTIA that the inertia of a dynamic or frequency step reads.
 void check_dynamic_steps(const Model& model, DiagnosticSink& sink);
+// A step reads the inertia: *DYNAMIC or *FREQUENCY.
 bool has_dynamic_step(const Model& model);
+// The first *RIGID BODY, *COUPLING, *MPC or *EQUATION of the deck (null: none), for messages.
+struct ConstraintSource;
+const ConstraintSource* first_kinematic_constraint(const Model& model);
+
+// What a *FREQUENCY step cannot run yet (frequency_step_checks.cpp).
+void check_frequency_steps(const Model& model, DiagnosticSink& sink);
 
 void check_model(const Model& model, DiagnosticSink& sink);
 

@@ -40,8 +40,9 @@ bool has_connector_damping(const Model& model) {
   return false;
 }
 
-// The first kinematic constraint of the deck, for the message.
-const ConstraintSource* first_constraint(const Model& model) {
+}  // namespace
+
+const ConstraintSource* first_kinematic_constraint(const Model& model) {
   const ConstraintModel& c = model.constraints;
   if (c.rigid_bodies.empty() && c.couplings.empty() && c.mpcs.empty() &&
       c.equation_definitions.empty()) {
@@ -51,6 +52,8 @@ const ConstraintSource* first_constraint(const Model& model) {
   return c.sources.empty() ? &kUnnamed : &c.sources.front();
 }
 
+namespace {
+
 void check_step(const Model& model, const Step& step, DiagnosticSink& sink) {
   const SourceLoc at = step.dynamic->loc;
   if (step.procedure && !step.procedure->direct) {
@@ -58,7 +61,7 @@ void check_step(const Model& model, const Step& step, DiagnosticSink& sink) {
            "automatic incrementation of *DYNAMIC (by the half-increment residual, HAFTOL) is not "
            "supported by clinch yet: give DIRECT and a fixed time increment");
   }
-  if (const ConstraintSource* constraint = first_constraint(model)) {
+  if (const ConstraintSource* constraint = first_kinematic_constraint(model)) {
     Diagnostic& d = sink.report(
         DiagCode::unsupported_option, at,
         "*DYNAMIC with kinematic constraints (*RIGID BODY, *COUPLING, *MPC, *EQUATION) is not "
@@ -105,7 +108,7 @@ void check_inertia_sections(const Model& model, DiagnosticSink& sink) {
     for (const KeptParameter& p : section.parameters) {
       if (p.name != "ALPHA" && p.name != "ORIENTATION" && p.name != "COMPOSITE") continue;
       refuse(sink, section.keyword_loc,
-             fmt::format("{} on *{} is not supported by clinch yet in a *DYNAMIC step{}", p.name,
+             fmt::format("{} on *{} is not supported by clinch yet in a *DYNAMIC or *FREQUENCY step{}", p.name,
                          section.keyword,
                          p.name == "ALPHA" ? " (mass-proportional damping)"
                          : p.name == "ORIENTATION"
@@ -127,7 +130,7 @@ void check_inertia_sections(const Model& model, DiagnosticSink& sink) {
 
 bool has_dynamic_step(const Model& model) {
   return std::any_of(model.history.steps.begin(), model.history.steps.end(),
-                     [](const Step& s) { return s.dynamic.has_value(); });
+                     [](const Step& s) { return s.dynamic || s.frequency; });
 }
 
 void check_dynamic_steps(const Model& model, DiagnosticSink& sink) {

@@ -103,17 +103,17 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
        "`cross-sectional area`."},
       {"MASS",
        "The mass of the MASS elements of ELSET=: a point mass in each translation, the inertia "
-       "of *DYNAMIC steps (docs/dynamics.md).",
+       "of *DYNAMIC and *FREQUENCY steps (docs/dynamics.md).",
        "`mass`.",
        {{"ALPHA, ORIENTATION, COMPOSITE", "not implemented"}},
-       {{"the whole keyword in a *STATIC step", "a static step has no inertia"}}},
+       {{"the whole keyword when no step is *DYNAMIC or *FREQUENCY", "a static step has no inertia"}}},
       {"ROTARY INERTIA",
        "The rotary inertia of the ROTARYI elements of ELSET=, the full tensor in the global "
-       "axes: the inertia of *DYNAMIC steps (docs/dynamics.md).",
+       "axes: the inertia of *DYNAMIC and *FREQUENCY steps (docs/dynamics.md).",
        "`I11, I22, I33, I12, I13, I23`.",
        {{"ALPHA, ORIENTATION, COMPOSITE", "not implemented"},
         {"with NLGEOM in a *DYNAMIC step", "finite-rotation dynamics is not implemented"}},
-       {{"the whole keyword in a *STATIC step", "a static step has no inertia"}}},
+       {{"the whole keyword when no step is *DYNAMIC or *FREQUENCY", "a static step has no inertia"}}},
       {"MATERIAL",
        "Opens a named material; the options that follow (*ELASTIC, *DENSITY, ...) belong to it. "
        "Read and kept for the sections of held elements.",
@@ -345,6 +345,26 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
        {{"ELSET (energies of an element set)", "not implemented"},
         {"ALLSE, ALLPD, ALLDMD and the other energies",
          "ALLIE holds the elastic, plastic and damage work together"}}},
+      {"FREQUENCY",
+       "Natural frequencies and mode shapes about the base state (the converged state of the "
+       "steps before; a linear perturbation step that leaves it unchanged): the tangent "
+       "stiffness there with the lumped mass of MASS and ROTARYI elements. The eigenvalue table "
+       "goes to the log and the modes to <job>.modes.csv (docs/dynamics.md). EIGENSOLVER="
+       "LANCZOS, SUBSPACE and AMS are all read as a request for eigenpairs; NORMALIZATION="
+       "DISPLACEMENT or MASS.",
+       "LANCZOS and AMS: `number of eigenvalues, minimum frequency, maximum frequency, shift "
+       "point`; SUBSPACE: `number of eigenvalues, maximum frequency, shift point` "
+       "(cycles/time, the shift in (cycles/time)²).",
+       {{"RESIDUAL MODES", "not implemented"},
+        {"*BOUNDARY, *CLOAD, *CONNECTOR MOTION and *CONNECTOR LOAD in the step",
+         "the step keeps the conditions of its base state"},
+        {"kinematic constraints in the model", "not implemented"}},
+       {{"ACOUSTIC COUPLING, DAMPING PROJECTION, SIM, BIAS, NUMBER INTERVAL, PROPERTY "
+         "EVALUATION, STORAGE, SOLVER",
+         "clinch has no acoustics, frequency-dependent properties or solver options to set"},
+        {"block size, number of vectors, iteration limits (the fields after the shift) and data "
+         "lines after the first",
+         "they tune Abaqus's own eigensolver"}}},
       {"INITIAL CONDITIONS",
        "With TYPE=VELOCITY: the nodal velocities at the start of the analysis, read by the first "
        "*DYNAMIC step (docs/dynamics.md).",

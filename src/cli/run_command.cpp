@@ -231,6 +231,8 @@ int run_deck(const RunCommandOptions& options) {
   Progress progress = Progress::for_stderr(options.quiet || !writer);
   HistoryRecorder history(columns, table, system);
   RunOutputs outputs(history, status, log, progress);
+  ModesFile modes(output_path(".modes.csv"));
+  outputs.set_modes_file(&modes);
   std::vector<std::string> step_names;
   for (const Step& step : model.history.steps) step_names.push_back(step.name.display);
   outputs.set_step_names(std::move(step_names));

@@ -179,6 +179,19 @@ struct DynamicProcedure {
   SourceLoc haftol_loc;
 };
 
+// *FREQUENCY (docs/dynamics.md "Natural frequencies"): the eigenvalues and mode shapes of the
+// tangent stiffness of the base state with the lumped mass, as the data line asks for them
+// (docs/decisions.md "Natural frequencies"). Frequencies in cycles/time, the shift in
+// (cycles/time)²; none: the field was blank.
+struct FrequencyProcedure {
+  enum class Normalization : std::uint8_t { Displacement, Mass };
+  SourceLoc loc;                   // keyword line
+  std::string eigensolver = "LANCZOS";
+  Normalization normalization = Normalization::Displacement;
+  std::optional<int> eigenvalues;  // the number requested (none: every one in the range)
+  std::optional<double> min_frequency, max_frequency, shift;
+};
+
 // *INITIAL CONDITIONS, TYPE=VELOCITY data line: the velocity of DOF `dof` (1–6) of the nodes.
 struct InitialVelocity {
   TargetRef target;
@@ -309,6 +322,7 @@ struct Step {
   // The time data of the step's procedure: *STATIC's, or *DYNAMIC's (then `dynamic` is set).
   std::optional<StaticProcedure> procedure;
   std::optional<DynamicProcedure> dynamic;
+  std::optional<FrequencyProcedure> frequency;  // *FREQUENCY: a linear perturbation step
   bool procedure_refused = false;  // its procedure keyword is one clinch does not run (E0202)
   Controls controls;  // effective controls (carried over, §13)
 
@@ -325,6 +339,9 @@ struct Step {
   bool closed = false;  // its *END STEP was read
   SourceLoc end_loc;
   bool placeholder = false;  // created for a *STEP whose keyword line had errors
+
+  // The step names its procedure (*STATIC, *DYNAMIC or *FREQUENCY), or one clinch refuses.
+  bool has_procedure() const { return procedure || frequency || procedure_refused; }
 
   // OP=NEW on some block of this kind: the step's blocks of that kind are the complete set (§13).
   bool replaces(ConditionKind kind) const;

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <numbers>
+
 namespace clinch {
 
 void RunOutputs::begin_step(std::size_t step) {
@@ -50,6 +52,22 @@ const OutputFile* RunOutputs::failed_file() const {
 void RunOutputs::note(int step, int increment, std::string_view text) {
   log_.info(increment > 0 ? fmt::format("step {} increment {}: {}", step, increment, text)
                           : fmt::format("step {}: {}", step, text));
+}
+
+// The eigenvalue table as Abaqus prints it in the .dat file (docs/dynamics.md "Natural
+// frequencies").
+std::string RunOutputs::modes_extracted(int step, const std::vector<ModeRecord>& modes,
+                                        const std::vector<std::string>& dof_names) {
+  note(step, 0, "eigenvalue output");
+  log_.info(" MODE NO      EIGENVALUE       FREQUENCY (RAD/TIME)  FREQUENCY (CYCLES/TIME)  "
+            "GENERALIZED MASS");
+  for (const ModeRecord& m : modes) {
+    const double omega = circular_frequency(m.eigenvalue);
+    log_.info(fmt::format("{:8d}  {:16.6E}  {:20.6E}  {:23.6E}  {:16.6E}", m.mode, m.eigenvalue,
+                          omega, omega / (2.0 * std::numbers::pi), m.generalized_mass));
+  }
+  if (modes_ == nullptr || modes_->write_step(step, modes, dof_names)) return {};
+  return modes_->error();
 }
 
 void RunOutputs::step_ended(int step, std::string_view why) {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "src/output/history_recorder.hpp"
+#include "src/output/modes_file.hpp"
 #include "src/output/progress.hpp"
 #include "src/output/run_log.hpp"
 #include "src/output/status_file.hpp"
@@ -50,6 +51,12 @@ class RunOutputs {
   void note(std::string_view text) { log_.info(text); }
   void warning(std::string_view text) { log_.warning(text); }
   void cut_back(int step, int increment, std::string_view reason, double dt);
+  // The modes file of the frequency steps (none: their modes go to the log only).
+  void set_modes_file(ModesFile* modes) { modes_ = modes; }
+  // A frequency step's modes: the eigenvalue table in the log, then the rows of the modes file.
+  // The modes file's error when it could not be written; empty otherwise.
+  std::string modes_extracted(int step, const std::vector<ModeRecord>& modes,
+                              const std::vector<std::string>& dof_names);
   // The first output that could not be written, or null.
   const OutputFile* failed_file() const;
 
@@ -59,6 +66,7 @@ class RunOutputs {
   RunLog& log_;
   Progress& progress_;
   std::vector<std::string> step_names_;
+  ModesFile* modes_ = nullptr;
 };
 
 }  // namespace clinch

@@ -189,9 +189,11 @@ class HistoryValidator {
   void check_step_structure(Step& step) {
     // A closed step without a procedure was reported at its *END STEP; an unclosed one (E0603)
     // is reported here (input-syntax.md §8).
-    if (!step.closed && !step.procedure && !step.procedure_refused) {
+    if (!step.closed && !step.has_procedure()) {
       sink_.report(DiagCode::step_procedure, step.loc,
-                   fmt::format("step '{}' has no procedure (expected *STATIC or *DYNAMIC)", step.name.display));
+                   fmt::format("step '{}' has no procedure (expected *STATIC, *DYNAMIC or "
+                               "*FREQUENCY)",
+                               step.name.display));
     }
     if (step.procedure && step.procedure->riks) check_riks(step);
     // keywords.md §14: UNSYMM=NO with a behaviour whose tangent is unsymmetric (friction).

@@ -1,8 +1,9 @@
 // A step's procedure (keywords.md §15): its time policy and what an increment means for it.
 // *STATIC (static_step_procedure.hpp), *STATIC, RIKS (riks_procedure.hpp) and implicit *DYNAMIC
-// (dynamic_step_procedure.hpp); each further step kind (frequency) is another implementation. The
-// step driver runs any of them around the same increment attempt, Newton and StepProblem, and
-// never asks which one it has.
+// (dynamic_step_procedure.hpp); each further step kind with increments is another
+// implementation. The step driver runs any of them around the same increment attempt, Newton and
+// StepProblem, and never asks which one it has. A *FREQUENCY step has no increments: the driver
+// runs it through frequency_step.hpp.
 #pragma once
 
 #include <memory>

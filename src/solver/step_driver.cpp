@@ -8,6 +8,7 @@
 #include <set>
 
 #include "src/solver/convergence_criteria.hpp"
+#include "src/solver/frequency_step.hpp"
 #include "src/solver/procedure.hpp"
 
 namespace clinch {
@@ -131,6 +132,7 @@ class Driver {
 
   bool run_step(std::size_t s) {
     const Step& step = model_.history.steps[s];
+    if (step.frequency) return run_frequency_step(s);
     const std::unique_ptr<Procedure> procedure = procedure_for(step);
     const int step_number = static_cast<int>(s) + 1;
     if (!begin_step(step, *procedure, step_number)) return false;
@@ -167,6 +169,53 @@ class Driver {
       out_.note(step_number, 0, line);
     }
     return true;
+  }
+
+  // A *FREQUENCY step (frequency_step.hpp): the conditions of the base state at an increment of
+  // no length from the converged state, the symmetric tangent there, and back to that state. It
+  // takes no time and writes no history row; the next step starts from the same base state.
+  bool run_frequency_step(std::size_t s) {
+    const Step& step = model_.history.steps[s];
+    const int step_number = static_cast<int>(s) + 1;
+    if (interrupted(step_number, 0)) return false;
+    out_.begin_step(s);
+    step_problem_.begin_step(s, step.nlgeom);
+    step_problem_.use_storage(true);
+    std::unique_ptr<LinearSolver> solver = solvers_(true);
+    if (!solver) {
+      return fail("the requested linear solver cannot solve a *FREQUENCY step", step_number, 0);
+    }
+    std::string error;
+    if (solver->analyze(problem_.pattern(), &error) != LinearStatus::Ok) {
+      return fail(fmt::format("linear solver analysis failed: {}", error), step_number, 0);
+    }
+    step_problem_.begin_increment(0.0, total_time_, 0.0, 0.0);
+    const FrequencyModel model = step_problem_.frequency_model();
+    out_.note(step_number, 0,
+              fmt::format("{} on the upper triangle ({} equations): the symmetric tangent of the "
+                          "base state and the lumped mass ({} directions with inertia)",
+                          solver->name(), problem_.pattern().n, model.mass.factor.size()));
+    FrequencyStepResult result = solve_frequency_step(*step.frequency, problem_, model, *solver);
+    step_problem_.revert();
+    if (!result.error.empty()) {
+      NewtonReport report;
+      report.outcome = NewtonOutcome::SolverFailed;
+      report.message = result.error;
+      report.failed_equation = result.failed_equation;
+      // A massless DOF without stiffness (a mechanism of the massless part) leaves K − σM
+      // singular at every shift: named as Newton's singular systems are.
+      return fail(result.failed_equation >= 0
+                      ? fmt::format("{}; {}", result.error, step_problem_.describe_failure(report))
+                      : result.error,
+                  step_number, 0);
+    }
+    for (const std::string& line : result.notes) out_.note(step_number, 0, line);
+    if (std::string written = out_.modes_extracted(step_number, result.modes, model.dof_names);
+        !written.empty()) {
+      result_.io_error = true;
+      return fail(std::move(written), step_number, 0);
+    }
+    return outputs_written(step_number, 0);
   }
 
   // What the step sets once: NLGEOM, the storage and its solver, the conditions, the line search,

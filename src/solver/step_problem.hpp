@@ -11,10 +11,19 @@
 
 #include "base/procedure_needs.hpp"
 #include "src/model/history_model.hpp"
+#include "src/solver/frequency_eigensolver.hpp"
 #include "src/solver/newton.hpp"
 #include "src/solver/nonlinear_problem.hpp"
 
 namespace clinch {
+
+// What a *FREQUENCY step needs of the problem beside its tangent (frequency_step.hpp): the lumped
+// mass of the free solved equations, and the name of each solved equation's nodal DOF ("U1@5",
+// "UR3@Part-1.7"), empty for a multiplier.
+struct FrequencyModel {
+  LumpedMass mass;
+  std::vector<std::string> dof_names;
+};
 
 class StepProblem {
  public:
@@ -55,6 +64,10 @@ class StepProblem {
   virtual void set_load_factor(double lpf) = 0;
   // The current value of DOF `dof` (1–6) of global node `node`; 0 when the node has no such DOF.
   virtual double nodal_value(std::int32_t node, int dof) const = 0;
+
+  // ---- a frequency step (frequency_step.hpp) ----
+  // The mass and DOF names under the conditions of the current increment.
+  virtual FrequencyModel frequency_model() const { return {}; }
 
   // ---- between solves ----
   virtual void commit() = 0;  // the trial state becomes the converged one
