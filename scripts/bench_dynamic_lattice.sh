@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # clinch against CalculiX (Debian calculix-ccx 2.20) on *DYNAMIC, DIRECT: the N x N spring-mass
 # lattice of decks/bench/generate_dynamic_lattice.py (SPRINGA, MASS, the same deck for both
-# codes) in free vibration in its lowest mode, HHT with ALPHA=-0.05 written out (docs/benchmarks.md "Implicit
-# dynamics on a spring-mass lattice"). For each increment: median wall time of runs (default 3),
-# and the error of each code against the exact motion of the lattice (max |u - u_exact| over three
-# probe nodes and every increment, over the amplitude); then the ratio of wall times.
+# codes) in free vibration in its lowest mode, HHT with ALPHA=-0.05 written out
+# (docs/benchmarks.md "Implicit dynamics on a spring-mass lattice"). For each increment: median
+# wall time of runs (default 3), and the error of each code against the exact motion of the
+# lattice (max |u - u_exact| over three probe nodes and every increment, over the amplitude);
+# then the ratio of wall times.
 # Usage: scripts/bench_dynamic_lattice.sh [N [PERIOD [DT...]]]   (default: 100 1.0 0.01 0.005)
 # Environment: CLINCH_BUILD_DIR (default build), DYNAMIC_LATTICE_RUNS (3),
 # DYNAMIC_LATTICE_NLGEOM=1 to run the step under NLGEOM, DYNAMIC_LATTICE_KEEP=DIR to keep decks
@@ -22,7 +23,8 @@ lattice="python3 $PWD/decks/bench/generate_dynamic_lattice.py"
 nlgeom=()
 [ "${DYNAMIC_LATTICE_NLGEOM:-0}" = 0 ] || nlgeom=(nlgeom)
 [ -x "$bin/clinch" ] || { echo "bench_dynamic_lattice: $bin/clinch is missing" >&2; exit 3; }
-command -v ccx >/dev/null || { echo "bench_dynamic_lattice: ccx is missing (apt-get install calculix-ccx)" >&2; exit 3; }
+command -v ccx >/dev/null ||
+  { echo "bench_dynamic_lattice: ccx is missing (apt-get install calculix-ccx)" >&2; exit 3; }
 if [ -n "${DYNAMIC_LATTICE_KEEP:-}" ]; then
   dir=$DYNAMIC_LATTICE_KEEP
   mkdir -p "$dir"
@@ -42,7 +44,9 @@ ccx_rows() {
        NF == 4 && t != "" {print t, $1, $2, $3}' "$1/job.dat"
 }
 clinch_rows() {
-  awk -F, 'NR == 1 {for (i = 5; i <= NF; ++i) if ($i ~ /^U[12]@/) {split($i, p, "@"); col[i] = p[1]; node[i] = p[2]}; next}
+  awk -F, 'NR == 1 {for (i = 5; i <= NF; ++i)
+                      if ($i ~ /^U[12]@/) {split($i, p, "@"); col[i] = p[1]; node[i] = p[2]}
+                    next}
            $2 > 0 {delete u1; delete u2
                    for (i in col) if (col[i] == "U1") u1[node[i]] = $i; else u2[node[i]] = $i
                    for (k in u1) print $3, k, u1[k], u2[k]}' "$1/job.history.csv"
@@ -67,9 +71,9 @@ measure() {
   echo "$(printf '%s\n' "${times[@]}" | median) $($lattice error "$n" "$wd/probes.txt")"
 }
 
-echo "dynamic lattice benchmark: ${n}x${n} masses${nlgeom:+ under NLGEOM}, period $period, $(nproc) cores, load average" \
-  "$(cut -d ' ' -f 1-3 /proc/loadavg), $(ccx -v 2>/dev/null | grep -o 'Version [0-9.]*' | head -n 1)," \
-  "medians of $runs runs"
+echo "dynamic lattice benchmark: ${n}x${n} masses${nlgeom:+ under NLGEOM}, period $period," \
+  "$(nproc) cores, load average $(cut -d ' ' -f 1-3 /proc/loadavg)," \
+  "CalculiX $(ccx -v 2>/dev/null | grep -o 'Version [0-9.]*' | head -n 1), medians of $runs runs"
 printf "%8s %6s | %8s %10s | %8s %10s | %6s\n" dt incs ccx_s ccx_err clinch_s cl_err t_rat
 for dt in "${increments[@]}"; do
   deck=$dir/lattice-$n-$dt.inp
@@ -79,10 +83,12 @@ for dt in "${increments[@]}"; do
   expected=$(awk -v p="$period" -v d="$dt" 'BEGIN {printf "%d", 3 * int(p / d + 0.5)}')
   [ "${x_rows:-0}" = "$expected" ] || x_err="rows:${x_rows:-none}"
   [ "${c_rows:-0}" = "$expected" ] || c_err="rows:${c_rows:-none}"
-  t_rat=$(awk -v a="$c_s" -v b="$x_s" 'BEGIN {printf "%.3f", (b > 0 ? a / b : 0)}' 2>/dev/null || echo -)
+  t_rat=$(awk -v a="$c_s" -v b="$x_s" 'BEGIN {printf "%.3f", (b > 0 ? a / b : 0)}' 2>/dev/null ||
+            echo -)
   printf "%8s %6s | %8s %10s | %8s %10s | %6s\n" "$dt" "$((expected / 3))" "$x_s" "$x_err" \
     "$c_s" "$c_err" "$t_rat"
 done
 echo "s: median wall time; err: max over 3 probes and all increments of |u - u_exact|, over the"
 echo "amplitude (CalculiX prints 7 digits: it resolves about 1e-6); t_rat: clinch/CalculiX (target"
-echo "<= 0.2 at equal or smaller error). Load average at the end: $(cut -d ' ' -f 1-3 /proc/loadavg)."
+echo "<= 0.2 at equal or smaller error). Load average at the end:" \
+  "$(cut -d ' ' -f 1-3 /proc/loadavg)."

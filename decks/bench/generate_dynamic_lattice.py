@@ -76,7 +76,8 @@ def write_deck(n, dt, period, path, nlgeom):
                     if a > n + 1 or b > n + 1:
                         continue
                     # Springs between two ring nodes carry nothing; leave them out.
-                    if (i in (0, n + 1) or j in (0, n + 1)) and (a in (0, n + 1) or b in (0, n + 1)):
+                    on_ring = i in (0, n + 1) or j in (0, n + 1)
+                    if on_ring and (a in (0, n + 1) or b in (0, n + 1)):
                         continue
                     element += 1
                     out.write(f"{element}, {label(n, i, j)}, {label(n, a, b)}\n")

@@ -182,7 +182,7 @@ if __name__ == "__main__":
     for inc, (u, v, a, f, _, slipped) in enumerate(recurrence(DT, PERIOD)):
         rows.append((1, inc, inc * DT, inc * DT, [f, slipped, u, v, a]))
     g.write_golden(__file__, [
-        "dynamic_stick_slip: m = 1, spring k = 100 in parallel with a Coulomb slider (slip force 10,",
-        "stick stiffness 1e4), released at u = 0 with v = 10; HHT-alpha (TRANSIENT FIDELITY) on the",
-        "deck's increments, each increment solved branch by branch",
+        "dynamic_stick_slip: m = 1, spring k = 100 in parallel with a Coulomb slider (slip",
+        "force 10, stick stiffness 1e4), released at u = 0 with v = 10; HHT-alpha (TRANSIENT",
+        "FIDELITY) on the deck's increments, each increment solved branch by branch",
     ], ["CSF1@1", "CASU1@1", "U1@2", "V1@2", "A1@2"], rows)
