@@ -25,14 +25,8 @@ nlgeom=()
 [ -x "$bin/clinch" ] || { echo "bench_dynamic_lattice: $bin/clinch is missing" >&2; exit 3; }
 command -v ccx >/dev/null ||
   { echo "bench_dynamic_lattice: ccx is missing (apt-get install calculix-ccx)" >&2; exit 3; }
-if [ -n "${DYNAMIC_LATTICE_KEEP:-}" ]; then
-  dir=$DYNAMIC_LATTICE_KEEP
-  mkdir -p "$dir"
-else
-  dir=$(mktemp -d)
-  trap 'rm -rf "$dir"' EXIT
-fi
-dir=$(cd "$dir" && pwd)
+. scripts/bench_workdir.sh
+bench_workdir "${DYNAMIC_LATTICE_KEEP:-}"
 bin=$(cd "$bin" && pwd)
 
 median() { sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
