@@ -31,14 +31,8 @@ if ! command -v ccx >/dev/null; then
   apt-get install -y -qq calculix-ccx >/dev/null 2>&1 ||
     { apt-get update -qq && apt-get install -y -qq calculix-ccx >/dev/null; }
 fi
-if [ -n "${LATTICE_KEEP:-}" ]; then
-  dir=$LATTICE_KEEP
-  mkdir -p "$dir"
-else
-  dir=$(mktemp -d)
-  trap 'rm -rf "$dir"' EXIT
-fi
-dir=$(cd "$dir" && pwd)
+. scripts/bench_workdir.sh
+bench_workdir "${LATTICE_KEEP:-}"
 bin=$(cd "$bin" && pwd)
 
 median() { sort -g | awk '{a[NR]=$1} END {if (NR) print a[int((NR+1)/2)]; else print "nan"}'; }

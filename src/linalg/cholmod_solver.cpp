@@ -104,6 +104,8 @@ LinearStatus CholmodSolver::factorize(const SparseMatrix& k, std::string* messag
   if (n_ < 0 || k.n != n_ || k.nonzeros() != nonzeros_) {
     throw std::logic_error("CholmodSolver::factorize: matrix does not match the analysed pattern");
   }
+  // The same values on the same pattern give the same factor, bit for bit: keep it.
+  if (factorized_ && k.values == factored_values_) return LinearStatus::Ok;
   factorized_ = false;
   failed_pivot_ = -1;
   if (n_ == 0) {
@@ -151,6 +153,7 @@ LinearStatus CholmodSolver::factorize(const SparseMatrix& k, std::string* messag
       }
     }
   }
+  factored_values_ = k.values;
   factorized_ = true;
   return LinearStatus::Ok;
 }

@@ -1,7 +1,8 @@
 // Supernodal sparse Cholesky (CHOLMOD) for symmetric positive definite tangents: the ordering is
 // chosen once per pattern (the better of AMD and METIS), the numeric factorization is redone each
-// iteration (ARCHITECTURE.md "Performance by design"). A matrix that is not positive definite is
-// reported, with its pivot, rather than factored.
+// iteration (ARCHITECTURE.md "Performance by design") unless the values are exactly those of the
+// factor held (a linear dynamic step over fixed increments: one factorization for the step). A
+// matrix that is not positive definite is reported, with its pivot, rather than factored.
 #pragma once
 
 #include <cholmod.h>
@@ -51,6 +52,7 @@ class CholmodSolver final : public LinearSolver {
   int n_ = -1;
   int nonzeros_ = 0;
   std::vector<int> diagonal_;
+  std::vector<double> factored_values_;  // the values of the factor held, when factorized_
   bool factorized_ = false;
   int failed_pivot_ = -1;
 };

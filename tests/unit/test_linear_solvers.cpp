@@ -301,6 +301,13 @@ TEST_P(LinearSolverParity, RefactorizationReusesTheAnalysis) {
   EXPECT_EQ(solver_->failed_pivot(), dof);
   check_solve(m);
   EXPECT_EQ(solver_->failed_pivot(), -1);
+  // The same values again (a backend may keep its factor), then one diagonal entry changed: the
+  // solve must be that of the new matrix, not of a factor kept from the old one.
+  check_solve(m);
+  for (int p = m.col_ptr[3]; p < m.col_ptr[4]; ++p) {
+    if (m.row_idx[p] == 3) m.values[p] += 4.0;
+  }
+  check_solve(m);
 }
 
 TEST_P(LinearSolverParity, NonFiniteEntryIsAFailure) {
