@@ -48,7 +48,14 @@ NEGLIGIBLE = 1e-6
 PARTS = (("CEF", "elastic"), ("CVF", "damping"), ("CSF", "friction"),
          ("CRF", "actuator or reaction, sign turned"), ("CTF", "total"))
 PANELS = (("force", "forces"), ("moment", "moments"), ("displacement", "displacements"),
-          ("rotation", "rotations"), ("ratio", "damage and criteria"), ("status", "status codes"))
+          ("rotation", "rotations"), ("rate", "velocities and accelerations"),
+          ("ratio", "damage and criteria"), ("status", "status codes"))
+
+
+# Whole-model energies (docs/dynamics.md "Energies"), drawn together in one plot.
+ENERGIES = {"ALLKE": "kinetic energy", "ALLIE": "internal energy",
+            "ALLFD": "frictional dissipation", "ALLVD": "viscous dissipation",
+            "ALLWK": "work of loads and reactions", "ETOTAL": "energy balance"}
 
 
 class Column:
@@ -64,7 +71,7 @@ class Column:
 
     @property
     def is_node(self):
-        return self.variable in ("U", "RF", "CF")
+        return self.variable in ("U", "RF", "CF", "V", "A")
 
     def unit(self):
         """Rotations are in radians (output-variables.md §1.3); the deck states no other unit."""
@@ -223,6 +230,25 @@ def time_histories(page, history, where, columns, kind, scales, names):
     page.figure(fig, f"history-{kind}", caption, where=where, panels=len(panels),
                 css="wide")
     return quiet
+
+
+def energy_history(page, history, columns, names):
+    """The whole-model energies against total time in one plot; ETOTAL dashed, since a drift of
+    it is what the analyst looks for."""
+    fig = Figure(figsize=(13.0, 3.4))
+    ax = fig.subplots()
+    for c in columns:
+        t, v = series(history, c)
+        ax.plot(t, v, "--" if c.variable == "ETOTAL" else "-",
+                label=f"{c.variable}: {ENERGIES[c.variable]}", gid=f"energy-{c.variable}")
+    mark_steps(ax, history, names, top=True)
+    ax.set_ylabel("energy", fontsize=9)
+    ax.set_xlabel("total time (dashed lines: step ends; step names at the top)")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.005, 0.5))
+    fig.tight_layout()
+    page.figure(fig, "energies", "Whole-model energies: " + ", ".join(c.variable for c in columns)
+                + " (ETOTAL = ALLKE + ALLIE + ALLFD + ALLVD - ALLWK)", css="wide")
 
 
 def choose(group, limit, choice, kind):
@@ -493,8 +519,11 @@ def main():
         ("cutbacks", sum(1 for a in attempts if a["cut_back"])),
         ("history columns", len(columns)),
     ]))
+    energies = [c for c in columns if c.variable in ENERGIES]
     connectors, nodes = {}, {}
     for c in columns:
+        if c.variable in ENERGIES:
+            continue
         if choice["variables"] and c.variable not in choice["variables"] and c.variable != "CU":
             continue
         (nodes if c.is_node else connectors).setdefault(c.where, []).append(c)
@@ -529,6 +558,9 @@ def main():
                 page.add(f'<table class="left-out" data-connector="{html.escape(where)}">'
                          "<tr><th>component</th><th>not plotted against its motion: why"
                          f"</th></tr>{rows}</table>")
+    if energies:
+        page.add("<h2>Energies</h2>")
+        energy_history(page, history, energies, step_names)
     if data["iterations"] or data["attempts"]:
         page.add("<h2>Newton convergence</h2>")
         convergence(page, data)
