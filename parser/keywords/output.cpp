@@ -180,6 +180,17 @@ class OutputHandler : public KeywordHandler {
   }
 };
 
+// The *OUTPUT request a block (*ELEMENT OUTPUT, *NODE OUTPUT, *ENERGY OUTPUT) belongs to: the
+// step's last one; none is an error at the block's keyword.
+OutputRequest* open_request(BlockContext& ctx) {
+  Step& step = current_step(ctx);
+  if (!step.outputs.empty()) return &step.outputs.back();
+  ctx.report(DiagCode::output_without_output_keyword, ctx.keyword().loc,
+             fmt::format("{} must follow an *OUTPUT keyword in the same step",
+                         ctx.keyword_display()));
+  return nullptr;
+}
+
 // ---- *ELEMENT OUTPUT / *NODE OUTPUT -----------------------------------------------------------
 
 class OutputBlockHandler : public KeywordHandler {
@@ -188,15 +199,12 @@ class OutputBlockHandler : public KeywordHandler {
 
   void begin(BlockContext& ctx) override {
     const ParamSet& params = ctx.params();
-    Step& step = current_step(ctx);
-    if (step.outputs.empty()) {
-      ctx.report(
-          DiagCode::output_without_output_keyword, ctx.keyword().loc,
-          fmt::format("{} must follow an *OUTPUT keyword in the same step", ctx.keyword_display()));
+    OutputRequest* open = open_request(ctx);
+    if (open == nullptr) {
       skip_ = true;
       return;
     }
-    OutputRequest& request = step.outputs.back();
+    OutputRequest& request = *open;
     field_ = request.field;
     const char* set_name = element_ ? "ELSET" : "NSET";
     if (element_) {
@@ -267,15 +275,12 @@ class OutputBlockHandler : public KeywordHandler {
 class EnergyOutputHandler : public KeywordHandler {
  public:
   void begin(BlockContext& ctx) override {
-    Step& step = current_step(ctx);
-    if (step.outputs.empty()) {
-      ctx.report(
-          DiagCode::output_without_output_keyword, ctx.keyword().loc,
-          fmt::format("{} must follow an *OUTPUT keyword in the same step", ctx.keyword_display()));
+    const OutputRequest* open = open_request(ctx);
+    if (open == nullptr) {
       skip_ = true;
       return;
     }
-    field_ = step.outputs.back().field;
+    field_ = open->field;
     listed_ = !ctx.params().has("VARIABLE");
     // Energies of an element set (ELSET=) are not written: E0210 at the parameter.
     skip_ = report_unsupported_params(ctx, {"ELSET"});
