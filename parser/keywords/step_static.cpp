@@ -385,6 +385,7 @@ class DynamicHandler final : public StaticHandler {
                     : application == "QUASI-STATIC"       ? Application::QuasiStatic
                                                           : Application::TransientFidelity;
     d.backward_euler = d.application == Application::QuasiStatic;
+    d.explicit_integration = params.has("EXPLICIT");
     d.initial_acceleration = params.has("INITIAL") ? params.enum_value("INITIAL") == "YES"
                                                    : !d.backward_euler;
     d.alpha = d.application == Application::ModerateDissipation ? -0.41421 : -0.05;

@@ -56,7 +56,8 @@ namespace {
 
 void check_step(const Model& model, const Step& step, DiagnosticSink& sink) {
   const SourceLoc at = step.dynamic->loc;
-  if (step.procedure && !step.procedure->direct) {
+  // An explicit step (refused at its parameter) has no DIRECT to ask for.
+  if (step.procedure && !step.procedure->direct && !step.dynamic->explicit_integration) {
     refuse(sink, at,
            "automatic incrementation of *DYNAMIC (by the half-increment residual, HAFTOL) is not "
            "supported by clinch yet: give DIRECT and a fixed time increment");

@@ -177,6 +177,7 @@ struct DynamicProcedure {
   bool initial_acceleration = true;  // INITIAL=YES: a₀ from equilibrium at the step start
   std::optional<double> haftol;      // HAFTOL (automatic incrementation only)
   SourceLoc haftol_loc;
+  bool explicit_integration = false;  // EXPLICIT: refused at the parameter, nothing more to say
 };
 
 // *FREQUENCY (docs/dynamics.md "Natural frequencies"): the eigenvalues and mode shapes of the
