@@ -11,6 +11,8 @@
 
 #include "base/diagnostic.hpp"
 #include "src/check/check.hpp"
+#include "src/model/active_dofs.hpp"
+#include "src/model/inertia_elements.hpp"
 #include "src/model/model.hpp"
 
 namespace clinch {
@@ -127,6 +129,36 @@ void check_inertia_sections(const Model& model, DiagnosticSink& sink) {
   }
 }
 
+// Inertia on a node none of whose translations (rotations) an element uses has no equation of
+// motion and is left out (nodal_inertia.hpp); said once per section, at its first such element.
+void check_inertia_dofs(const Model& model, DiagnosticSink& sink) {
+  const std::vector<std::int32_t> node_of = inertia_element_nodes(model);
+  const std::vector<DofMask> active = active_dofs(model);
+  for (const ElementSection& section : model.structure.sections) {
+    const bool mass = section.kind == ElementSection::Kind::Mass;
+    if (!mass && section.kind != ElementSection::Kind::RotaryInertia) continue;
+    const DofMask wanted = mass ? 0b000111 : 0b111000;
+    std::int32_t first = -1;
+    std::size_t count = 0;
+    for (std::int32_t e : section.elements) {
+      const std::int32_t node = node_of[static_cast<std::size_t>(e)];
+      if (node < 0 || (active[static_cast<std::size_t>(node)] & wanted) != 0) continue;
+      if (count++ == 0) first = e;
+    }
+    if (count == 0) continue;
+    const Element& element = model.elements[static_cast<std::size_t>(first)];
+    sink.report(DiagCode::inactive_dof, element.loc(),
+                fmt::format("the {} of element {} acts on no DOF: no connector or spring uses the "
+                            "{} of its node, so it has no equation of motion and is left out{}",
+                            mass ? "mass" : "rotary inertia",
+                            qualified_label(model, element.instance, element.label),
+                            mass ? "translations" : "rotations",
+                            count > 1 ? fmt::format(" (and {} more element{} of *{})", count - 1,
+                                                    count > 2 ? "s" : "", section.keyword)
+                                      : ""));
+  }
+}
+
 }  // namespace
 
 bool has_dynamic_step(const Model& model) {
@@ -140,6 +172,7 @@ void check_dynamic_steps(const Model& model, DiagnosticSink& sink) {
     if (step.dynamic) check_step(model, step, sink);
   }
   check_inertia_sections(model, sink);
+  check_inertia_dofs(model, sink);
 }
 
 }  // namespace clinch
