@@ -79,6 +79,7 @@ ConnectorSystem::ConnectorSystem(const Model& model, const AnalysisPlan& plan)
     }
   }
   if (state_.v_n.size() > 0) initial_kinetic_ = kinetic_energy(plan_.inertia, state_.v_n);
+  if (energy_) energy_->set_kinetic(initial_kinetic_);
 }
 
 void ConnectorSystem::set_integration(const DynamicProcedure* procedure, double dt) {
@@ -111,7 +112,10 @@ void ConnectorSystem::start_dynamic_step(bool initial_acceleration) {
 }
 
 void ConnectorSystem::commit() {
-  if (energy_) energy_->add_increment(state_.x - state_.x_n, energy_forces());
+  if (energy_) {
+    energy_->add_increment(state_.x - state_.x_n, energy_forces());
+    energy_->set_kinetic(state_.v.size() > 0 ? kinetic_energy(plan_.inertia, state_.v) : 0.0);
+  }
   state_.commit();
   if (!newmark_) return;
   // The converged I − P of this increment is the next increment's HHT α term.
@@ -723,9 +727,13 @@ double ConnectorSystem::nodal_value(std::int32_t node, int dof) const {
 double ConnectorSystem::reaction(std::int32_t node, int dof) const {
   const int eq = plan_.dofs.equation(node, dof);
   if (eq < 0 || !conditions_.is_prescribed(eq)) return 0.0;
+  return holding_force(eq) - conditions_.external()[eq];
+}
+
+double ConnectorSystem::holding_force(int eq) const {
   const double moved = constraint_load_.size() > 0 ? constraint_load_[eq] : 0.0;
   const double inertia = inertia_force_.size() > 0 ? inertia_force_[eq] : 0.0;
-  return internal_[eq] + inertia - conditions_.external()[eq] - moved;
+  return internal_[eq] + inertia - moved;
 }
 
 double ConnectorSystem::nodal_rate(std::int32_t node, int dof, int order) const {
@@ -747,11 +755,7 @@ double ConnectorSystem::displacement_of_rate(int equation, int order, double rat
 }
 
 ModelEnergies ConnectorSystem::energies() const {
-  if (!energy_) return {};
-  ModelEnergies e = energy_->energies();
-  // Of the converged velocities: at the start, those of *INITIAL CONDITIONS.
-  e.kinetic = state_.v_n.size() > 0 ? kinetic_energy(plan_.inertia, state_.v_n) : 0.0;
-  return e;
+  return energy_ ? energy_->energies() : ModelEnergies{};
 }
 
 // The forces of the last evaluation for the energy balance: the loads on free DOFs, and what
@@ -760,10 +764,7 @@ EnergyForces ConnectorSystem::energy_forces() {
   const int n = plan_.dofs.node_equations();
   external_force_ = conditions_.external().head(n);
   for (int eq : conditions_.prescribed()) {
-    if (eq >= n) continue;
-    const double moved = constraint_load_.size() > 0 ? constraint_load_[eq] : 0.0;
-    const double inertia = inertia_force_.size() > 0 ? inertia_force_[eq] : 0.0;
-    external_force_[eq] = internal_[eq] + inertia - moved;
+    if (eq < n) external_force_[eq] = holding_force(eq);
   }
   return {internal_, external_force_, state_.results, springs_};
 }

@@ -211,6 +211,9 @@ class ConnectorSystem final : public NonlinearProblem {
   Eigen::VectorXd external_force_;       // loads, and at prescribed DOFs what holds them
   double initial_kinetic_ = 0.0;         // ETOTAL at the start (*INITIAL CONDITIONS)
   EnergyForces energy_forces();
+  // What holds prescribed equation `eq` where it is: the elements' and the inertia's force on
+  // it, less the loads moved onto it from dependent DOFs (its reaction plus its own load).
+  double holding_force(int eq) const;
   // With dependent DOFs: the residual over every equation, and a correction expanded to them.
   Eigen::VectorXd full_residual_, full_correction_;
   double load_factor_ = 0.0;  // the LPF column's value

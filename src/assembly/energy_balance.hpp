@@ -23,8 +23,6 @@ struct ModelEnergies {
   double total() const { return kinetic + internal + frictional + viscous - work; }  // ETOTAL
 };
 
-// ModelEnergies::kinetic is not kept here: the system computes it from its velocities.
-
 // The forces of one state: over the nodal equations, the elements' forces on the nodes and the
 // external forces on them (the loads, and at prescribed DOFs what holds them there); per
 // connector and dashpot what splits the elements' work.
@@ -46,6 +44,8 @@ class EnergyBalance {
   // Keeps `now` as the forces the next increment starts from, without adding work: at the start
   // of a dynamic step, where a load of AMPLITUDE=STEP acts from step time 0 on.
   void restart(const EnergyForces& now);
+  // ALLKE of the converged velocities, which the system computes from its masses.
+  void set_kinetic(double kinetic) { energies_.kinetic = kinetic; }
   const ModelEnergies& energies() const { return energies_; }
   // The largest |ALLIE|, |ALLFD|, |ALLVD| or |ALLWK| the run has had: the scale of ETOTAL.
   double largest() const { return largest_; }
