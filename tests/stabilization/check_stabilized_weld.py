@@ -8,6 +8,8 @@ point that load control cannot pass. Checked here:
 
 - without STABILIZE the run stops at the peak (exit 2) and the FAILED line names the limit point
   and STABILIZE among the remedies;
+- the same deck as *STATIC, RIKS follows the path through the valley (every point on it to 1e-8
+  of the peak load), ending where u1 crosses 0.02;
 - with STABILIZE (the defaults: dissipated energy fraction 2e-4, adaptive with ALLSDTOL 0.05) it
   completes; at every converged row ALLSD <= 0.05 ALLIE (the fraction the manual names), the
   applied load CF1 differs from the path at the row's displacement by at most 0.05 of the peak
@@ -48,6 +50,22 @@ last = open(os.path.join(work, "unstabilized_weld.sta"), encoding="utf-8").read(
 if status != 2 or not re.search(r"^FAILED: .*a limit point.*\*STATIC, STABILIZE", last):
     failures.append(f"without STABILIZE: exit {status}, status line {last!r}")
 
+riks = os.path.join(work, "riks_weld.inp")
+with open(deck, encoding="utf-8") as src, open(riks, "w", encoding="utf-8") as dst:
+    dst.write(src.read().replace("*STATIC, STABILIZE\n0.05, 1., 1e-05, 0.05",
+                                 "*STATIC, RIKS\n0.05, 1., 1e-05, 0.05, , 2, 1, 0.02"))
+status = run(riks)
+riks_rows = list(csv.DictReader(open(os.path.join(work, "riks_weld.history.csv"),
+                                     encoding="utf-8")))
+riks_weld = damage_lib.ElasticDamage(1.0e5, 800.0, ("EXPONENTIAL", 0.02, 3.0))
+riks_worst = max(abs(2000.0 * float(r["LPF"]) - SHEET * float(r["U1@2"])
+                     - riks_weld.update(float(r["U1@2"]))[0]) for r in riks_rows) / PEAK
+riks_u = [float(r["U1@2"]) for r in riks_rows]
+valley = min(2000.0 * float(r["LPF"]) for r in riks_rows if float(r["U1@2"]) > 0.008)
+if status != 0 or riks_worst > 1e-8 or max(riks_u) < 0.02 or valley > PEAK * (1 - 0.02):
+    failures.append(f"RIKS: exit {status}, off the path by {riks_worst:.3g} of the peak, "
+                    f"largest u1 {max(riks_u):.4g}, valley at {valley:.6g}")
+
 status = run(deck)
 job = os.path.splitext(os.path.basename(deck))[0]
 if status != 0:
@@ -76,7 +94,9 @@ if worst_balance > 5e-3:
 if float(rows[-1]["step_time"]) != 1.0 or float(rows[-1]["CDMG@1"]) < 0.9:
     failures.append(f"the step did not end past the weld's failure: {rows[-1]}")
 
-print(f"{len(rows) - 1} increments; load - path <= {worst_load:.3g} of the peak; "
+print(f"RIKS: {len(riks_rows) - 1} increments on the path to {riks_worst:.3g}, valley "
+      f"{valley:.6g} ({1 - valley / PEAK:.3g} below the peak)")
+print(f"STABILIZE: {len(rows) - 1} increments; load - path <= {worst_load:.3g} of the peak; "
       f"reaction - path <= {worst_reaction:.3g}; ALLSD/ALLIE <= {worst_ratio:.3g}; "
       f"|ETOTAL|/ALLWK <= {worst_balance:.3g}; final CDMG {float(rows[-1]['CDMG@1']):.4f}")
 for f in failures:
