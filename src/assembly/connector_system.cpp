@@ -105,10 +105,44 @@ void ConnectorSystem::start_dynamic_step(bool initial_acceleration) {
   if (!status.ok) return;
   const auto n = state_.r_n.size();
   state_.r_n = internal_.head(n) - conditions_.external().head(n);
+  r_before_ = state_.r_n;
   if (energy_) energy_->restart(energy_forces());
   if (!initial_acceleration) return;
   initial_accelerations(plan_.inertia, conditions_, state_.r_n, state_.a_n);
   state_.a = state_.a_n;
+}
+
+ConnectorSystem::HalfIncrementResidual ConnectorSystem::half_increment_residual() {
+  HalfIncrementResidual out;
+  if (!newmark_) return out;
+  const std::vector<Matrix3> end_rotation = state_.rotation;
+  newmark_->set_half_increment_state(state_);
+  // Finite rotations: half of the increment's spin, R = exp(½ log(R₁R₀ᵀ)) R₀.
+  for (std::size_t node = 0; node < state_.rotation.size(); ++node) {
+    const Matrix3& start = state_.rotation_n[node];
+    state_.rotation[node] =
+        rotation_exp(0.5 * rotation_log(end_rotation[node] * start.transpose())) * start;
+  }
+  update_dependents();
+  rates_frozen_ = true;
+  Eigen::VectorXd residual(size());
+  out.status = evaluate(residual, nullptr);
+  rates_frozen_ = false;
+  if (!out.status.ok) return out;
+  const Eigen::VectorXd& full = plan_.dependents.empty() ? residual : full_residual_;
+  for (int eq = 0; eq < plan_.dofs.node_equations(); ++eq) {
+    if (conditions_.is_prescribed(eq) || plan_.dependents.is_dependent(eq)) continue;
+    // clinch's rows are the HHT equation divided by 1 + α, with −α r₀ (dynamic_terms.hpp):
+    // back to the HHT form, and the lagged term at the half increment −(α/2)(r₀ + r₋₁).
+    const double alpha = newmark_->alpha;
+    const double r = std::abs(full[eq] * (1.0 + alpha) +
+                              0.5 * alpha * (state_.r_n[eq] - r_before_[eq]));
+    if (out.equation < 0 || r > out.value) {
+      out.value = r;
+      out.equation = eq;
+    }
+  }
+  return out;
 }
 
 void ConnectorSystem::commit() {
@@ -120,6 +154,7 @@ void ConnectorSystem::commit() {
   if (!newmark_) return;
   // The converged I − P of this increment is the next increment's HHT α term.
   const auto n = state_.r_n.size();
+  r_before_ = state_.r_n;
   state_.r_n = internal_.head(n) - conditions_.external().head(n);
 }
 

@@ -68,6 +68,20 @@ class ConnectorSystem final : public NonlinearProblem {
   // At the start of a dynamic step, before its first increment's conditions: r₀ = I₀ − P₀ of
   // the converged state (the HHT α term) and, with `initial_acceleration`, a₀ = M⁻¹(−r₀).
   void start_dynamic_step(bool initial_acceleration);
+  // The half-increment residual of the solved increment (docs/dynamics.md "Automatic
+  // incrementation"): the equations of motion at the state halfway through it
+  // (NewmarkIncrement::set_half_increment_state) under the conditions the caller has applied for
+  // that time, in the HHT form of the Abaqus Theory Manual ("Implicit dynamic analysis"),
+  // M a + (1 + α)(I − P) − (α/2)(r₀ + r₋₁) with r = I − P at the start of this increment and
+  // of the one before (r₀ in a step's first increment). `value` is the largest |R| of a
+  // free nodal equation, `equation` that equation (−1: none). It moves the state: the caller
+  // takes a snapshot before and restores it after.
+  struct HalfIncrementResidual {
+    double value = 0.0;
+    int equation = -1;
+    EvalStatus status;
+  };
+  HalfIncrementResidual half_increment_residual();
 
   // ---- NonlinearProblem ----
   // The solved equations: every equation but the dependent ones (dependent_dofs.hpp); residuals
@@ -207,6 +221,9 @@ class ConnectorSystem final : public NonlinearProblem {
   std::optional<NewmarkIncrement> newmark_;  // set during a dynamic step
   bool rates_frozen_ = false;  // evaluate at the converged velocities (start_dynamic_step)
   Eigen::VectorXd inertia_force_;  // M a per equation at the last evaluation (reactions)
+  // r₋₁ = I − P at the start of the step's last converged increment (r₀ in its first): the
+  // lagged term of the half-increment residual.
+  Eigen::VectorXd r_before_;
   std::optional<EnergyBalance> energy_;  // plan().energies
   Eigen::VectorXd external_force_;       // loads, and at prescribed DOFs what holds them
   double initial_kinetic_ = 0.0;         // ETOTAL at the start (*INITIAL CONDITIONS)

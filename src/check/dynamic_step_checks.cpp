@@ -1,9 +1,8 @@
 // What a *DYNAMIC step cannot run yet (docs/dynamics.md "Not yet supported"), refused at the
 // *DYNAMIC line or at the keyword that asks for it, so that `clinch check` never passes a deck
-// that `clinch run` would integrate wrongly: automatic incrementation (the half-increment
-// residual), kinematic constraints (rigid-body inertia), rotary inertia under NLGEOM (no
-// momentum-conserving rotational update), connector damping (its rate is an increment over Δt,
-// not the velocity of the step), CV and CA output, and the options of *MASS and *ROTARY INERTIA
+// that `clinch run` would integrate wrongly: kinematic constraints (rigid-body inertia), rotary
+// inertia under NLGEOM (no momentum-conserving rotational update), connector damping (its rate is
+// an increment over Δt, not the velocity of the step), CV and CA output, and the options of *MASS and *ROTARY INERTIA
 // that clinch does not read (mass-proportional damping ALPHA, ORIENTATION, COMPOSITE).
 #include <fmt/format.h>
 
@@ -58,12 +57,6 @@ namespace {
 
 void check_step(const Model& model, const Step& step, DiagnosticSink& sink) {
   const SourceLoc at = step.dynamic->loc;
-  // An explicit step (refused at its parameter) has no DIRECT to ask for.
-  if (step.procedure && !step.procedure->direct && !step.dynamic->explicit_integration) {
-    refuse(sink, at,
-           "automatic incrementation of *DYNAMIC (by the half-increment residual, HAFTOL) is not "
-           "supported by clinch yet: give DIRECT and a fixed time increment");
-  }
   if (const ConstraintSource* constraint = first_kinematic_constraint(model)) {
     Diagnostic& d = sink.report(
         DiagCode::unsupported_option, at,

@@ -330,10 +330,11 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
       {"DYNAMIC",
        "Implicit dynamics with the Hilber–Hughes–Taylor operator (APPLICATION=TRANSIENT "
        "FIDELITY, the default, or MODERATE DISSIPATION) or backward Euler (QUASI-STATIC); "
-       "ALPHA, BETA, GAMMA and INITIAL as the manual defines them (docs/dynamics.md).",
+       "ALPHA, BETA, GAMMA and INITIAL as the manual defines them; fixed increments with DIRECT, "
+       "else automatic incrementation held to the half-increment residual (HAFTOL, or the "
+       "APPLICATION's default) (docs/dynamics.md).",
        "`time increment, step time, minimum increment, maximum increment`.",
-       {{"automatic incrementation (no DIRECT)", "give DIRECT and a fixed time increment"},
-        {"EXPLICIT, SUBSPACE, ADIABATIC, NOHAF, STABILIZE and the other explicit or "
+       {{"EXPLICIT, SUBSPACE, ADIABATIC, NOHAF, STABILIZE and the other explicit or "
          "stabilization parameters",
          "not implemented"},
         {"kinematic constraints, *CONNECTOR DAMPING, CV and CA output in the step",
