@@ -279,6 +279,8 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
   // Each rank sets the flags of its own connectors' multipliers (exchange() merges them).
   if (communicator_) std::fill(multiplier_active_.begin(), multiplier_active_.end(), 0);
   state_.request = {};
+  context_.dynamic = newmark_.has_value();
+  context_.dv_du = newmark_ ? newmark_->dv_du : 0.0;
   if (newmark_) {
     if (!rates_frozen_) newmark_->update_rates(state_);
     inertia_force_.setZero();

@@ -210,8 +210,8 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
        "One line: the reference values of components 1 to 6 (lengths, then angles in degrees; "
        "blank fields are 0)."},
       {"CONNECTOR DAMPING",
-       "Viscous damping of connector components (force against velocity Δu/Δt in *STATIC): "
-       "linear, nonlinear or coupled.",
+       "Viscous damping of connector components (force against velocity: Δu/Δt in *STATIC, the "
+       "velocity of the operator in *DYNAMIC): linear, nonlinear or coupled.",
        "Linear: the coefficient. NONLINEAR: rows of `force, velocity`. Coupled (no COMPONENT): "
        "the upper triangle of the damping matrix of the available components.",
        {{"TYPE=RAYLEIGH", "give the coefficient with TYPE=VISCOUS"},
@@ -337,7 +337,7 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
        {{"EXPLICIT, SUBSPACE, ADIABATIC, NOHAF, STABILIZE and the other explicit or "
          "stabilization parameters",
          "not implemented"},
-        {"kinematic constraints, *CONNECTOR DAMPING, CV and CA output in the step",
+        {"kinematic constraints in the model",
          "not implemented"}}},
       {"ENERGY OUTPUT",
        "Whole-model energies as history columns: ALLKE, ALLIE, ALLFD, ALLVD, ALLWK, ETOTAL "
