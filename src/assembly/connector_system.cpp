@@ -107,9 +107,23 @@ void ConnectorSystem::start_dynamic_step(bool initial_acceleration) {
   state_.r_n = internal_.head(n) - conditions_.external().head(n);
   r_before_ = state_.r_n;
   if (energy_) energy_->restart(energy_forces());
-  if (!initial_acceleration) return;
-  initial_accelerations(plan_.inertia, conditions_, state_.r_n, state_.a_n);
-  state_.a = state_.a_n;
+  if (initial_acceleration) {
+    initial_accelerations(plan_.inertia, conditions_, state_.r_n, state_.a_n);
+    state_.a = state_.a_n;
+    // Once more at the initial accelerations, so that CA and the results hold them.
+    rates_frozen_ = true;
+    evaluate(residual, nullptr);
+    rates_frozen_ = false;
+  }
+  keep_converged_components();
+}
+
+void ConnectorSystem::keep_converged_components() {
+  converged_components_.resize(state_.results.size());
+  for (std::size_t c = 0; c < state_.results.size(); ++c) {
+    const ConnectorResult& r = state_.results[c];
+    converged_components_[c] = {r.change, r.velocity, r.acceleration};
+  }
 }
 
 ConnectorSystem::HalfIncrementResidual ConnectorSystem::half_increment_residual() {
@@ -151,6 +165,7 @@ void ConnectorSystem::commit() {
     energy_->set_kinetic(state_.v.size() > 0 ? kinetic_energy(plan_.inertia, state_.v) : 0.0);
   }
   state_.commit();
+  keep_converged_components();
   if (!newmark_) return;
   // The converged I − P of this increment is the next increment's HHT α term.
   const auto n = state_.r_n.size();
@@ -789,6 +804,25 @@ double ConnectorSystem::displacement_of_rate(int equation, int order, double rat
   // Outside an increment of a dynamic step (its start state) the DOF stays where it is.
   if (!newmark_ || newmark_->dt <= 0.0 || equation >= state_.v_n.size()) return u0;
   return newmark_->value_of_rate(u0, state_.v_n[equation], state_.a_n[equation], order, rate);
+}
+
+double ConnectorSystem::converged_component(std::size_t connector, int component,
+                                            int order) const {
+  const int i = component - 1;
+  if (converged_components_.empty()) {
+    const ConnectorResult& r = state_.results[connector];
+    return order == 0 ? r.change[i] : order == 1 ? r.velocity[i] : r.acceleration[i];
+  }
+  const ComponentRates& r = converged_components_[connector];
+  return order == 0 ? r.value[i] : order == 1 ? r.velocity[i] : r.acceleration[i];
+}
+
+double ConnectorSystem::component_value_of_rate(std::size_t connector, int component, int order,
+                                                double rate) const {
+  const double u0 = converged_component(connector, component, 0);
+  if (!newmark_ || newmark_->dt <= 0.0) return u0;
+  return newmark_->value_of_rate(u0, converged_component(connector, component, 1),
+                                 converged_component(connector, component, 2), order, rate);
 }
 
 ModelEnergies ConnectorSystem::energies() const {

@@ -153,6 +153,13 @@ class ConnectorSystem final : public NonlinearProblem {
   // TYPE=VELOCITY or ACCELERATION; docs/dynamics.md); the converged value outside a dynamic
   // increment.
   double displacement_of_rate(int equation, int order, double rate) const;
+  // The same for component `component` (1–6) of `connector`, whose value is its CU: the CU at
+  // the end of the increment whose relative velocity (CV, order 1) or acceleration (CA, order
+  // 2) there is `rate` (*CONNECTOR MOTION, TYPE=VELOCITY or ACCELERATION; docs/dynamics.md).
+  double component_value_of_rate(std::size_t connector, int component, int order,
+                                 double rate) const;
+  // The converged CU (order 0), CV (1) or CA (2) of that component.
+  double converged_component(std::size_t connector, int component, int order) const;
   // The whole-model energies at the last converged increment (plan().energies; else zero).
   ModelEnergies energies() const;
   ConnectorOutput connector_output(std::size_t connector) const;
@@ -224,6 +231,13 @@ class ConnectorSystem final : public NonlinearProblem {
   // r₋₁ = I − P at the start of the step's last converged increment (r₀ in its first): the
   // lagged term of the half-increment residual.
   Eigen::VectorXd r_before_;
+  // CU, CV and CA of every connector at the converged state (kept at each commit and at a
+  // dynamic step's start); empty before the first: the initial state's evaluation holds them.
+  struct ComponentRates {
+    Vector6 value, velocity, acceleration;
+  };
+  std::vector<ComponentRates> converged_components_;
+  void keep_converged_components();
   std::optional<EnergyBalance> energy_;  // plan().energies
   Eigen::VectorXd external_force_;       // loads, and at prescribed DOFs what holds them
   double initial_kinetic_ = 0.0;         // ETOTAL at the start (*INITIAL CONDITIONS)
