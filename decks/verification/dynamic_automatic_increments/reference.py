@@ -2,7 +2,7 @@
 under *DYNAMIC with automatic incrementation (docs/dynamics.md "Automatic incrementation"), the
 increments chosen here from their own definitions, independently of clinch:
 
-  the operator (HHT-alpha, backward Euler) as in dynamic_sdof_recurrence/reference.py, each
+  the operator (HHT-alpha, backward Euler) of dynamic_sdof_recurrence/reference.py, reused, each
   increment solved in closed form;
   the half-increment residual of a solved increment: the state halfway, with the acceleration
   a_h = (a0 + a1)/2 and Newmark's relations over dt/2,
@@ -29,7 +29,9 @@ sys.dont_write_bytecode = True  # keep the case directories free of __pycache__
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 import golden_lib as g  # noqa: E402
 
-M, K = 1.0, 100.0
+# The operators of dynamic_sdof_recurrence, each increment solved in closed form.
+recurrence = g.case_reference("dynamic_sdof_recurrence")
+M, K = recurrence.M, recurrence.K
 # Node: (damping c, initial velocity, load once applied).
 OSCILLATORS = {2: (0.0, 1.0, 0.0), 3: (0.0, 0.0, 50.0), 4: (2.0, 1.0, 0.0)}
 # Step: (initial increment, period, maximum increment, application, HAFTOL or None).
@@ -41,30 +43,19 @@ D_D = 1.5
 
 
 def operator(application):
-    if application == "QUASI-STATIC":
-        return None
-    alpha = -0.05 if application == "TRANSIENT FIDELITY" else -0.41421
-    return alpha, (1.0 - alpha) ** 2 / 4.0, 0.5 - alpha
+    """(alpha, beta, gamma) of an HHT application; None for backward Euler."""
+    alpha, beta, gamma, _ = recurrence.operator(application)
+    return None if alpha is None else (alpha, beta, gamma)
 
 
 def hht_increment(c, p, state, dt, alpha, beta, gamma):
     u0, v0, a0 = state
-    big_a = 1.0 / (beta * dt * dt)
-    big_b = -(u0 + dt * v0) * big_a - (0.5 / beta - 1.0) * a0
-    big_c = gamma * dt * big_a
-    big_d = v0 + dt * (1.0 - gamma) * a0 + gamma * dt * big_b
-    r0 = c * v0 + K * u0 - p
-    lhs = M * big_a + (1.0 + alpha) * (c * big_c + K)
-    rhs = -M * big_b - (1.0 + alpha) * (c * big_d - p) + alpha * r0
-    u1 = rhs / lhs
-    return u1, big_c * u1 + big_d, big_a * u1 + big_b
+    return recurrence.hht_increment(c, u0, v0, a0, p, p, dt, alpha, beta, gamma)
 
 
 def euler_increment(c, p, state, dt):
     u0, v0, _ = state
-    u1 = (p + M * (u0 + dt * v0) / dt ** 2 + c * u0 / dt) / (M / dt ** 2 + c / dt + K)
-    v1 = (u1 - u0) / dt
-    return u1, v1, (v1 - v0) / dt
+    return recurrence.euler_increment(c, u0, v0, p, dt)
 
 
 def half_increment_residual(c, p, start, end, before, dt, alpha, beta, gamma):
