@@ -58,20 +58,16 @@ class ConditionHandler : public KeywordHandler {
         break;
     }
     const std::string_view type = params.enum_value("TYPE");
-    // A dynamic step's *BOUNDARY may prescribe the velocity or the acceleration of a DOF; the
-    // *DYNAMIC line comes before the conditions of its step.
-    const bool rate_boundary = (type == "VELOCITY" || type == "ACCELERATION") &&
-                               kind_ == ConditionKind::Boundary && in_step_ &&
+    // A dynamic step's *BOUNDARY (*CONNECTOR MOTION) may prescribe the velocity or the
+    // acceleration of a DOF (a connector component); the *DYNAMIC line comes before the
+    // conditions of its step.
+    const bool rate_boundary = (type == "VELOCITY" || type == "ACCELERATION") && in_step_ &&
                                current_step(ctx).dynamic;
     if ((type == "VELOCITY" || type == "ACCELERATION") && !rate_boundary) {
       ctx.report(DiagCode::unsupported_option, params.loc("TYPE", true),
-                 kind_ == ConditionKind::Boundary
-                     ? fmt::format("TYPE={} on {} is not supported by clinch outside a *DYNAMIC "
-                                   "step (static steps prescribe displacements)",
-                                   type, keyword)
-                     : fmt::format("TYPE={} on {} is not supported by clinch (it prescribes the "
-                                   "component's displacement)",
-                                   type, keyword));
+                 fmt::format("TYPE={} on {} is not supported by clinch outside a *DYNAMIC step "
+                             "(static steps prescribe displacements)",
+                             type, keyword));
       skip_ = true;
     }
     if (skip_) return;  // a rejected block defines nothing (and takes no part in W0805)

@@ -118,7 +118,7 @@ class DampingHandler : public KeywordHandler {
     if (params.enum_value("TYPE") == "STRUCTURAL") {
       ctx.report(DiagCode::damping_structural_ignored, params.loc("TYPE"),
                  "TYPE=STRUCTURAL connector damping acts only in steady-state dynamics; it has "
-                 "no effect in *STATIC steps and is ignored");
+                 "no effect in *STATIC and *DYNAMIC steps and is ignored");
       damping.structural = true;
     }
     if (params.enum_value("TYPE") == "RAYLEIGH") {

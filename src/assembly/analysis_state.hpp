@@ -31,6 +31,8 @@ struct ConnectorResult {
   Vector6 viscous = Vector6::Zero();       // CVF
   Vector6 applied = Vector6::Zero();       // CCF
   Vector6 total = Vector6::Zero();         // CTF = CEF + CVF + CSF + CRF − CCF
+  Vector6 velocity = Vector6::Zero();      // CV: B v in a dynamic step
+  Vector6 acceleration = Vector6::Zero();  // CA: B a in a dynamic step
 };
 
 // A connector's active set (behaviors.md §5): trial and converged status per component, and the

@@ -111,7 +111,7 @@ EvalStatus ConnectorElements::evaluate_deleted(std::size_t c, const ElementConte
                                           state.position_n[c], false, k);
   if (k.ok) record_motions(r, k, result);
   for (Vector6* v : {&result.elastic, &result.multiplier, &result.friction, &result.viscous,
-                     &result.applied, &result.total}) {
+                     &result.applied, &result.total, &result.velocity, &result.acceleration}) {
     v->setZero();
   }
   return {};
@@ -152,6 +152,29 @@ EvalStatus ConnectorElements::evaluate(std::size_t c, const ElementContext& cont
     if (has_component(set.released, i + 1)) law_motion[i] = motion_old[i] = set.release_motion[i];
   }
   const Vector6 increment = law_motion - motion_old;
+  // The rates of the components from the nodal rates (those of a dynamic step's operator, the
+  // initial velocities in the initial state, 0 in a static step): B v and B a (CV, CA;
+  // docs/dynamics.md); a released component's damping sees none.
+  Vector6 velocity = Vector6::Zero(), acceleration = Vector6::Zero();
+  if (state.v.size() > 0) {
+    for (int a = 0; a < n; ++a) {
+      const int eq = r.local.equation[static_cast<std::size_t>(a)];
+      if (eq < 0 || eq >= state.v.size()) continue;
+      const auto column = k.b.col(r.columns[static_cast<std::size_t>(a)]);
+      velocity += column * state.v[eq];
+      acceleration += column * state.a[eq];
+    }
+  }
+  state.results[c].velocity = velocity;
+  state.results[c].acceleration = acceleration;
+  for (int i = 0; i < 6; ++i) {
+    if (has_component(set.released, i + 1)) velocity[i] = 0.0;
+  }
+  // Connector damping reads its velocity as increment/Δt and its tangent as 1/Δt (the laws'
+  // contract): in a dynamic step it gets the increment v Δt' over Δt' = 1/(∂v₁/∂u₁), so that it
+  // sees the true velocity and its tangent the operator's ∂v₁/∂u₁, as a dashpot does.
+  const double rate_dt = context.dv_du > 0.0 ? 1.0 / context.dv_du : 1.0;
+  const Vector6 rate_increment = velocity * rate_dt;
   Vector6 law_force = Vector6::Zero(), friction = Vector6::Zero(), viscous = Vector6::Zero();
   Matrix6 stiffness = Matrix6::Zero(), force_stiffness = Matrix6::Zero();
   const TangentRequest request = want_tangent ? TangentRequest::Consistent : TangentRequest::None;
@@ -161,11 +184,12 @@ EvalStatus ConnectorElements::evaluate(std::size_t c, const ElementContext& cont
     const std::size_t size = slot.law->history_size();
     BehaviorOutput out;
     out.history_new = std::span<double>(state.history.data() + slot.history, size);
+    const bool true_rate = context.dynamic && slot.law->force_kind() == ForceKind::Viscous;
     const BehaviorInput in{
         motion_old,
-        increment,
+        true_rate ? rate_increment : increment,
         context.time,
-        context.dt,
+        true_rate ? rate_dt : context.dt,
         std::span<const double>(state.history_n.data() + slot.history, size),
         request,
         first ? nullptr : &law_force,

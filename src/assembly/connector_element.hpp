@@ -29,6 +29,10 @@ struct ElementContext {
   const IncrementConditions& conditions;
   bool nlgeom = false;
   double time = 0, dt = 0;
+  // In a dynamic step: the velocities of the state are those of the step's operator, and
+  // ∂v₁/∂u₁ (0 at a step's start state, whose velocities are the converged ones).
+  bool dynamic = false;
+  double dv_du = 0;
 };
 
 class ConnectorElements {

@@ -3,6 +3,7 @@
 #include "src/assembly/connector_tangent_check.hpp"
 #include "src/assembly/failure_description.hpp"
 #include "src/assembly/frequency_mass.hpp"
+#include "src/model/output_variables.hpp"
 
 namespace clinch {
 
@@ -49,6 +50,29 @@ void ConnectorStepProblem::begin_dynamic_increment(double step_time, double tota
   system_.set_load_factor(step_time / period_);
   conditions_.apply(system_, step_time, total_time);
   system_.start_increment(0.0);
+}
+
+StepProblem::HalfIncrementResidual ConnectorStepProblem::half_increment_residual(
+    double step_time, double total_time, double dt) {
+  const ConnectorSystem::Snapshot before = system_.snapshot();
+  const double half = 0.5 * dt;
+  // The loads halfway; the half-increment state carries its own prescribed values.
+  system_.set_time(total_time - half, half);
+  conditions_.apply(system_, step_time - half, total_time - half);
+  const ConnectorSystem::HalfIncrementResidual r = system_.half_increment_residual();
+  system_.set_time(total_time, dt);
+  system_.restore(before);
+  HalfIncrementResidual out;
+  out.value = r.value;
+  if (!r.status.ok) {
+    out.error = r.status.message;
+  } else if (r.equation >= 0) {
+    const DofMap& dofs = system_.plan().dofs;
+    const Node& node = model_.nodes[static_cast<std::size_t>(dofs.node_of(r.equation))];
+    out.dof = output_column_label("U", dofs.dof_of(r.equation)) + "@" +
+              qualified_label(model_, node.instance, node.label);
+  }
+  return out;
 }
 
 void ConnectorStepProblem::set_load_factor(double lpf) {

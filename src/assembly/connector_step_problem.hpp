@@ -24,6 +24,8 @@ class ConnectorStepProblem final : public StepProblem {
                        double extrapolate_scale) override;
   void begin_dynamic_increment(double step_time, double total_time, double dt,
                                const DynamicProcedure& procedure) override;
+  HalfIncrementResidual half_increment_residual(double step_time, double total_time,
+                                                double dt) override;
   std::string check_tangent(int step, int increment) override;
 
   void set_load_factor(double lpf) override;

@@ -107,10 +107,58 @@ void ConnectorSystem::start_dynamic_step(bool initial_acceleration) {
   if (!status.ok) return;
   const auto n = state_.r_n.size();
   state_.r_n = internal_.head(n) - conditions_.external().head(n);
+  r_before_ = state_.r_n;
   if (energy_) energy_->restart(energy_forces());
-  if (!initial_acceleration) return;
-  initial_accelerations(plan_.inertia, conditions_, state_.r_n, state_.a_n);
-  state_.a = state_.a_n;
+  if (initial_acceleration) {
+    initial_accelerations(plan_.inertia, conditions_, state_.r_n, state_.a_n);
+    state_.a = state_.a_n;
+    // Once more at the initial accelerations, so that CA and the results hold them.
+    rates_frozen_ = true;
+    evaluate(residual, nullptr);
+    rates_frozen_ = false;
+  }
+  keep_converged_components();
+}
+
+void ConnectorSystem::keep_converged_components() {
+  converged_components_.resize(state_.results.size());
+  for (std::size_t c = 0; c < state_.results.size(); ++c) {
+    const ConnectorResult& r = state_.results[c];
+    converged_components_[c] = {r.change, r.velocity, r.acceleration};
+  }
+}
+
+ConnectorSystem::HalfIncrementResidual ConnectorSystem::half_increment_residual() {
+  HalfIncrementResidual out;
+  if (!newmark_) return out;
+  const std::vector<Matrix3> end_rotation = state_.rotation;
+  newmark_->set_half_increment_state(state_);
+  // Finite rotations: half of the increment's spin, R = exp(½ log(R₁R₀ᵀ)) R₀.
+  for (std::size_t node = 0; node < state_.rotation.size(); ++node) {
+    const Matrix3& start = state_.rotation_n[node];
+    state_.rotation[node] =
+        rotation_exp(0.5 * rotation_log(end_rotation[node] * start.transpose())) * start;
+  }
+  update_dependents();
+  rates_frozen_ = true;
+  Eigen::VectorXd residual(size());
+  out.status = evaluate(residual, nullptr);
+  rates_frozen_ = false;
+  if (!out.status.ok) return out;
+  const Eigen::VectorXd& full = plan_.dependents.empty() ? residual : full_residual_;
+  for (int eq = 0; eq < plan_.dofs.node_equations(); ++eq) {
+    if (conditions_.is_prescribed(eq) || plan_.dependents.is_dependent(eq)) continue;
+    // clinch's rows are the HHT equation divided by 1 + α, with −α r₀ (dynamic_terms.hpp):
+    // back to the HHT form, and the lagged term at the half increment −(α/2)(r₀ + r₋₁).
+    const double alpha = newmark_->alpha;
+    const double r = std::abs(full[eq] * (1.0 + alpha) +
+                              0.5 * alpha * (state_.r_n[eq] - r_before_[eq]));
+    if (out.equation < 0 || r > out.value) {
+      out.value = r;
+      out.equation = eq;
+    }
+  }
+  return out;
 }
 
 void ConnectorSystem::begin_stabilization(const StaticStabilization* settings, double period) {
@@ -131,9 +179,11 @@ void ConnectorSystem::commit() {
                              warnings_);
   }
   state_.commit();
+  keep_converged_components();
   if (!newmark_) return;
   // The converged I − P of this increment is the next increment's HHT α term.
   const auto n = state_.r_n.size();
+  r_before_ = state_.r_n;
   state_.r_n = internal_.head(n) - conditions_.external().head(n);
 }
 
@@ -258,6 +308,8 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
   // Each rank sets the flags of its own connectors' multipliers (exchange() merges them).
   if (communicator_) std::fill(multiplier_active_.begin(), multiplier_active_.end(), 0);
   state_.request = {};
+  context_.dynamic = newmark_.has_value();
+  context_.dv_du = newmark_ ? newmark_->dv_du : 0.0;
   if (newmark_) {
     if (!rates_frozen_) newmark_->update_rates(state_);
     inertia_force_.setZero();
@@ -774,6 +826,25 @@ double ConnectorSystem::displacement_of_rate(int equation, int order, double rat
   // Outside an increment of a dynamic step (its start state) the DOF stays where it is.
   if (!newmark_ || newmark_->dt <= 0.0 || equation >= state_.v_n.size()) return u0;
   return newmark_->value_of_rate(u0, state_.v_n[equation], state_.a_n[equation], order, rate);
+}
+
+double ConnectorSystem::converged_component(std::size_t connector, int component,
+                                            int order) const {
+  const int i = component - 1;
+  if (converged_components_.empty()) {
+    const ConnectorResult& r = state_.results[connector];
+    return order == 0 ? r.change[i] : order == 1 ? r.velocity[i] : r.acceleration[i];
+  }
+  const ComponentRates& r = converged_components_[connector];
+  return order == 0 ? r.value[i] : order == 1 ? r.velocity[i] : r.acceleration[i];
+}
+
+double ConnectorSystem::component_value_of_rate(std::size_t connector, int component, int order,
+                                                double rate) const {
+  const double u0 = converged_component(connector, component, 0);
+  if (!newmark_ || newmark_->dt <= 0.0) return u0;
+  return newmark_->value_of_rate(u0, converged_component(connector, component, 1),
+                                 converged_component(connector, component, 2), order, rate);
 }
 
 ModelEnergies ConnectorSystem::energies() const {

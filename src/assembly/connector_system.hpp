@@ -69,6 +69,20 @@ class ConnectorSystem final : public NonlinearProblem {
   // At the start of a dynamic step, before its first increment's conditions: r₀ = I₀ − P₀ of
   // the converged state (the HHT α term) and, with `initial_acceleration`, a₀ = M⁻¹(−r₀).
   void start_dynamic_step(bool initial_acceleration);
+  // The half-increment residual of the solved increment (docs/dynamics.md "Automatic
+  // incrementation"): the equations of motion at the state halfway through it
+  // (NewmarkIncrement::set_half_increment_state) under the conditions the caller has applied for
+  // that time, in the HHT form of the Abaqus Theory Manual ("Implicit dynamic analysis"),
+  // M a + (1 + α)(I − P) − (α/2)(r₀ + r₋₁) with r = I − P at the start of this increment and
+  // of the one before (r₀ in a step's first increment). `value` is the largest |R| of a
+  // free nodal equation, `equation` that equation (−1: none). It moves the state: the caller
+  // takes a snapshot before and restores it after.
+  struct HalfIncrementResidual {
+    double value = 0.0;
+    int equation = -1;
+    EvalStatus status;
+  };
+  HalfIncrementResidual half_increment_residual();
 
   // ---- automatic stabilization (stabilization_damping.hpp) ----
   // Starts a step of `period` with `settings` (null: none); its log line joins the events.
@@ -147,6 +161,13 @@ class ConnectorSystem final : public NonlinearProblem {
   // TYPE=VELOCITY or ACCELERATION; docs/dynamics.md); the converged value outside a dynamic
   // increment.
   double displacement_of_rate(int equation, int order, double rate) const;
+  // The same for component `component` (1–6) of `connector`, whose value is its CU: the CU at
+  // the end of the increment whose relative velocity (CV, order 1) or acceleration (CA, order
+  // 2) there is `rate` (*CONNECTOR MOTION, TYPE=VELOCITY or ACCELERATION; docs/dynamics.md).
+  double component_value_of_rate(std::size_t connector, int component, int order,
+                                 double rate) const;
+  // The converged CU (order 0), CV (1) or CA (2) of that component.
+  double converged_component(std::size_t connector, int component, int order) const;
   // The whole-model energies at the last converged increment (plan().energies; else zero).
   ModelEnergies energies() const;
   ConnectorOutput connector_output(std::size_t connector) const;
@@ -216,6 +237,16 @@ class ConnectorSystem final : public NonlinearProblem {
   std::optional<NewmarkIncrement> newmark_;  // set during a dynamic step
   bool rates_frozen_ = false;  // evaluate at the converged velocities (start_dynamic_step)
   Eigen::VectorXd inertia_force_;  // M a per equation at the last evaluation (reactions)
+  // r₋₁ = I − P at the start of the step's last converged increment (r₀ in its first): the
+  // lagged term of the half-increment residual.
+  Eigen::VectorXd r_before_;
+  // CU, CV and CA of every connector at the converged state (kept at each commit and at a
+  // dynamic step's start); empty before the first: the initial state's evaluation holds them.
+  struct ComponentRates {
+    Vector6 value, velocity, acceleration;
+  };
+  std::vector<ComponentRates> converged_components_;
+  void keep_converged_components();
   std::optional<EnergyBalance> energy_;  // plan().energies
   Eigen::VectorXd external_force_;       // loads, and at prescribed DOFs what holds them
   double initial_kinetic_ = 0.0;         // ETOTAL at the start (*INITIAL CONDITIONS)

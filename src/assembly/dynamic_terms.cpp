@@ -55,6 +55,19 @@ double NewmarkIncrement::value_of_rate(double u0, double v0, double a0, int orde
   return u0 + dt * v0 + dt * dt * ((0.5 - beta) * a0 + beta * a1);
 }
 
+void NewmarkIncrement::set_half_increment_state(AnalysisState& s) const {
+  const auto n = s.v.size();
+  s.x = 0.5 * (s.x + s.x_n);
+  s.a = 0.5 * (s.a + s.a_n);
+  if (backward_euler) {
+    s.v = 0.5 * (s.v + s.v_n);
+    return;
+  }
+  const double h = 0.5 * dt;
+  s.x.head(n) = s.x_n.head(n) + h * s.v_n + h * h * ((0.5 - beta) * s.a_n + beta * s.a);
+  s.v = s.v_n + h * ((1.0 - gamma) * s.a_n + gamma * s.a);
+}
+
 void add_inertia(const std::vector<NodeInertia>& inertia, const NewmarkIncrement& increment,
                  const AnalysisState& state, const IncrementConditions& conditions,
                  InertiaTarget target, Eigen::VectorXd& inertia_force, ForceEntries& entries) {

@@ -29,6 +29,12 @@ struct NewmarkIncrement {
   // u₁ whose velocity (order 1) or acceleration (order 2) is `rate`, from u₀, v₀, a₀: the same
   // relations solved the other way (a prescribed rate, *BOUNDARY TYPE=VELOCITY/ACCELERATION).
   double value_of_rate(double u0, double v0, double a0, int order, double rate) const;
+  // The state halfway through the increment, from the converged state and the solved end of the
+  // increment (the half-increment residual, docs/dynamics.md "Automatic incrementation"): the
+  // acceleration is the mean of the start and end ones, and the values and velocities are
+  // Newmark's relations over Δt/2 with it; backward Euler, and the multipliers, take the means of
+  // the start and end values.
+  void set_half_increment_state(AnalysisState& state) const;
 };
 
 // Where the inertia terms go: the residual over every equation, the tangent in the storage of

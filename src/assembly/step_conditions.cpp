@@ -183,7 +183,9 @@ void StepConditions::begin_step(std::size_t s, ConnectorSystem& system) {
         const std::int64_t key = component_key(c, cc.component);
         double start = 0.0;
         if (motion) {
-          start = system.connector_output(static_cast<std::size_t>(c)).change[cc.component - 1];
+          // A prescribed rate starts from the rate the component has (docs/dynamics.md).
+          start = system.converged_component(static_cast<std::size_t>(c), cc.component,
+                                             block.rate_order);
           released_connector_loads_.erase(key);
         } else {
           start = load_start(table, key);
@@ -230,7 +232,13 @@ void StepConditions::apply(ConnectorSystem& system, double step_time, double tot
     if (eq >= 0) conditions.add_load(eq, p.mass[d] * value(c));
   }
   for (const auto& [key, c] : motions_) {
-    conditions.prescribe_motion(static_cast<int>(key / 8), static_cast<int>(key % 8), value(c));
+    const auto connector = static_cast<std::size_t>(key / 8);
+    const int component = static_cast<int>(key % 8);
+    conditions.prescribe_motion(static_cast<int>(connector), component,
+                                c.rate_order == 0
+                                    ? value(c)
+                                    : system.component_value_of_rate(connector, component,
+                                                                     c.rate_order, value(c)));
   }
   for (const Table* table : {&connector_loads_, &released_connector_loads_}) {
     for (const auto& [key, c] : *table) {

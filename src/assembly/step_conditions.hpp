@@ -38,7 +38,7 @@ class StepConditions {
     double start = 0;      // v₀
     double magnitude = 0;  // m (Hold: the held value)
     std::int32_t amplitude = -1;
-    int rate_order = 0;  // a *BOUNDARY of TYPE=VELOCITY (1) or ACCELERATION (2)
+    int rate_order = 0;  // TYPE=VELOCITY (1) or ACCELERATION (2), *BOUNDARY or *CONNECTOR MOTION
     double value(double tau, double step_time, double total_time,
                  const std::vector<std::optional<AmplitudeFunction>>& amplitudes) const;
   };

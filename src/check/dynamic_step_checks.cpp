@@ -1,10 +1,9 @@
 // What a *DYNAMIC step cannot run yet (docs/dynamics.md "Not yet supported"), refused at the
 // *DYNAMIC line or at the keyword that asks for it, so that `clinch check` never passes a deck
-// that `clinch run` would integrate wrongly: automatic incrementation (the half-increment
-// residual), kinematic constraints (rigid-body inertia), rotary inertia under NLGEOM (no
-// momentum-conserving rotational update), connector damping (its rate is an increment over Δt,
-// not the velocity of the step), CV and CA output, and the options of *MASS and *ROTARY INERTIA
-// that clinch does not read (mass-proportional damping ALPHA, ORIENTATION, COMPOSITE).
+// that `clinch run` would integrate wrongly: kinematic constraints (rigid-body inertia), rotary
+// inertia under NLGEOM (no momentum-conserving rotational update), and the options of *MASS and
+// *ROTARY INERTIA that clinch does not read (mass-proportional damping ALPHA, ORIENTATION,
+// COMPOSITE).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -29,19 +28,6 @@ bool has_rotary_inertia(const Model& model) {
                      });
 }
 
-bool has_connector_damping(const Model& model) {
-  for (const ConnectorSection& section : model.sections.connector_sections) {
-    if (section.behavior_index < 0 || section.elements.empty()) continue;
-    const ConnectorBehavior& b =
-        model.behaviors.behaviors[static_cast<std::size_t>(section.behavior_index)];
-    if (std::any_of(b.dampings.begin(), b.dampings.end(),
-                    [](const ConnectorDamping& d) { return !d.structural; })) {
-      return true;
-    }
-  }
-  return false;
-}
-
 }  // namespace
 
 const ConstraintSource* first_kinematic_constraint(const Model& model) {
@@ -58,12 +44,6 @@ namespace {
 
 void check_step(const Model& model, const Step& step, DiagnosticSink& sink) {
   const SourceLoc at = step.dynamic->loc;
-  // An explicit step (refused at its parameter) has no DIRECT to ask for.
-  if (step.procedure && !step.procedure->direct && !step.dynamic->explicit_integration) {
-    refuse(sink, at,
-           "automatic incrementation of *DYNAMIC (by the half-increment residual, HAFTOL) is not "
-           "supported by clinch yet: give DIRECT and a fixed time increment");
-  }
   if (const ConstraintSource* constraint = first_kinematic_constraint(model)) {
     Diagnostic& d = sink.report(
         DiagCode::unsupported_option, at,
@@ -79,28 +59,6 @@ void check_step(const Model& model, const Step& step, DiagnosticSink& sink) {
            "*DYNAMIC with NLGEOM and ROTARYI elements is not supported by clinch yet: finite "
            "rotations need a momentum-conserving rotational update, which is not implemented");
   }
-  if (has_connector_damping(model)) {
-    refuse(sink, at,
-           "*DYNAMIC with *CONNECTOR DAMPING is not supported by clinch yet: connector damping "
-           "reads its rate as an increment over the time increment, not as the velocity of the "
-           "step (use DASHPOTA, DASHPOT1 or DASHPOT2 elements)");
-  }
-  auto refuse_connector_rates = [&](const std::vector<OutputIdentifier>& identifiers) {
-    for (const OutputIdentifier& id : identifiers) {
-      if (id.variable != "CV" && id.variable != "CA") continue;
-      refuse(sink, id.loc,
-             fmt::format("{} in a *DYNAMIC step is not supported by clinch yet (the connector "
-                         "velocities and accelerations are not computed; request V and A of its "
-                         "nodes)",
-                         id.text));
-    }
-  };
-  for (const OutputRequest& request : step.outputs) {
-    for (const ElementOutputRequest& element : request.elements) {
-      refuse_connector_rates(element.identifiers);
-    }
-  }
-  for (const PrintRequest& print : step.prints) refuse_connector_rates(print.identifiers);
 }
 
 // *MASS and *ROTARY INERTIA options that would change the inertia clinch assembles.

@@ -210,8 +210,8 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
        "One line: the reference values of components 1 to 6 (lengths, then angles in degrees; "
        "blank fields are 0)."},
       {"CONNECTOR DAMPING",
-       "Viscous damping of connector components (force against velocity Δu/Δt in *STATIC): "
-       "linear, nonlinear or coupled.",
+       "Viscous damping of connector components (force against velocity: Δu/Δt in *STATIC, the "
+       "velocity of the operator in *DYNAMIC): linear, nonlinear or coupled.",
        "Linear: the coefficient. NONLINEAR: rows of `force, velocity`. Coupled (no COMPONENT): "
        "the upper triangle of the damping matrix of the available components.",
        {{"TYPE=RAYLEIGH", "give the coefficient with TYPE=VISCOUS"},
@@ -334,13 +334,14 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
       {"DYNAMIC",
        "Implicit dynamics with the Hilber–Hughes–Taylor operator (APPLICATION=TRANSIENT "
        "FIDELITY, the default, or MODERATE DISSIPATION) or backward Euler (QUASI-STATIC); "
-       "ALPHA, BETA, GAMMA and INITIAL as the manual defines them (docs/dynamics.md).",
+       "ALPHA, BETA, GAMMA and INITIAL as the manual defines them; fixed increments with DIRECT, "
+       "else automatic incrementation held to the half-increment residual (HAFTOL, or the "
+       "APPLICATION's default) (docs/dynamics.md).",
        "`time increment, step time, minimum increment, maximum increment`.",
-       {{"automatic incrementation (no DIRECT)", "give DIRECT and a fixed time increment"},
-        {"EXPLICIT, SUBSPACE, ADIABATIC, NOHAF, STABILIZE and the other explicit or "
+       {{"EXPLICIT, SUBSPACE, ADIABATIC, NOHAF, STABILIZE and the other explicit or "
          "stabilization parameters",
          "not implemented"},
-        {"kinematic constraints, *CONNECTOR DAMPING, CV and CA output in the step",
+        {"kinematic constraints in the model",
          "not implemented"}}},
       {"ENERGY OUTPUT",
        "Whole-model energies as history columns: ALLKE, ALLIE, ALLFD, ALLVD, ALLSD, ALLWK, "
@@ -392,9 +393,12 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
       {"CLOAD", "Concentrated nodal forces and moments.",
        "`node or set, DOF, magnitude`.",
        {{"FOLLOWER, USER, LOAD CASE, CROSS SECTIONAL, SUBMODEL, SYSTEM", "not implemented"}}},
-      {"CONNECTOR MOTION", "Prescribes a connector component's motion.",
+      {"CONNECTOR MOTION",
+       "Prescribes a connector component's motion; in a *DYNAMIC step TYPE=VELOCITY or "
+       "ACCELERATION prescribes its rate (docs/dynamics.md).",
        "`element or set, component, value`.",
-       {{"TYPE=VELOCITY or ACCELERATION", "static steps prescribe displacements"},
+       {{"TYPE=VELOCITY or ACCELERATION outside a *DYNAMIC step",
+         "static steps prescribe displacements"},
         {"USER", "not implemented"}}},
       {"CONNECTOR LOAD", "Applies a force or moment on a connector component.",
        "`element or set, component, magnitude`."},

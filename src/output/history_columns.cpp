@@ -29,8 +29,8 @@ std::string set_label(const TargetRef& set, bool element) {
                                       : set.instance_display + "." + set.set_display;
 }
 
-// Connector quantities of output-variables.md §2 that clinch run produces; every other connector
-// identifier (velocities) is 0 for the behaviours a run accepts.
+// Connector quantities of output-variables.md §2 that clinch run produces (CV and CA: 0 outside
+// a dynamic step); every other connector identifier is 0 for the behaviours a run accepts.
 double connector_value(const ConnectorOutput& out, std::string_view variable, int component) {
   if (variable == "CUPEQ" && component == 0) return out.scalar_equivalent_plastic();
   // friction.md §6: the scalar outputs of a coupled friction definition. Damage (behaviors.md
@@ -56,6 +56,8 @@ double connector_value(const ConnectorOutput& out, std::string_view variable, in
     return out.history_value(variable, component);
   }
   if (variable == "CP") return out.position[i];
+  if (variable == "CV") return out.velocity[i];
+  if (variable == "CA") return out.acceleration[i];
   if (variable == "CSLST") return out.status[static_cast<std::size_t>(i)];
   return 0.0;
 }

@@ -6,6 +6,7 @@
 // runs it through frequency_step.hpp.
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -32,6 +33,16 @@ struct IncrementRules {
   bool fixed_increments = false;    // no increment can be cut, so Newton breaks its own cycles
 };
 
+// What a procedure's accuracy measure says of a converged increment (a dynamic step's
+// half-increment residual, docs/dynamics.md "Automatic incrementation"): `ratio` below 1 rejects
+// the increment and asks for an attempt that much smaller, as a law's request does; `accuracy` is
+// the measure over its tolerance (NaN: none measured); `message` says both for the log.
+struct IncrementAccuracy {
+  double ratio = std::numeric_limits<double>::infinity();
+  double accuracy = std::numeric_limits<double>::quiet_NaN();
+  std::string message;
+};
+
 class Procedure {
  public:
   virtual ~Procedure() = default;
@@ -45,6 +56,13 @@ class Procedure {
   // What Newton solves in this step: the problem and the step's linear solver themselves, or
   // the system the procedure makes of them (RIKS: bordered by the arc length). Asked once the
   // step has begun and its solver is chosen; valid until the procedure ends.
+  // After a converged attempt at the increment `times`: its accuracy, measured on `problem`
+  // against a tolerance that may scale with `average_force` (q̄ of the converged iteration).
+  virtual IncrementAccuracy check_increment(StepProblem& /*problem*/,
+                                            const IncrementTimes& /*times*/,
+                                            double /*average_force*/) const {
+    return {};
+  }
   virtual NonlinearProblem& newton_problem(NonlinearProblem& problem, StepProblem& /*step*/) {
     return problem;
   }

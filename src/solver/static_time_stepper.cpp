@@ -27,7 +27,8 @@ StaticTimeSettings StaticTimeSettings::of(const StaticProcedure& procedure, int 
           procedure.max_increment,
           procedure.direct,
           max_increments,
-          controls};
+          controls,
+          std::nullopt};
 }
 
 StaticTimeStepper::StaticTimeStepper(const StaticTimeSettings& settings)
@@ -78,6 +79,13 @@ void StaticTimeStepper::grow(const AttemptOutcome& outcome) {
   }
   dt_ = std::min(
       dt_, accepted * (outcome.unreliable ? std::min(1.0, outcome.dt_ratio) : outcome.dt_ratio));
+  if (settings_.accuracy) {
+    const AccuracyControls& a = *settings_.accuracy;
+    accurate_in_a_row_ = outcome.accuracy < a.dh ? accurate_in_a_row_ + 1 : 0;
+    const double allowed =
+        accurate_in_a_row_ >= a.ns ? std::min(a.dm, a.ds / outcome.accuracy) : 1.0;
+    dt_ = std::min(dt_, accepted * allowed);
+  }
   dt_ = std::min(dt_, settings_.max_increment);
 }
 
@@ -99,6 +107,7 @@ TimeProposal StaticTimeStepper::cut_back(const AttemptOutcome& outcome) {
   }
   dt_ *= smaller ? outcome.dt_ratio : outcome.kind == Kind::Diverged ? t.df : t.dc;
   easy_in_a_row_ = 0;
+  accurate_in_a_row_ = 0;
   if (dt_ < settings_.min_increment * (1.0 - 1e-12)) {
     return give_up(outcome, fmt::format("time increment {} below the minimum {} ({})", dt_,
                                         settings_.min_increment, outcome.reason));

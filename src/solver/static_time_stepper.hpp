@@ -1,18 +1,31 @@
 // The time policy of a *STATIC step (keywords.md §15, §16): which increment to try next, given how
 // the last attempt ended. Automatic incrementation grows the increment after easy increments (D_D
-// after two in a row with at most I_G iterations), shrinks it after a hard one (D_B above I_L),
+// after two in a row with at most I_G iterations), no more than an accuracy measure allows where
+// the step has one (AccuracyControls), shrinks it after a hard one (D_B above I_L),
 // cuts back a failed attempt (D_F after divergence, D_C otherwise, or the ratio a law asked for)
 // at most I_A times in a row and never below the minimum, and caps growth where a law asks; DIRECT
 // keeps the increment and stops on the first failure. The last increment ends exactly at the step
 // period.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "src/model/history_model.hpp"
 #include "src/solver/time_stepper.hpp"
 
 namespace clinch {
+
+// The control of a step whose increments are also held to an accuracy tolerance T (the
+// half-increment residual of *DYNAMIC, docs/dynamics.md "Automatic incrementation"; the Abaqus
+// Analysis User's Guide, "Time integration accuracy in transient problems", with its defaults).
+// A converged increment with ε > T is solved again with D_A (T/ε) times the increment; after N_S
+// increments in a row with ε < D_H T and no cutback, the next grows to D_S (T/ε) times the last,
+// at most D_M times; otherwise the accuracy lets it not grow.
+struct AccuracyControls {
+  int ns = 3;
+  double da = 0.85, dh = 0.75, ds = 0.8, dm = 1.25;
+};
 
 struct StaticTimeSettings {
   double period = 1.0;             // T
@@ -22,6 +35,7 @@ struct StaticTimeSettings {
   bool direct = false;
   int max_increments = 100;  // *STEP, INC
   TimeIncrementationControls controls;
+  std::optional<AccuracyControls> accuracy;  // none: the step measures no accuracy
 
   static StaticTimeSettings of(const StaticProcedure& procedure, int max_increments,
                                const TimeIncrementationControls& controls);
@@ -48,6 +62,7 @@ class StaticTimeStepper final : public TimeStepper {
   StaticTimeSettings settings_;
   double dt_ = 0.0, step_time_ = 0.0;
   int increments_ = 0, cutbacks_ = 0, cutbacks_in_a_row_ = 0, easy_in_a_row_ = 0;
+  int accurate_in_a_row_ = 0;  // increments with ε < D_H T since the last cutback
 };
 
 }  // namespace clinch

@@ -20,6 +20,7 @@ struct Attempted {
   IncrementAttempt status_line;
   StepRequest request;
   IterationNorms last_iteration;  // the converged iteration's norms (keywords.md §16)
+  IncrementAccuracy accuracy;     // the procedure's measure of the converged increment
 };
 
 class Driver {
@@ -272,14 +273,31 @@ class Driver {
       const bool converged = report.converged();
       // A converged attempt is still abandoned when a law asks for a smaller increment.
       attempted.request = step_problem_.step_request();
-      const bool smaller = converged && attempted.request.dt_ratio < 1.0;
+      bool smaller = converged && attempted.request.dt_ratio < 1.0;
       attempted.status_line = {step_number,           increment,  attempt_number,
                                !converged || smaller, iterations, iterations + changes,
                                total_time_ + dt,      new_time,   dt};
+      if (converged && !smaller && redo_after_failures(step_number, increment, attempted)) continue;
+      // ... or when the procedure finds it inaccurate (a dynamic step's half-increment residual).
+      attempted.accuracy = {};
+      if (converged && !smaller) {
+        const IterationNorms& norms = report.iterations.back();
+        const double force = criteria_.average_flux(norms, 0);
+        attempted.accuracy = procedure.check_increment(
+            step_problem_, {new_time, total_time_ + dt, dt, 0.0},
+            force > 0.0 ? force : criteria_.average_flux(norms, 1));
+        if (attempted.accuracy.ratio < 1.0) {
+          smaller = true;
+          attempted.request.dt_ratio = attempted.accuracy.ratio;
+          attempted.request.unreliable = false;
+          attempted.request.message = attempted.accuracy.message;
+          attempted.status_line.cut_back = true;
+        }
+      }
       if (!converged || smaller) out_.attempt_ended(attempted.status_line);
       if (!outputs_written(step_number, increment)) return false;
-      if (converged && !smaller && redo_after_failures(step_number, increment, attempted)) continue;
       attempted.outcome = outcome_of(report, attempted.request, smaller, iterations);
+      attempted.outcome.accuracy = attempted.accuracy.accuracy;
       if (converged && !smaller) {
         attempted.last_iteration = report.iterations.back();
       } else {
@@ -345,6 +363,9 @@ class Driver {
     total_time_ += dt;
     ++result_.increments;
     previous_dt_ = dt;
+    if (!attempted.accuracy.message.empty()) {
+      out_.note(step_number, increment, attempted.accuracy.message);
+    }
     out_.increment_converged(attempted.status_line, stepper.at_end());
     if (!outputs_written(step_number, increment)) return false;
     // A lock engages at the converged state; its row shows the unlocked state

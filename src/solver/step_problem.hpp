@@ -54,6 +54,19 @@ class StepProblem {
   // INITIAL=YES, the initial accelerations.
   virtual void begin_dynamic_increment(double step_time, double total_time, double dt,
                                        const DynamicProcedure& procedure) = 0;
+  // After a converged increment of a dynamic step that ends at (step_time, total_time) and is dt
+  // long: its half-increment residual (docs/dynamics.md "Automatic incrementation"), the largest
+  // |R| of a free nodal equation halfway through it, and that DOF ("U1@5"); `error` when the
+  // state there cannot be evaluated. The state is left exactly as it was.
+  struct HalfIncrementResidual {
+    double value = 0.0;
+    std::string dof;
+    std::string error;
+  };
+  virtual HalfIncrementResidual half_increment_residual(double /*step_time*/,
+                                                        double /*total_time*/, double /*dt*/) {
+    return {};
+  }
   // `--check-tangent`: the assembled tangent against finite differences at the start of the
   // increment, as a report for the log; the state is left exactly as it was.
   virtual std::string check_tangent(int step, int increment) = 0;

@@ -30,6 +30,9 @@ struct AttemptOutcome {
   // system names its DOF better than "too many cutbacks").
   bool reason_stands = false;
   std::string note;  // what the state suggests about a failure (a deleted connector next to it)
+  // A converged increment's accuracy measure over its tolerance, ε/T (the half-increment
+  // residual of *DYNAMIC: procedure.hpp, IncrementAccuracy); NaN when the step measures none.
+  double accuracy = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct TimeProposal {

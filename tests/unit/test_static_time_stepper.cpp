@@ -57,6 +57,34 @@ TEST(StaticTimeStepper, GrowsAfterTwoEasyIncrements) {
 
 // More than I_L = 10 iterations: the next increment is D_B = 0.75 of this one; 5–10 iterations
 // keep it and break the run of easy increments.
+// With an accuracy measure (AccuracyControls: the half-increment residual of *DYNAMIC), the
+// increment grows only after N_S = 3 increments in a row with ε/T < D_H = 0.75, to
+// min(D_S/(ε/T), D_M) = min(0.8/(ε/T), 1.25) of the last and no more than D_D allows; an
+// inaccurate increment or a cutback restarts the count.
+TEST(StaticTimeStepper, GrowsNoMoreThanTheAccuracyAllows) {
+  StaticTimeSettings s = settings(0.1, 10.0);
+  s.max_increment = 10.0;
+  s.accuracy = AccuracyControls{};
+  StaticTimeStepper stepper(s);
+  stepper.first();
+  auto accurate = [](double ratio) {
+    AttemptOutcome o = converged(1);
+    o.accuracy = ratio;
+    return o;
+  };
+  EXPECT_NEAR(stepper.next(accurate(0.5)).dt, 0.1, 0.1 * kTol);       // one accurate increment
+  EXPECT_NEAR(stepper.next(accurate(0.5)).dt, 0.1, 0.1 * kTol);       // two: D_D would grow
+  EXPECT_NEAR(stepper.next(accurate(0.8)).dt, 0.1, 0.1 * kTol);       // 0.8 ≥ D_H: count restarts
+  EXPECT_NEAR(stepper.next(accurate(0.7)).dt, 0.1, 0.1 * kTol);
+  EXPECT_NEAR(stepper.next(accurate(0.7)).dt, 0.1, 0.1 * kTol);
+  EXPECT_NEAR(stepper.next(accurate(0.7)).dt, 0.8 / 0.7 * 0.1, 1e-16);  // third: D_S/(ε/T)
+  EXPECT_NEAR(stepper.next(accurate(0.1)).dt, 1.25 * 0.8 / 0.7 * 0.1, 1e-16);  // capped by D_M
+  AttemptOutcome smaller = failed(AttemptOutcome::Kind::LawAsksSmaller, "half-increment residual");
+  smaller.dt_ratio = 0.5;
+  EXPECT_NEAR(stepper.next(smaller).dt, 0.5 * 1.25 * 0.8 / 0.7 * 0.1, 1e-16);
+  EXPECT_NEAR(stepper.next(accurate(0.1)).dt, 0.5 * 1.25 * 0.8 / 0.7 * 0.1, 1e-16);  // restarts
+}
+
 TEST(StaticTimeStepper, ShrinksAfterAHardIncrement) {
   StaticTimeStepper stepper(settings(0.1, 10.0));
   stepper.first();
