@@ -14,9 +14,12 @@ void ConnectorStepProblem::begin_step(std::size_t step, bool nlgeom) {
   conditions_.begin_step(step, system_);
   dynamic_step_started_ = false;
   const Step& s = model_.history.steps[step];
-  period_ = s.procedure ? s.procedure->period : 1.0;
+  // A perturbation step's time is the scale of its perturbation (docs/perturbation.md).
+  period_ = s.procedure && !s.is_perturbation() ? s.procedure->period : 1.0;
   load_factor_ = 1.0;
 }
+
+void ConnectorStepProblem::end_perturbation_step() { conditions_.end_perturbation(); }
 
 void ConnectorStepProblem::end_step(double period, double total_time) {
   conditions_.end_step(period, total_time, load_factor_);

@@ -15,6 +15,7 @@ class ConnectorStepProblem final : public StepProblem {
 
   void begin_step(std::size_t step, bool nlgeom) override;
   void end_step(double period, double total_time) override;
+  void end_perturbation_step() override;
   bool laws_symmetric() const override { return system_.plan().laws_symmetric(); }
   bool has_multipliers() const override { return system_.plan().has_multipliers; }
   void use_storage(bool symmetric) override { system_.use_storage(symmetric); }

@@ -311,9 +311,11 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
         {"*FRICTION outside a *CONNECTOR BEHAVIOR", "surface contact is not implemented"},
         kTemperatureDependence},
        {kExplicitOnly}},
-      {"STEP", "Opens a step; NLGEOM chooses finite rotations, INC the increment limit.",
+      {"STEP",
+       "Opens a step; NLGEOM chooses finite rotations, INC the increment limit. PERTURBATION "
+       "makes it a linear perturbation step about the base state (docs/perturbation.md).",
        "Optional: a description line.",
-       {{"PERTURBATION, SOLVER, MONOTONIC, INCF", "not implemented"},
+       {{"SOLVER, MONOTONIC, INCF", "not implemented"},
         {"EXTRAPOLATION=PARABOLIC", "use LINEAR or NO"}},
        {{"CONVERT SDI", "it has no effect in clinch"}}},
       {"END STEP", "Closes the step.", ""},
