@@ -3,6 +3,9 @@
 #include "src/assembly/connector_tangent_check.hpp"
 #include "src/assembly/failure_description.hpp"
 #include "src/assembly/frequency_mass.hpp"
+#include "src/assembly/rotary_inertia_finite.hpp"
+
+#include <algorithm>
 
 namespace clinch {
 
@@ -17,6 +20,11 @@ void ConnectorStepProblem::begin_step(std::size_t step, bool nlgeom) {
   // A perturbation step's time is the scale of its perturbation (docs/perturbation.md).
   period_ = s.procedure && !s.is_perturbation() ? s.procedure->period : 1.0;
   load_factor_ = 1.0;
+  const std::vector<NodeInertia>& inertia = system_.plan().inertia;
+  finite_rotary_inertia_ =
+      s.dynamic && nlgeom && std::any_of(inertia.begin(), inertia.end(), [](const NodeInertia& n) {
+        return has_finite_rotary_inertia(n, true);
+      });
 }
 
 void ConnectorStepProblem::end_perturbation_step() { conditions_.end_perturbation(); }

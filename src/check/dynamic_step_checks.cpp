@@ -22,13 +22,6 @@ void refuse(DiagnosticSink& sink, SourceLoc loc, std::string message) {
   sink.report(DiagCode::unsupported_option, loc, std::move(message));
 }
 
-bool has_rotary_inertia(const Model& model) {
-  return std::any_of(model.structure.sections.begin(), model.structure.sections.end(),
-                     [](const ElementSection& s) {
-                       return s.kind == ElementSection::Kind::RotaryInertia && !s.elements.empty();
-                     });
-}
-
 bool has_connector_damping(const Model& model) {
   for (const ConnectorSection& section : model.sections.connector_sections) {
     if (section.behavior_index < 0 || section.elements.empty()) continue;
@@ -73,11 +66,6 @@ void check_step(const Model& model, const Step& step, DiagnosticSink& sink) {
     if (constraint->loc.valid()) {
       d.notes.push_back({constraint->loc, fmt::format("{} is here", constraint->keyword)});
     }
-  }
-  if (step.nlgeom && has_rotary_inertia(model)) {
-    refuse(sink, at,
-           "*DYNAMIC with NLGEOM and ROTARYI elements is not supported by clinch yet: finite "
-           "rotations need a momentum-conserving rotational update, which is not implemented");
   }
   if (has_connector_damping(model)) {
     refuse(sink, at,
