@@ -74,7 +74,11 @@ class StepHandler : public KeywordHandler {
   void read_parameters(BlockContext& ctx, Step& step, std::int32_t index) {
     const ParamSet& params = ctx.params();
     HistoryModel& history = ctx.model().history;
-    report_unsupported_params(ctx, {"PERTURBATION", "SOLVER", "MONOTONIC", "INCF"});
+    report_unsupported_params(ctx, {"SOLVER", "MONOTONIC", "INCF"});
+    if (params.has("PERTURBATION")) {
+      step.perturbation = true;
+      step.perturbation_loc = params.loc("PERTURBATION");
+    }
 
     // NAME (default Step-<n>); duplicates are E0511.
     if (auto name = ctx.name_param("NAME")) {
@@ -94,6 +98,7 @@ class StepHandler : public KeywordHandler {
 
     // NLGEOM: once on, it stays on (§13).
     if (params.has("NLGEOM")) {
+      step.nlgeom_loc = params.loc("NLGEOM");
       const bool on = params.flag("NLGEOM");
       if (!on && step.nlgeom) {
         ctx.report(DiagCode::nlgeom_stays_on, params.loc("NLGEOM", true),
@@ -679,7 +684,7 @@ std::vector<KeywordSpec> step_keyword_specs() {
       {"UNSYMM", ParamKind::Enum, false, {"YES", "NO"}},
       {"EXTRAPOLATION", ParamKind::Enum, false, {"LINEAR", "NO", "PARABOLIC"}},
       {"CONVERT SDI", ParamKind::Enum, false, {"YES", "NO"}},
-      unsupported_param("PERTURBATION"),
+      {"PERTURBATION", ParamKind::Flag},
       unsupported_param("SOLVER"),
       unsupported_param("MONOTONIC"),
       unsupported_param("INCF"),

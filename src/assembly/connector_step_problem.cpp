@@ -1,8 +1,11 @@
 #include "src/assembly/connector_step_problem.hpp"
 
+#include <algorithm>
+
 #include "src/assembly/connector_tangent_check.hpp"
 #include "src/assembly/failure_description.hpp"
 #include "src/assembly/frequency_mass.hpp"
+#include "src/assembly/rotary_inertia_finite.hpp"
 #include "src/model/output_variables.hpp"
 
 namespace clinch {
@@ -15,11 +18,19 @@ void ConnectorStepProblem::begin_step(std::size_t step, bool nlgeom) {
   conditions_.begin_step(step, system_);
   dynamic_step_started_ = false;
   const Step& s = model_.history.steps[step];
-  period_ = s.procedure ? s.procedure->period : 1.0;
+  // A perturbation step's time is the scale of its perturbation (docs/perturbation.md).
+  period_ = s.procedure && !s.is_perturbation() ? s.procedure->period : 1.0;
   load_factor_ = 1.0;
   const bool stabilized = s.procedure && s.procedure->stabilize && !s.dynamic && !s.frequency;
   system_.begin_stabilization(stabilized ? &*s.procedure->stabilize : nullptr, period_);
+  const std::vector<NodeInertia>& inertia = system_.plan().inertia;
+  finite_rotary_inertia_ =
+      s.dynamic && nlgeom && std::any_of(inertia.begin(), inertia.end(), [](const NodeInertia& n) {
+        return has_finite_rotary_inertia(n, true);
+      });
 }
+
+void ConnectorStepProblem::end_perturbation_step() { conditions_.end_perturbation(); }
 
 void ConnectorStepProblem::end_step(double period, double total_time) {
   conditions_.end_step(period, total_time, load_factor_);

@@ -15,7 +15,11 @@ class ConnectorStepProblem final : public StepProblem {
 
   void begin_step(std::size_t step, bool nlgeom) override;
   void end_step(double period, double total_time) override;
-  bool laws_symmetric() const override { return system_.plan().laws_symmetric(); }
+  void end_perturbation_step() override;
+  // A finite-rotation rotary inertia has an unsymmetric tangent (rotary_inertia_finite.hpp).
+  bool laws_symmetric() const override {
+    return system_.plan().laws_symmetric() && !finite_rotary_inertia_;
+  }
   bool has_multipliers() const override { return system_.plan().has_multipliers; }
   void use_storage(bool symmetric) override { system_.use_storage(symmetric); }
   ProcedureNeeds procedure_needs() const override { return system_.plan().procedure_needs; }
@@ -58,6 +62,7 @@ class ConnectorStepProblem final : public StepProblem {
   ConnectorSystem& system_;
   StepConditions conditions_;
   bool dynamic_step_started_ = false;  // this step's start state has been taken
+  bool finite_rotary_inertia_ = false;  // the step is dynamic, under NLGEOM, with such a node
   double period_ = 1.0;      // of the step's ramps
   double total_time_ = 0.0;  // at the end of the increment
   double load_factor_ = 1.0;  // τ where the step's conditions end (1 but in a Riks step)

@@ -9,6 +9,7 @@
 
 #include "base/scaled_norm.hpp"
 #include "src/assembly/active_set_updates.hpp"
+#include "src/assembly/rotary_inertia_finite.hpp"
 #include "src/assembly/sparsity_pattern.hpp"
 #include "src/kinematics/rotation_math.hpp"
 
@@ -80,7 +81,7 @@ ConnectorSystem::ConnectorSystem(const Model& model, const AnalysisPlan& plan)
       if (eq >= 0 && state_.v.size() > 0) state_.v[eq] = state_.v_n[eq] = velocity.value;
     }
   }
-  if (state_.v_n.size() > 0) initial_kinetic_ = kinetic_energy(plan_.inertia, state_.v_n);
+  if (state_.v_n.size() > 0) initial_kinetic_ = kinetic_energy(plan_.inertia, state_.v_n, state_.rotation_n);
   if (energy_) energy_->set_kinetic(initial_kinetic_);
 }
 
@@ -171,7 +172,7 @@ void ConnectorSystem::commit() {
   if (energy_) {
     const ModelEnergies before = energy_->energies();
     energy_->add_increment(state_.x - state_.x_n, energy_forces());
-    energy_->set_kinetic(state_.v.size() > 0 ? kinetic_energy(plan_.inertia, state_.v) : 0.0);
+    energy_->set_kinetic(state_.v.size() > 0 ? kinetic_energy(plan_.inertia, state_.v, state_.rotation) : 0.0);
     const ModelEnergies& after = energy_->energies();
     const double element_work = (after.internal + after.frictional + after.viscous) -
                                 (before.internal + before.frictional + before.viscous);
@@ -311,7 +312,10 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
   context_.dynamic = newmark_.has_value();
   context_.dv_du = newmark_ ? newmark_->dv_du : 0.0;
   if (newmark_) {
-    if (!rates_frozen_) newmark_->update_rates(state_);
+    if (!rates_frozen_) {
+      newmark_->update_rates(state_);
+      update_finite_rotary_rates(plan_.inertia, newmark_->dt, state_);
+    }
     inertia_force_.setZero();
   }
   const bool want_tangent = tangent != nullptr;

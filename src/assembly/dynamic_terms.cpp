@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "src/assembly/rotary_inertia_finite.hpp"
 #include "src/assembly/sparsity_pattern.hpp"
 
 namespace clinch {
@@ -73,17 +74,25 @@ void add_inertia(const std::vector<NodeInertia>& inertia, const NewmarkIncrement
                  InertiaTarget target, Eigen::VectorXd& inertia_force, ForceEntries& entries) {
   const double scale = 1.0 / (1.0 + increment.alpha);
   const double stiffness = increment.da_du * scale;
-  // The HHT α term of the converged state, on every free nodal row.
+  // The HHT α term of the converged state, on every free nodal row; the rotation rows of a node
+  // with finite rotary inertia hold their own balance (rotary_inertia_finite.hpp).
+  const bool nlgeom = !state.rotation.empty();
   if (increment.alpha != 0.0) {
+    Eigen::VectorXd alpha_term = increment.alpha * scale * state.r_n;
+    for (const NodeInertia& node : inertia) {
+      if (!has_finite_rotary_inertia(node, nlgeom)) continue;
+      for (int eq : node.rotation) alpha_term[eq] = 0.0;
+    }
     for (Eigen::Index eq = 0; eq < state.r_n.size(); ++eq) {
-      if (!conditions.is_prescribed(static_cast<int>(eq))) {
-        target.residual[eq] -= increment.alpha * scale * state.r_n[eq];
-      }
+      if (!conditions.is_prescribed(static_cast<int>(eq))) target.residual[eq] -= alpha_term[eq];
     }
   }
+  add_finite_rotary_inertia(inertia, increment.dt, state, conditions, target, inertia_force,
+                            entries);
   for (const NodeInertia& node : inertia) {
     const std::array<InertiaBlock, 2> blocks = blocks_of(node);
-    for (int field = 0; field < 2; ++field) {  // forces, then moments
+    const int fields = has_finite_rotary_inertia(node, nlgeom) ? 1 : 2;
+    for (int field = 0; field < fields; ++field) {  // forces, then moments
       const InertiaBlock& block = blocks[static_cast<std::size_t>(field)];
       for (int i = 0; i < 3; ++i) {
         const int row = block.eq[static_cast<std::size_t>(i)];
@@ -147,10 +156,19 @@ void initial_accelerations(const std::vector<NodeInertia>& inertia,
   }
 }
 
-double kinetic_energy(const std::vector<NodeInertia>& inertia, const Eigen::VectorXd& v) {
+double kinetic_energy(const std::vector<NodeInertia>& inertia, const Eigen::VectorXd& v,
+                      const std::vector<Matrix3>& rotations) {
   double energy = 0.0;
   for (const NodeInertia& node : inertia) {
-    for (const InertiaBlock& block : blocks_of(node)) {
+    const bool finite = has_finite_rotary_inertia(node, !rotations.empty());
+    if (finite) {
+      const Vector3 omega(v[node.rotation[0]], v[node.rotation[1]], v[node.rotation[2]]);
+      energy += finite_rotary_kinetic_energy(
+          node, rotations[static_cast<std::size_t>(node.node)], omega);
+    }
+    const std::array<InertiaBlock, 2> blocks = blocks_of(node);
+    for (int field = 0; field < (finite ? 1 : 2); ++field) {  // translations, then rotations
+      const InertiaBlock& block = blocks[static_cast<std::size_t>(field)];
       Vector3 velocity = Vector3::Zero();
       for (int i = 0; i < 3; ++i) {
         const int eq = block.eq[static_cast<std::size_t>(i)];

@@ -60,7 +60,9 @@ void initial_accelerations(const std::vector<NodeInertia>& inertia,
                            const IncrementConditions& conditions, const Eigen::VectorXd& r,
                            Eigen::VectorXd& a);
 
-// ½ vᵀ M v of the nodal masses (ALLKE).
-double kinetic_energy(const std::vector<NodeInertia>& inertia, const Eigen::VectorXd& v);
+// ½ vᵀ M v of the nodal masses (ALLKE); under NLGEOM (`rotations` of the nodes, not empty) the
+// rotary inertia's ½ W·JW in the body's axes (rotary_inertia_finite.hpp).
+double kinetic_energy(const std::vector<NodeInertia>& inertia, const Eigen::VectorXd& v,
+                      const std::vector<Matrix3>& rotations);
 
 }  // namespace clinch

@@ -106,6 +106,7 @@ void StepConditions::begin_step(std::size_t s, ConnectorSystem& system) {
   period_ = step.procedure ? step.procedure->period : 1.0;
   released_loads_.clear();
   released_connector_loads_.clear();
+  base_.reset();
 
   if (s == 0) {
     // Model-data conditions hold zero from time 0 (keywords.md §9, §11).
@@ -123,6 +124,11 @@ void StepConditions::begin_step(std::size_t s, ConnectorSystem& system) {
         if (c >= 0) motions_[component_key(c, m.component)] = Condition{Mode::Hold, 0.0, 0.0, -1};
       }
     }
+  }
+
+  if (step.is_perturbation()) {
+    begin_perturbation(step, system);
+    return;
   }
 
   if (step.replaces(ConditionKind::Boundary)) {
@@ -209,6 +215,96 @@ void StepConditions::begin_step(std::size_t s, ConnectorSystem& system) {
       }
     }
   }
+}
+
+// docs/perturbation.md: every condition of the base state holds its value; the step's own
+// conditions add their magnitudes to the base values, v(τ) = v_base + τ·Δ, so that τ scales the
+// perturbation alone. OP=NEW on *BOUNDARY (*CONNECTOR MOTION) frees the DOFs (components) the base
+// state held for this step: their last reactions become loads that keep the base state in
+// equilibrium. OP=NEW on a load leaves the base loads as they are: they are not perturbations.
+void StepConditions::begin_perturbation(const Step& step, ConnectorSystem& system) {
+  base_ = Tables{boundaries_, loads_,          motions_,
+                 connector_loads_, gravity_, released_loads_, released_connector_loads_};
+  period_ = 1.0;
+  auto perturbed = [](double base, double delta) {
+    return Condition{Mode::Ramp, base, base + delta, -1};
+  };
+  if (step.replaces(ConditionKind::Boundary)) {
+    for (const auto& [eq, c] : boundaries_) {
+      const std::int32_t node = plan_.dofs.node_of(static_cast<int>(eq));
+      released_loads_[eq] = Condition{
+          Mode::Hold, 0.0, system.reaction(node, plan_.dofs.dof_of(static_cast<int>(eq))), -1};
+    }
+    boundaries_.clear();
+  }
+  if (step.replaces(ConditionKind::Motion)) {
+    for (const auto& [key, c] : motions_) {
+      const ConnectorOutput out = system.connector_output(static_cast<std::size_t>(key / 8));
+      released_connector_loads_[key] =
+          Condition{Mode::Hold, 0.0, -out.multiplier[static_cast<int>(key % 8) - 1], -1};
+    }
+    motions_.clear();
+  }
+  for (const BoundaryCondition& bc : step.boundaries) {
+    const ConditionBlock& block = step.blocks[static_cast<std::size_t>(bc.block)];
+    for (std::int32_t node : bc.resolved) {
+      for (int dof = 1; dof <= 6; ++dof) {
+        const int eq = (bc.dofs >> (dof - 1)) & 1u ? plan_.dofs.equation(node, dof) : -1;
+        if (eq < 0) continue;
+        boundaries_[eq] = perturbed(system.converged_value(eq), block.fixed ? 0.0 : bc.magnitude);
+        released_loads_.erase(eq);
+      }
+    }
+  }
+  for (const ConcentratedLoad& load : step.loads) {
+    for (std::int32_t node : load.resolved) {
+      const int eq = plan_.dofs.equation(node, load.dof);
+      if (eq >= 0) loads_[eq] = perturbed(load_start(base_->loads, eq), load.magnitude);
+    }
+  }
+  for (const ConnectorCondition& m : step.motions) {
+    const ConditionBlock& block = step.blocks[static_cast<std::size_t>(m.block)];
+    for (std::int32_t e : m.resolved) {
+      const std::int32_t c = plan_.connector_of_element[static_cast<std::size_t>(e)];
+      if (c < 0) continue;
+      const std::int64_t key = component_key(c, m.component);
+      const double base =
+          system.connector_output(static_cast<std::size_t>(c)).change[m.component - 1];
+      motions_[key] = perturbed(base, block.fixed ? 0.0 : m.magnitude);
+      released_connector_loads_.erase(key);
+    }
+  }
+  for (const ConnectorCondition& cl : step.connector_loads) {
+    for (std::int32_t e : cl.resolved) {
+      const std::int32_t c = plan_.connector_of_element[static_cast<std::size_t>(e)];
+      if (c < 0) continue;
+      const std::int64_t key = component_key(c, cl.component);
+      connector_loads_[key] = perturbed(load_start(base_->connector_loads, key), cl.magnitude);
+    }
+  }
+  for (const GravityLoad& g : step.gravity) {
+    for (std::int32_t e : g.resolved) {
+      const std::int32_t p = point_mass_of_element_[static_cast<std::size_t>(e)];
+      if (p < 0) continue;
+      for (int d = 0; d < 3; ++d) {
+        const std::int64_t key = static_cast<std::int64_t>(p) * 8 + d;
+        gravity_[key] = perturbed(load_start(base_->gravity, key),
+                                  g.magnitude * g.direction[static_cast<std::size_t>(d)]);
+      }
+    }
+  }
+}
+
+void StepConditions::end_perturbation() {
+  if (!base_) return;
+  boundaries_ = std::move(base_->boundaries);
+  loads_ = std::move(base_->loads);
+  motions_ = std::move(base_->motions);
+  connector_loads_ = std::move(base_->connector_loads);
+  gravity_ = std::move(base_->gravity);
+  released_loads_ = std::move(base_->released_loads);
+  released_connector_loads_ = std::move(base_->released_connector_loads);
+  base_.reset();
 }
 
 void StepConditions::apply(ConnectorSystem& system, double step_time, double total_time) const {

@@ -30,6 +30,9 @@ class StepConditions {
   // Holds every condition at its value at the end of the step (a prescribed rate stays a rate,
   // as Abaqus carries a velocity condition into the next step).
   void end_step(double period, double total_time, double tau = 1.0);
+  // After a linear perturbation step (docs/perturbation.md): back to the conditions of its base
+  // state, as if the step had not been there.
+  void end_perturbation();
 
  private:
   enum class Mode : std::uint8_t { Ramp, Jump, Amplitude, AmplitudeAbsolute, Fixed, Hold };
@@ -50,6 +53,7 @@ class StepConditions {
                    bool prescribed_kind) const;
   static double load_start(const Table& table, std::int64_t key);
   void carry_over(Table& table, bool replaced, bool load_kind, const Step& step, Table& removed);
+  void begin_perturbation(const Step& step, ConnectorSystem& system);
 
   const Model& model_;
   const AnalysisPlan& plan_;
@@ -61,6 +65,12 @@ class StepConditions {
   // Removed prescribed conditions become loads that decay to zero over the step.
   Table released_loads_, released_connector_loads_;
   double period_ = 1.0;
+  // Every table as the base state of a perturbation step left it (restored by end_perturbation).
+  struct Tables {
+    Table boundaries, loads, motions, connector_loads, gravity, released_loads,
+        released_connector_loads;
+  };
+  std::optional<Tables> base_;
 };
 
 }  // namespace clinch

@@ -9,6 +9,7 @@ void check_model(const Model& model, DiagnosticSink& sink) {
   check_constraints(model, sink);
   check_dynamic_steps(model, sink);
   check_frequency_steps(model, sink);
+  check_perturbation_steps(model, sink);
 }
 
 }  // namespace clinch

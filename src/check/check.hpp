@@ -34,6 +34,8 @@ const ConstraintSource* first_kinematic_constraint(const Model& model);
 
 // What a *FREQUENCY step cannot run yet (frequency_step_checks.cpp).
 void check_frequency_steps(const Model& model, DiagnosticSink& sink);
+// What a *STEP, PERTURBATION cannot have (perturbation_step_checks.cpp).
+void check_perturbation_steps(const Model& model, DiagnosticSink& sink);
 
 void check_model(const Model& model, DiagnosticSink& sink);
 

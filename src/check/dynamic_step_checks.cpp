@@ -1,9 +1,8 @@
 // What a *DYNAMIC step cannot run yet (docs/dynamics.md "Not yet supported"), refused at the
 // *DYNAMIC line or at the keyword that asks for it, so that `clinch check` never passes a deck
-// that `clinch run` would integrate wrongly: kinematic constraints (rigid-body inertia), rotary
-// inertia under NLGEOM (no momentum-conserving rotational update), and the options of *MASS and
-// *ROTARY INERTIA that clinch does not read (mass-proportional damping ALPHA, ORIENTATION,
-// COMPOSITE).
+// that `clinch run` would integrate wrongly: kinematic constraints (rigid-body inertia), and the
+// options of *MASS and *ROTARY INERTIA that clinch does not read (mass-proportional damping
+// ALPHA, ORIENTATION, COMPOSITE).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -19,13 +18,6 @@ namespace {
 
 void refuse(DiagnosticSink& sink, SourceLoc loc, std::string message) {
   sink.report(DiagCode::unsupported_option, loc, std::move(message));
-}
-
-bool has_rotary_inertia(const Model& model) {
-  return std::any_of(model.structure.sections.begin(), model.structure.sections.end(),
-                     [](const ElementSection& s) {
-                       return s.kind == ElementSection::Kind::RotaryInertia && !s.elements.empty();
-                     });
 }
 
 }  // namespace
@@ -53,11 +45,6 @@ void check_step(const Model& model, const Step& step, DiagnosticSink& sink) {
     if (constraint->loc.valid()) {
       d.notes.push_back({constraint->loc, fmt::format("{} is here", constraint->keyword)});
     }
-  }
-  if (step.nlgeom && has_rotary_inertia(model)) {
-    refuse(sink, at,
-           "*DYNAMIC with NLGEOM and ROTARYI elements is not supported by clinch yet: finite "
-           "rotations need a momentum-conserving rotational update, which is not implemented");
   }
 }
 

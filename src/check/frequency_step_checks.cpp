@@ -1,8 +1,8 @@
 // What a *FREQUENCY step cannot run yet (docs/dynamics.md "Natural frequencies"), refused at the
 // keyword that asks for it so that `clinch check` never passes a deck that `clinch run` would
-// solve wrongly: conditions and loads given inside the step (the step keeps the conditions of its
-// base state, and Abaqus's perturbation conditions are not implemented) and kinematic constraints
-// (the mass of a constrained node would have to follow the constraint).
+// solve wrongly: loads and connector conditions given inside the step (its *BOUNDARY holds DOFs
+// for this step only, docs/perturbation.md; loads do not enter an eigenproblem) and kinematic
+// constraints (the mass of a constrained node would have to follow the constraint).
 #include <fmt/format.h>
 
 #include "base/diagnostic.hpp"
@@ -16,10 +16,11 @@ void check_frequency_steps(const Model& model, DiagnosticSink& sink) {
   for (const Step& step : model.history.steps) {
     if (!step.frequency) continue;
     for (const ConditionBlock& block : step.blocks) {
+      if (block.kind == ConditionKind::Boundary) continue;
       sink.report(DiagCode::unsupported_option, block.loc,
                   fmt::format("{} in a *FREQUENCY step is not supported by clinch: the step "
-                              "keeps the conditions of its base state (give them in a *STATIC "
-                              "or *DYNAMIC step before it)",
+                              "takes *BOUNDARY only (give loads and connector conditions in a "
+                              "*STATIC or *DYNAMIC step before it)",
                               condition_keyword(block.kind)));
     }
     const ConstraintSource* constraint = first_kinematic_constraint(model);

@@ -111,8 +111,7 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
        "The rotary inertia of the ROTARYI elements of ELSET=, the full tensor in the global "
        "axes: the inertia of *DYNAMIC and *FREQUENCY steps (docs/dynamics.md).",
        "`I11, I22, I33, I12, I13, I23`.",
-       {{"ALPHA, ORIENTATION, COMPOSITE", "not implemented"},
-        {"with NLGEOM in a *DYNAMIC step", "finite-rotation dynamics is not implemented"}},
+       {{"ALPHA, ORIENTATION, COMPOSITE", "not implemented"}},
        {{"the whole keyword when no step is *DYNAMIC or *FREQUENCY", "a static step has no inertia"}}},
       {"MATERIAL",
        "Opens a named material; the options that follow (*ELASTIC, *DENSITY, ...) belong to it. "
@@ -311,9 +310,11 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
         {"*FRICTION outside a *CONNECTOR BEHAVIOR", "surface contact is not implemented"},
         kTemperatureDependence},
        {kExplicitOnly}},
-      {"STEP", "Opens a step; NLGEOM chooses finite rotations, INC the increment limit.",
+      {"STEP",
+       "Opens a step; NLGEOM chooses finite rotations, INC the increment limit. PERTURBATION "
+       "makes it a linear perturbation step about the base state (docs/perturbation.md).",
        "Optional: a description line.",
-       {{"PERTURBATION, SOLVER, MONOTONIC, INCF", "not implemented"},
+       {{"SOLVER, MONOTONIC, INCF", "not implemented"},
         {"EXTRAPOLATION=PARABOLIC", "use LINEAR or NO"}},
        {{"CONVERT SDI", "it has no effect in clinch"}}},
       {"END STEP", "Closes the step.", ""},

@@ -337,6 +337,11 @@ struct Step {
   std::optional<StaticProcedure> procedure;
   std::optional<DynamicProcedure> dynamic;
   std::optional<FrequencyProcedure> frequency;  // *FREQUENCY: a linear perturbation step
+  // *STEP, PERTURBATION (docs/perturbation.md): a linear response about the base state, which
+  // the next general step continues from. *FREQUENCY is one whether or not the flag is given.
+  bool perturbation = false;
+  SourceLoc perturbation_loc;  // the PERTURBATION parameter (invalid when absent)
+  SourceLoc nlgeom_loc;        // NLGEOM on this *STEP line (invalid when absent)
   bool procedure_refused = false;  // its procedure keyword is one clinch does not run (E0202)
   Controls controls;  // effective controls (carried over, §13)
 
@@ -356,6 +361,8 @@ struct Step {
 
   // The step names its procedure (*STATIC, *DYNAMIC or *FREQUENCY), or one clinch refuses.
   bool has_procedure() const { return procedure || frequency || procedure_refused; }
+  // A linear perturbation step: its conditions and response do not carry into later steps.
+  bool is_perturbation() const { return perturbation || frequency.has_value(); }
 
   // OP=NEW on some block of this kind: the step's blocks of that kind are the complete set (§13).
   bool replaces(ConditionKind kind) const;

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -51,6 +52,12 @@ class RunOutputs {
   void note(std::string_view text) { log_.info(text); }
   void warning(std::string_view text) { log_.warning(text); }
   void cut_back(int step, int increment, std::string_view reason, double dt);
+  // A linear perturbation step's row (docs/perturbation.md), from the states `at(+h)` and
+  // `at(−h)` along its response, at the total time of its base state; false when `at` failed.
+  bool perturbation_response(int step, double total_time, double h,
+                             const std::function<bool(double)>& at) {
+    return history_.perturbation(step, total_time, h, at);
+  }
   // The modes file of the frequency steps (none: their modes go to the log only).
   void set_modes_file(ModesFile* modes) { modes_ = modes; }
   // A frequency step's modes: the eigenvalue table in the log, then the rows of the modes file.

@@ -46,9 +46,12 @@ bool check_time_order(const CsvTable& table, const std::vector<double>& times, s
 }
 
 // A golden time equal (within `tol`) to result times maps to the LAST result row at that time: a
-// repeated row is a later state at the same time (a re-solved increment). Between two times the
+// repeated row is a later state at the same time (a re-solved increment). Rows of several steps at
+// one time (a linear perturbation step takes no time, docs/perturbation.md) are told apart by
+// the golden row's step: the last of them in that step, if it has one. Between two times the
 // bracketing rows are the adjacent pair around it.
-TimeMatch match_time(const std::vector<double>& times, double t, double tol) {
+TimeMatch match_time(const std::vector<double>& times, const std::vector<double>& steps, double t,
+                     double step, double tol) {
   TimeMatch match;
   if (times.empty() || !std::isfinite(t) || t < times.front() - tol || t > times.back() + tol) {
     return match;
@@ -58,6 +61,12 @@ TimeMatch match_time(const std::vector<double>& times, double t, double tol) {
   if (times[last] >= t - tol) {
     match.kind = TimeMatch::Kind::Row;
     match.row = last;
+    for (std::size_t i = last + 1; i-- > 0 && times[i] >= t - tol;) {
+      if (steps[i] == step) {
+        match.row = i;
+        break;
+      }
+    }
     return match;
   }
   match.kind = TimeMatch::Kind::Between;
@@ -212,9 +221,13 @@ std::optional<TableComparison> compare_tables(const CsvTable& result, const CsvT
     }
   }
   const double time_tol = kTimeTolerance * time_scale;
+  const std::vector<double> golden_steps = column_values(golden, *golden.column_index("step"));
   std::vector<TimeMatch> matches;
   matches.reserve(golden_times.size());
-  for (double t : golden_times) matches.push_back(match_time(result_times, t, time_tol));
+  for (std::size_t i = 0; i < golden_times.size(); ++i) {
+    matches.push_back(
+        match_time(result_times, result_steps, golden_times[i], golden_steps[i], time_tol));
+  }
 
   // A golden column is found in the result by its name, else by the same column in the other
   // naming (CTM1@7 in one table, CTF4@7 in the other: output-variables.md §1.1).

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <optional>
 #include <array>
 #include <bit>
 #include <memory>
@@ -56,6 +57,16 @@ std::string element_name(const Model& model, std::int32_t element) {
 // design).
 class DofTable {
  public:
+  DofTable() = default;
+  DofTable(DofTable&&) = default;
+  DofTable& operator=(DofTable&&) = default;
+  // A copy of the touched pages (the conditions in force before a perturbation step).
+  DofTable(const DofTable& other) {
+    pages_.resize(other.pages_.size());
+    for (std::size_t p = 0; p < pages_.size(); ++p) {
+      if (other.pages_[p]) pages_[p] = std::make_unique<Page>(*other.pages_[p]);
+    }
+  }
   // Sets (index, dof). Returns true when it was not set; otherwise *previous is the location of
   // the line that set the index first.
   bool insert(std::int32_t index, int dof, SourceLoc loc, SourceLoc* previous = nullptr) {
@@ -131,6 +142,9 @@ class HistoryValidator {
     for (Step& step : history.steps) {
       check_step_structure(step);
       const std::string where = fmt::format("step '{}'", step.name.display);
+      // A perturbation step's conditions hold in that step only (docs/perturbation.md).
+      std::optional<InForce> base =
+          step.is_perturbation() ? std::optional<InForce>(in_force) : std::nullopt;
       if (step.replaces(ConditionKind::Boundary)) in_force.boundaries.clear();
       if (step.replaces(ConditionKind::Motion)) in_force.motions.clear();
       DofTable seen;
@@ -146,6 +160,7 @@ class HistoryValidator {
       for (ConnectorCondition& load : step.connector_loads) {
         check_connector(load, ConditionKind::ConnectorLoad, where, nullptr, in_force);
       }
+      if (base) in_force = std::move(*base);
     }
     resolve_output_requests(model_, active_, sink_);
   }

@@ -10,6 +10,7 @@
 #include "src/solver/convergence_criteria.hpp"
 #include "src/solver/frequency_step.hpp"
 #include "src/solver/procedure.hpp"
+#include "src/solver/static_perturbation_step.hpp"
 
 namespace clinch {
 namespace {
@@ -134,6 +135,7 @@ class Driver {
   bool run_step(std::size_t s) {
     const Step& step = model_.history.steps[s];
     if (step.frequency) return run_frequency_step(s);
+    if (step.perturbation) return run_static_perturbation_step(s);
     const std::unique_ptr<Procedure> procedure = procedure_for(step);
     const int step_number = static_cast<int>(s) + 1;
     if (!begin_step(step, *procedure, step_number)) return false;
@@ -198,6 +200,7 @@ class Driver {
                           solver->name(), problem_.pattern().n, model.mass.factor.size()));
     FrequencyStepResult result = solve_frequency_step(*step.frequency, problem_, model, *solver);
     step_problem_.revert();
+    step_problem_.end_perturbation_step();
     if (!result.error.empty()) {
       NewtonReport report;
       report.outcome = NewtonOutcome::SolverFailed;
@@ -217,6 +220,45 @@ class Driver {
       return fail(std::move(written), step_number, 0);
     }
     return outputs_written(step_number, 0);
+  }
+
+  // A *STATIC step of a *STEP, PERTURBATION (static_perturbation_step.hpp): the linear response
+  // about the base state, one history row of it, and back to the base state, which the next step
+  // continues from. It takes no time. Its row holds each column's derivative along the response,
+  // (y(+h) − y(−h))/2h at τ = ±h of it: exact for what is linear in the state (U, and every
+  // column of linear laws), within O(h²) otherwise (docs/perturbation.md).
+  bool run_static_perturbation_step(std::size_t s) {
+    constexpr double h = 1e-4;
+    const Step& step = model_.history.steps[s];
+    const int step_number = static_cast<int>(s) + 1;
+    if (interrupted(step_number, 0)) return false;
+    out_.begin_step(s);
+    step_problem_.begin_step(s, step.nlgeom);
+    if (!choose_storage(step, step_number)) return false;
+    const PerturbationSolution solution =
+        solve_static_perturbation(problem_, step_problem_, *solver_, total_time_);
+    std::string error = solution.error;
+    if (error.empty()) {
+      out_.note(step_number, 0,
+                "linear perturbation about the base state: the tangent there, the step's loads "
+                "and prescribed values as perturbations");
+      const bool written = out_.perturbation_response(
+          step_number, total_time_, h, [&](double tau) {
+            return evaluate_perturbed_state(problem_, step_problem_, solution.response, tau,
+                                            total_time_, error);
+          });
+      if (!written && error.empty()) error = "the perturbation response could not be evaluated";
+    } else if (solution.failed_equation >= 0) {
+      NewtonReport report;
+      report.outcome = NewtonOutcome::SolverFailed;
+      report.message = error;
+      report.failed_equation = solution.failed_equation;
+      error = fmt::format("{}; {}", error, step_problem_.describe_failure(report));
+    }
+    step_problem_.revert();
+    step_problem_.end_perturbation_step();
+    if (!error.empty()) return fail(error, step_number, 1);
+    return outputs_written(step_number, 1);
   }
 
   // What the step sets once: NLGEOM, the storage and its solver, the conditions, the line search,

@@ -78,6 +78,12 @@ class StepProblem {
   // The current value of DOF `dof` (1–6) of global node `node`; 0 when the node has no such DOF.
   virtual double nodal_value(std::int32_t node, int dof) const = 0;
 
+  // ---- a linear perturbation step (docs/perturbation.md) ----
+  // Back to the conditions of the base state once a perturbation step (static or frequency) is
+  // done; its state is left by revert(). A step's time τ scales its perturbation: its
+  // conditions at step time τ are the base values plus τ times their magnitudes.
+  virtual void end_perturbation_step() {}
+
   // ---- a frequency step (frequency_step.hpp) ----
   // The mass and DOF names under the conditions of the current increment.
   virtual FrequencyModel frequency_model() const { return {}; }

@@ -14,8 +14,9 @@ namespace {
 // Node 1 held, node 2 carries a mass and the ends of a SPRINGA and of a DASHPOTA at an angle;
 // node 3 carries a mass on a DASHPOTA to node 2; initial velocities on several free DOFs. With
 // small displacements node 2 also turns: SPRING1s and a DASHPOT1 on its rotations and a rotary
-// inertia tensor with products of inertia (under NLGEOM a dynamic step refuses ROTARYI, and the
-// multiplicative rotation update has a Jacobian term clinch leaves out, test_assembled_tangent).
+// inertia tensor with products of inertia (under NLGEOM the multiplicative rotation update of the
+// springs has a Jacobian term clinch leaves out, test_assembled_tangent; the finite-rotation
+// inertia has a test of its own below).
 std::string dynamic_deck(bool nlgeom) {
   const std::string turning =
       "*ELEMENT, TYPE=SPRING1, ELSET=KR\n4, 2\n*SPRING, ELSET=KR\n6\n20.\n"
@@ -66,6 +67,44 @@ void check_dynamic_tangent(bool nlgeom, bool backward_euler) {
   EXPECT_LE(report.max_error, 1e-6 * largest) << report;
   // Every entry of the free rows and columns (node 1 is held).
   EXPECT_EQ(report.compared, (s.size() - 3) * (s.size() - 3));
+}
+
+// Under NLGEOM a node with a full rotary inertia tensor turns by finite rotations
+// (rotary_inertia_finite.hpp): its rows 2(π₁ − π₀)/Δt + r₀ against central differences of spins
+// R ← exp(δθ̂)R, at a trial rotation 0.05 rad from a converged one that is itself turned and
+// spinning, so that the unsymmetric −π̂₁ and the T(Θ)⁻¹ terms are exercised. Three SPRING1 of
+// zero stiffness only make the rotations active.
+TEST(DynamicTangent, NlgeomFiniteRotaryInertia) {
+  auto a = analyse(
+      "*NODE\n1, 0., 0., 0.\n"
+      "*ELEMENT, TYPE=SPRING1, ELSET=S4\n1, 1\n*SPRING, ELSET=S4\n4\n0.\n"
+      "*ELEMENT, TYPE=SPRING1, ELSET=S5\n2, 1\n*SPRING, ELSET=S5\n5\n0.\n"
+      "*ELEMENT, TYPE=SPRING1, ELSET=S6\n3, 1\n*SPRING, ELSET=S6\n6\n0.\n"
+      "*ELEMENT, TYPE=ROTARYI, ELSET=J\n4, 1\n"
+      "*ROTARY INERTIA, ELSET=J\n2., 3., 4., 0.1, -0.2, 0.15\n"
+      "*INITIAL CONDITIONS, TYPE=VELOCITY\n1, 4, 1.0\n1, 5, 0.3\n1, 6, 0.8\n"
+      "*STEP, NLGEOM\n*DYNAMIC, DIRECT\n0.01, 0.1\n*END STEP\n");
+  ASSERT_TRUE(a->system);
+  ConnectorSystem& s = *a->system;
+  s.set_nlgeom(true);
+  s.use_storage(false);  // −π̂₁ is unsymmetric
+  const DynamicProcedure procedure = *a->deck.model.history.steps[0].dynamic;
+  s.start_dynamic_step(true);
+  s.set_integration(&procedure, 0.01);
+  s.start_increment(0.0);
+  s.apply_correction(random_state(s.size(), 5u, 0.3));
+  s.commit();  // a turned converged state R₀ ≠ I
+  s.start_increment(0.0);
+  s.apply_correction(random_state(s.size(), 9u, 0.05));
+  double largest = 0;
+  // Central differences with h = 1e-7: the entries are ≈ 4J/Δt² ≈ 1e5; truncation O(h²) and
+  // rounding O(ε|r|/h) ≈ 1e-9 of the largest; 1e-6 of it bounds both.
+  const JacobianReport report =
+      tangent_against_differences(s, [](int) { return 1e-7; }, false, largest);
+  ASSERT_TRUE(report.evaluated()) << report;
+  EXPECT_GT(largest, 1e4);
+  EXPECT_LE(report.max_error, 1e-6 * largest) << report;
+  EXPECT_EQ(report.compared, 9);
 }
 
 TEST(DynamicTangent, SmallDisplacementsHht) { check_dynamic_tangent(false, false); }

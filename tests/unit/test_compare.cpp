@@ -163,6 +163,23 @@ TEST(Compare, RepeatedTimeUsesTheLastRow) {
   EXPECT_TRUE(compare(result, kHeader + "1,1,0.25,0.25,0.5\n", options).passed());
 }
 
+TEST(Compare, RowsOfStepsAtOneTimeAreMatchedByStep) {
+  // Steps 2 and 3 are perturbation steps (no time): their rows share t = 1 with the end of step 1.
+  // A golden row at t = 1 is matched with the result's row of its own step, and with the last
+  // row at that time when its step has none there.
+  CompareOptions options;
+  options.rtol = 0.0;
+  options.atol = 0.0;
+  const std::string result =
+      kHeader + "1,0,0,0,0\n1,1,1,1,5\n2,1,0,1,0.5\n3,1,0,1,-2\n4,1,1,2,6\n";
+  EXPECT_TRUE(compare(result, kHeader + "1,1,1,1,5\n2,1,0,1,0.5\n3,1,0,1,-2\n", options)
+                  .passed());
+  EXPECT_FALSE(compare(result, kHeader + "2,1,0,1,5\n", options).passed());
+  EXPECT_TRUE(compare(result, kHeader + "4,1,0,1,-2\n", options).passed());
+  // Between times the bracketing rows stay the adjacent pair: step 3's row and step 4's.
+  EXPECT_TRUE(compare(result, kHeader + "4,1,0.5,1.5,2\n", options).passed());
+}
+
 TEST(Compare, TimesEqualUpToRoundOffMatch) {
   // 0.1 + 0.2 != 0.3 in binary; a result that reached 0.3 by a sum of increments still matches a
   // golden row at 0.3 (within 1e-12 of the time scale) and is not outside the time range.
