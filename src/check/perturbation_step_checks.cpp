@@ -27,6 +27,11 @@ void check_perturbation_steps(const Model& model, DiagnosticSink& sink) {
       sink.report(DiagCode::unsupported_option, step.procedure->loc,
                   "*STATIC, RIKS cannot be a perturbation step (expected *STATIC without RIKS)")
           .notes.push_back({step.perturbation_loc, "PERTURBATION given here"});
+    } else if (step.procedure && step.procedure->stabilize) {
+      sink.report(DiagCode::unsupported_option, step.procedure->stabilize->loc,
+                  "STABILIZE cannot be used in a perturbation step: its response is one linear "
+                  "solve about the base state, with no increments for viscous forces to act over")
+          .notes.push_back({step.perturbation_loc, "PERTURBATION given here"});
     }
     if (step.amplitude_given) {
       sink.report(DiagCode::parameter_ignored, step.loc,
