@@ -336,8 +336,10 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
         {"EXPLICIT, SUBSPACE, ADIABATIC, NOHAF, STABILIZE and the other explicit or "
          "stabilization parameters",
          "not implemented"},
-        {"kinematic constraints, *CONNECTOR DAMPING, CV and CA output in the step",
-         "not implemented"}}},
+        {"*CONNECTOR DAMPING, CV and CA output in the step", "not implemented"},
+        {"the mass of a rigid body's solid, shell, membrane, beam, truss or planar elements",
+         "clinch has no formulation to compute it from their density and volume; give it as "
+         "MASS and ROTARYI elements on the body's nodes"}}},
       {"ENERGY OUTPUT",
        "Whole-model energies as history columns: ALLKE, ALLIE, ALLFD, ALLVD, ALLWK, ETOTAL "
        "(docs/dynamics.md).",
@@ -358,7 +360,9 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
        {{"RESIDUAL MODES", "not implemented"},
         {"*BOUNDARY, *CLOAD, *CONNECTOR MOTION and *CONNECTOR LOAD in the step",
          "the step keeps the conditions of its base state"},
-        {"kinematic constraints in the model", "not implemented"}},
+        {"the mass of a rigid body's solid, shell, membrane, beam, truss or planar elements",
+         "clinch has no formulation to compute it from their density and volume; give it as "
+         "MASS and ROTARYI elements on the body's nodes"}},
        {{"ACOUSTIC COUPLING, DAMPING PROJECTION, SIM, BIAS, NUMBER INTERVAL, PROPERTY "
          "EVALUATION, STORAGE, SOLVER",
          "clinch has no acoustics, frequency-dependent properties or solver options to set"},
