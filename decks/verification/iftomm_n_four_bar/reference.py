@@ -37,18 +37,7 @@ def phi_acceleration(phi):
 
 
 def integrate(times, h):
-    phi, rate, t, out = PHI0, RATE0, 0.0, []
-    for target in times:
-        for _ in range(int(round((target - t) / h))):
-            k1 = (rate, phi_acceleration(phi))
-            k2 = (rate + h / 2 * k1[1], phi_acceleration(phi + h / 2 * k1[0]))
-            k3 = (rate + h / 2 * k2[1], phi_acceleration(phi + h / 2 * k2[0]))
-            k4 = (rate + h * k3[1], phi_acceleration(phi + h * k3[0]))
-            phi += h / 6 * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0])
-            rate += h / 6 * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1])
-        t = target
-        out.append((phi, rate))
-    return out
+    return g.integrate_second_order(phi_acceleration, PHI0, RATE0, times, h)
 
 
 def energy(phi, rate):

@@ -32,19 +32,8 @@ def angular_acceleration(theta):
 
 
 def integrate(times, h):
-    """(theta, theta') at each of `times` (multiples of h) from rest at theta = 0."""
-    theta, rate, t, out = 0.0, 0.0, 0.0, []
-    for target in times:
-        for _ in range(int(round((target - t) / h))):
-            k1 = (rate, angular_acceleration(theta))
-            k2 = (rate + h / 2 * k1[1], angular_acceleration(theta + h / 2 * k1[0]))
-            k3 = (rate + h / 2 * k2[1], angular_acceleration(theta + h / 2 * k2[0]))
-            k4 = (rate + h * k3[1], angular_acceleration(theta + h * k3[0]))
-            theta += h / 6 * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0])
-            rate += h / 6 * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1])
-        t = target
-        out.append((theta, rate))
-    return out
+    """(theta, theta') at each of `times` from rest at theta = 0."""
+    return g.integrate_second_order(angular_acceleration, 0.0, 0.0, times, h)
 
 
 def fallen(theta):
