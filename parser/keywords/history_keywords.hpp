@@ -5,6 +5,7 @@
 
 #include <initializer_list>
 #include <memory>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -32,6 +33,10 @@ std::vector<KeywordSpec> output_keyword_specs();
 // Step (its handler never runs), so missing steps are created here as placeholders: the
 // history data inside such a step is still read and checked.
 Step& current_step(BlockContext& ctx);
+
+// STABILIZE and its parameters on a *STATIC line (step_stabilization.cpp): nullopt without
+// STABILIZE; FACTOR, ALLSDTOL or CONTINUE without it, and STABILIZE with RIKS, are errors.
+std::optional<StaticStabilization> read_stabilization(BlockContext& ctx, bool riks);
 
 // E0605 at the keyword when `step` already has a procedure (*STATIC, *DYNAMIC or *FREQUENCY;
 // input-syntax.md §8: exactly one per step), with a note at the first; true if so.

@@ -301,8 +301,12 @@ class EnergyOutputHandler : public KeywordHandler {
 
   void end(BlockContext& ctx) override {
     if (skip_ || field_ || read_any_) return;
-    std::vector<OutputIdentifier>& energies = current_step(ctx).outputs.back().energies;
-    for (std::string_view v : {"ALLKE", "ALLIE", "ALLFD", "ALLVD", "ALLWK", "ETOTAL"}) {
+    Step& step = current_step(ctx);
+    std::vector<OutputIdentifier>& energies = step.outputs.back().energies;
+    // ALLSD joins the default set in a step with STABILIZE (docs/stabilization.md).
+    const bool stabilized = step.procedure && step.procedure->stabilize;
+    for (std::string_view v : {"ALLKE", "ALLIE", "ALLFD", "ALLVD", "ALLSD", "ALLWK", "ETOTAL"}) {
+      if (v == "ALLSD" && !stabilized) continue;
       IdentifierParse parsed = parse_output_identifier(v, OutputContext::EnergyOutput);
       parsed.id.loc = ctx.keyword().loc;
       energies.push_back(std::move(parsed.id));

@@ -277,11 +277,12 @@ class StaticHandler : public KeywordHandler {
   // The procedure's parameters clinch refuses (E0210), reported here so that the list lives as
   // long as the call.
   virtual void report_unsupported(BlockContext& ctx) const {
-    report_unsupported_params(
-        ctx, {"STABILIZE", "ALLSDTOL", "CONTINUE", "FACTOR", "LONG TERM", "ADAPTIVE"});
+    report_unsupported_params(ctx, {"LONG TERM", "ADAPTIVE"});
   }
   // What a procedure adds to the time data, read from the keyword line and kept with the step.
-  virtual void read_operator(BlockContext&) {}
+  virtual void read_operator(BlockContext& ctx) {
+    procedure_.stabilize = read_stabilization(ctx, procedure_.riks.has_value());
+  }
   virtual void keep_operator(Step&) const {}
 
  private:
@@ -697,10 +698,14 @@ std::vector<KeywordSpec> step_keyword_specs() {
   stat.name = "STATIC";
   stat.level = KeywordLevel::History;
   stat.params = {
-      {"DIRECT", ParamKind::OptionalValue}, unsupported_param("STABILIZE"),
-      unsupported_param("ALLSDTOL"),        unsupported_param("CONTINUE"),
-      unsupported_param("FACTOR"),          {"RIKS", ParamKind::Flag},
-      unsupported_param("LONG TERM"),       unsupported_param("ADAPTIVE"),
+      {"DIRECT", ParamKind::OptionalValue},
+      {"STABILIZE", ParamKind::OptionalValue},
+      {"ALLSDTOL", ParamKind::Value},
+      {"CONTINUE", ParamKind::Enum, false, {"YES", "NO"}},
+      {"FACTOR", ParamKind::Value},
+      {"RIKS", ParamKind::Flag},
+      unsupported_param("LONG TERM"),
+      unsupported_param("ADAPTIVE"),
   };
   stat.make_handler = &make<StaticHandler>;
   specs.push_back(std::move(stat));

@@ -62,7 +62,10 @@ class PlanBuilder {
     const bool frequency =
         std::any_of(steps.begin(), steps.end(), [](const Step& s) { return s.frequency; });
     if (plan_.dynamic || frequency) plan_.inertia = nodal_inertia(model_, plan_.dofs);
-    plan_.energies = plan_.dynamic || std::any_of(steps.begin(), steps.end(), [](const Step& s) {
+    plan_.stabilized = std::any_of(steps.begin(), steps.end(), [](const Step& s) {
+      return s.procedure && s.procedure->stabilize && !s.dynamic;
+    });
+    plan_.energies = plan_.dynamic || plan_.stabilized || std::any_of(steps.begin(), steps.end(), [](const Step& s) {
                        return std::any_of(s.outputs.begin(), s.outputs.end(),
                                           [](const OutputRequest& r) { return !r.energies.empty(); });
                      });

@@ -150,8 +150,10 @@ struct AnalysisPlan {
   // otherwise: a static step does not use inertia).
   std::vector<NodeInertia> inertia;
   bool dynamic = false;  // some step is *DYNAMIC (the state keeps velocities, accelerations)
-  // The run keeps the whole-model energies (energy_balance.hpp): a dynamic step, or a step
-  // requests them (*ENERGY OUTPUT).
+  // Some *STATIC step has STABILIZE (stabilization_damping.hpp).
+  bool stabilized = false;
+  // The run keeps the whole-model energies (energy_balance.hpp): a dynamic or stabilized step, or
+  // a step requests them (*ENERGY OUTPUT).
   bool energies = false;
   std::size_t history_size = 0;
   double length_scale = 1.0;  // L̄: largest initial connector length (keywords.md §16)

@@ -16,6 +16,8 @@ void ConnectorStepProblem::begin_step(std::size_t step, bool nlgeom) {
   const Step& s = model_.history.steps[step];
   period_ = s.procedure ? s.procedure->period : 1.0;
   load_factor_ = 1.0;
+  const bool stabilized = s.procedure && s.procedure->stabilize && !s.dynamic && !s.frequency;
+  system_.begin_stabilization(stabilized ? &*s.procedure->stabilize : nullptr, period_);
 }
 
 void ConnectorStepProblem::end_step(double period, double total_time) {

@@ -40,6 +40,8 @@ class ConnectorStepProblem final : public StepProblem {
   }
   std::vector<std::string> step_summary() const override { return system_.step_summary(); }
   std::vector<std::string> take_events() override { return system_.take_events(); }
+  std::vector<std::string> take_warnings() override { return system_.take_warnings(); }
+  void attempt_failed() override { system_.attempt_failed(); }
   StepRequest step_request() const override { return system_.step_request(); }
 
   std::string describe_failure(const NewtonReport& report) const override;

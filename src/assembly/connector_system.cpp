@@ -64,7 +64,9 @@ ConnectorSystem::ConnectorSystem(const Model& model, const AnalysisPlan& plan)
       owned_springs_{0, plan.springs.size()},
       motion_(plan.dependents, plan.dofs),
       constraint_load_(Eigen::VectorXd::Zero(plan.dependents.empty() ? 0 : plan.dofs.equations())),
-      inertia_force_(Eigen::VectorXd::Zero(plan.dynamic ? plan.dofs.equations() : 0)) {
+      inertia_force_(Eigen::VectorXd::Zero(plan.dynamic ? plan.dofs.equations() : 0)),
+      stabilization_(plan.dofs, plan.dependents, plan.length_scale),
+      stabilization_force_(Eigen::VectorXd::Zero(plan.stabilized ? plan.dofs.equations() : 0)) {
   use_storage(true);
   if (plan.energies) {
     std::vector<bool> dashpots;
@@ -137,10 +139,22 @@ void ConnectorSystem::start_dynamic_step(bool initial_acceleration) {
   state_.r_n = hht_residual(condensed, true);
 }
 
+void ConnectorSystem::begin_stabilization(const StaticStabilization* settings, double period) {
+  if (std::string line = stabilization_.begin_step(settings, period); !line.empty()) {
+    events_.push_back(std::move(line));
+  }
+}
+
 void ConnectorSystem::commit() {
   if (energy_) {
+    const ModelEnergies before = energy_->energies();
     energy_->add_increment(state_.x - state_.x_n, energy_forces());
     energy_->set_kinetic(state_.v.size() > 0 ? kinetic_energy(plan_.inertia, state_.v) : 0.0);
+    const ModelEnergies& after = energy_->energies();
+    const double element_work = (after.internal + after.frictional + after.viscous) -
+                                (before.internal + before.frictional + before.viscous);
+    stabilization_.converged(state_.x - state_.x_n, context_.dt, element_work, after, events_,
+                             warnings_);
   }
   state_.commit();
   if (!newmark_) return;
@@ -382,6 +396,11 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
       add_constrained_inertia(constrained_inertia_, *newmark_, state_, conditions_, target,
                               inertia_force_, element_forces_);
     }
+  }
+  if (stabilization_.active()) {
+    stabilization_force_.setZero();
+    stabilization_.add(state_.x, state_.x_n, context_.dt, conditions_,
+                       {full, tangent, pattern_->diagonal, stabilization_force_});
   }
   if (predicting_ && tangent) full += predictor_;
   if (!dependents.empty()) finish_dependent_rows(full, tangent);
@@ -731,10 +750,12 @@ std::vector<std::string> ConnectorSystem::step_summary() const {
     // of the run shows how much the integration created or lost.
     const ModelEnergies e = energies();
     const double scale = std::max(energy_->largest(), initial_kinetic_);
+    const std::string stabilization =
+        plan_.stabilized ? fmt::format(", ALLSD {:.6g}", e.stabilization) : std::string();
     lines.push_back(fmt::format(
-        "energies: ALLKE {:.6g}, ALLIE {:.6g}, ALLFD {:.6g}, ALLVD {:.6g}, ALLWK {:.6g}; "
+        "energies: ALLKE {:.6g}, ALLIE {:.6g}, ALLFD {:.6g}, ALLVD {:.6g}{}, ALLWK {:.6g}; "
         "ETOTAL {:.6g}, changed by {:.3g} of the largest energy since the start",
-        e.kinetic, e.internal, e.frictional, e.viscous, e.work, e.total(),
+        e.kinetic, e.internal, e.frictional, e.viscous, stabilization, e.work, e.total(),
         scale > 0 ? std::abs(e.total() - initial_kinetic_) / scale : 0.0));
   }
   return lines;
@@ -793,8 +814,9 @@ std::string ConnectorSystem::failure_note(int failed_equation) const {
   return fmt::format(
       "connector element {} softening (d={:.3g}) under load control: a limit point, past "
       "which no larger load has an equilibrium, at about {:.4g} of the step's loads; to go past "
-      "it, use *STATIC, RIKS, prescribe a displacement (*BOUNDARY) instead of the load, or "
-      "regularise the damage (*SECTION CONTROLS, VISCOSITY)",
+      "it, use *STATIC, RIKS, prescribe a displacement (*BOUNDARY) instead of the load, "
+      "regularise the damage (*SECTION CONTROLS, VISCOSITY), or damp the step (*STATIC, "
+      "STABILIZE) where a stiffer path picks the load up again",
       elements_.label(softening), largest, load_factor_);
 }
 
@@ -845,7 +867,8 @@ EnergyForces ConnectorSystem::energy_forces() {
   for (int eq : conditions_.prescribed()) {
     if (eq < n) external_force_[eq] = holding_force(eq);
   }
-  return {internal_, external_force_, state_.results, springs_};
+  return {internal_, external_force_, state_.results, springs_,
+          plan_.stabilized ? &stabilization_force_ : nullptr};
 }
 
 double ConnectorSystem::applied_load(std::int32_t node, int dof) const {

@@ -19,6 +19,7 @@
 #include "src/assembly/energy_balance.hpp"
 #include "src/assembly/increment_conditions.hpp"
 #include "src/assembly/spring_element.hpp"
+#include "src/assembly/stabilization_damping.hpp"
 #include "src/parallel/communicator.hpp"
 #include "src/solver/nonlinear_problem.hpp"
 
@@ -69,6 +70,13 @@ class ConnectorSystem final : public NonlinearProblem {
   // At the start of a dynamic step, before its first increment's conditions: r₀ = I₀ − P₀ of
   // the converged state (the HHT α term) and, with `initial_acceleration`, a₀ = M⁻¹(−r₀).
   void start_dynamic_step(bool initial_acceleration);
+
+  // ---- automatic stabilization (stabilization_damping.hpp) ----
+  // Starts a step of `period` with `settings` (null: none); its log line joins the events.
+  void begin_stabilization(const StaticStabilization* settings, double period);
+  // An attempt that did not converge is being retried (the adaptive factor grows).
+  void attempt_failed() { stabilization_.attempt_failed(events_); }
+  std::vector<std::string> take_warnings() { return std::move(warnings_); }
 
   // ---- NonlinearProblem ----
   // The solved equations: every equation but the dependent ones (dependent_dofs.hpp); residuals
@@ -200,6 +208,7 @@ class ConnectorSystem final : public NonlinearProblem {
   ItemRange owned_connectors_, owned_springs_;  // the elements this process evaluates
   std::vector<std::size_t> history_bytes_;      // per rank: the bytes of its connectors' history
   std::vector<std::string> events_;
+  std::vector<std::string> warnings_;  // for the log, once (stabilization energy)
   DependentMotion motion_;
   CondensedLocal condensed_;
   std::vector<CurvatureEntry> curvature_;
@@ -225,6 +234,8 @@ class ConnectorSystem final : public NonlinearProblem {
   std::optional<EnergyBalance> energy_;  // plan().energies
   Eigen::VectorXd external_force_;       // loads, and at prescribed DOFs what holds them
   double initial_kinetic_ = 0.0;         // ETOTAL at the start (*INITIAL CONDITIONS)
+  StabilizationDamping stabilization_;
+  Eigen::VectorXd stabilization_force_;  // F_v per equation at the last evaluation
   EnergyForces energy_forces();
   // What holds prescribed equation `eq` where it is: the elements' and the inertia's force on
   // it, less the loads moved onto it from dependent DOFs (its reaction plus its own load).

@@ -10,6 +10,7 @@ EnergyBalance::EnergyBalance(int node_equations, std::size_t connectors,
     : dashpots_(std::move(dashpots)),
       internal_n_(Eigen::VectorXd::Zero(node_equations)),
       external_n_(internal_n_),
+      stabilization_n_(internal_n_),
       friction_n_(connectors, Vector6::Zero()),
       viscous_n_(friction_n_),
       change_n_(friction_n_),
@@ -31,11 +32,16 @@ void EnergyBalance::add_increment(const Eigen::VectorXd& dx, const EnergyForces&
     viscous += 0.5 * (springs_n_[s].force + now.springs[s].force) *
                (now.springs[s].delta - springs_n_[s].delta);
   }
+  if (now.stabilization) {
+    energies_.stabilization +=
+        0.5 * (stabilization_n_ + now.stabilization->head(n)).dot(dx.head(n));
+  }
   energies_.frictional += frictional;
   energies_.viscous += viscous;
   energies_.internal += element_work - frictional - viscous;
   largest_ = std::max({largest_, std::abs(energies_.internal), std::abs(energies_.frictional),
-                       std::abs(energies_.viscous), std::abs(energies_.work)});
+                       std::abs(energies_.viscous), std::abs(energies_.stabilization),
+                       std::abs(energies_.work)});
   keep(now);
 }
 
@@ -45,6 +51,7 @@ void EnergyBalance::keep(const EnergyForces& now) {
   const auto n = internal_n_.size();
   internal_n_ = now.internal.head(n);
   external_n_ = now.external.head(n);
+  if (now.stabilization) stabilization_n_ = now.stabilization->head(n);
   for (std::size_t c = 0; c < now.connectors.size(); ++c) {
     friction_n_[c] = now.connectors[c].friction;
     viscous_n_[c] = now.connectors[c].viscous;

@@ -1,7 +1,7 @@
 // Whole-model energies (docs/dynamics.md "Energies"): the work of the loads and reactions
 // (ALLWK), the energy the elements took (ALLIE, without friction and viscosity), the energy
-// friction (ALLFD) and viscosity (ALLVD) dissipated, the kinetic energy (ALLKE), and their balance
-// ETOTAL = ALLKE + ALLIE + ALLFD + ALLVD − ALLWK. Each increment adds the trapezoidal work of the
+// friction (ALLFD), viscosity (ALLVD) and automatic stabilization (ALLSD) dissipated, the kinetic
+// energy (ALLKE), and their balance ETOTAL = ALLKE + ALLIE + ALLFD + ALLVD + ALLSD − ALLWK. Each increment adds the trapezoidal work of the
 // forces at its start and end over its motion; with the trapezoidal rule of time integration
 // (HHT with α = 0) a linear model then keeps ETOTAL constant to round-off.
 #pragma once
@@ -19,8 +19,11 @@ struct ModelEnergies {
   double internal = 0;    // ALLIE: elastic, plastic and damage work of connectors and springs
   double frictional = 0;  // ALLFD: connector friction (CSF) over its relative motion
   double viscous = 0;     // ALLVD: connector damping (CVF) and dashpots
+  double stabilization = 0;  // ALLSD: the viscous forces of *STATIC, STABILIZE
   double work = 0;        // ALLWK: loads, and reactions at prescribed DOFs
-  double total() const { return kinetic + internal + frictional + viscous - work; }  // ETOTAL
+  double total() const {  // ETOTAL
+    return kinetic + internal + frictional + viscous + stabilization - work;
+  }
 };
 
 // The forces of one state: over the nodal equations, the elements' forces on the nodes and the
@@ -31,6 +34,7 @@ struct EnergyForces {
   const Eigen::VectorXd& external;
   const std::vector<ConnectorResult>& connectors;
   const std::vector<SpringResult>& springs;
+  const Eigen::VectorXd* stabilization = nullptr;  // over the equations; null: none
 };
 
 class EnergyBalance {
@@ -47,7 +51,7 @@ class EnergyBalance {
   // ALLKE of the converged velocities, which the system computes from its masses.
   void set_kinetic(double kinetic) { energies_.kinetic = kinetic; }
   const ModelEnergies& energies() const { return energies_; }
-  // The largest |ALLIE|, |ALLFD|, |ALLVD| or |ALLWK| the run has had: the scale of ETOTAL.
+  // The largest |ALLIE|, |ALLFD|, |ALLVD|, |ALLSD| or |ALLWK| the run has had: the scale of ETOTAL.
   double largest() const { return largest_; }
 
  private:
@@ -56,7 +60,7 @@ class EnergyBalance {
   std::vector<bool> dashpots_;
   ModelEnergies energies_;
   double largest_ = 0.0;
-  Eigen::VectorXd internal_n_, external_n_;
+  Eigen::VectorXd internal_n_, external_n_, stabilization_n_;
   std::vector<Vector6> friction_n_, viscous_n_, change_n_;
   std::vector<SpringResult> springs_n_;
 };

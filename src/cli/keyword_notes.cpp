@@ -320,11 +320,15 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
       {"STATIC",
        "A static procedure with automatic incrementation (cutbacks) or fixed increments "
        "(DIRECT). With RIKS, the modified Riks method: the load proportionality factor (LPF "
-       "column) scales the step's loads, found with the state on an arc length (docs/riks.md).",
+       "column) scales the step's loads, found with the state on an arc length (docs/riks.md). "
+       "With STABILIZE, automatic stabilization: viscous forces on the free DOFs with a damping "
+       "factor from the dissipated energy fraction or FACTOR, adaptive unless ALLSDTOL=0, and "
+       "the ALLSD energy column (docs/stabilization.md).",
        "`initial increment, step time, minimum increment, maximum increment`; with RIKS "
        "`initial arc length, total arc length, minimum and maximum arc length, maximum LPF, "
        "node, DOF, displacement`.",
-       {{"STABILIZE, ALLSDTOL, CONTINUE, FACTOR, LONG TERM, ADAPTIVE", "not implemented"},
+       {{"LONG TERM, ADAPTIVE", "not implemented"},
+        {"STABILIZE with RIKS", "refused: the arc length passes the limit points itself"},
         {"a non-zero *BOUNDARY or *CONNECTOR MOTION value in a RIKS step",
          "the LPF scales loads (*CLOAD, *CONNECTOR LOAD)"}}},
       {"DYNAMIC",
@@ -341,9 +345,10 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
          "clinch has no formulation to compute it from their density and volume; give it as "
          "MASS and ROTARYI elements on the body's nodes"}}},
       {"ENERGY OUTPUT",
-       "Whole-model energies as history columns: ALLKE, ALLIE, ALLFD, ALLVD, ALLWK, ETOTAL "
-       "(docs/dynamics.md).",
-       "The energies to write; none, or VARIABLE=PRESELECT or ALL: all six.",
+       "Whole-model energies as history columns: ALLKE, ALLIE, ALLFD, ALLVD, ALLSD, ALLWK, "
+       "ETOTAL (docs/dynamics.md; ALLSD: docs/stabilization.md).",
+       "The energies to write; none, or VARIABLE=PRESELECT or ALL: all six, and ALLSD in a "
+       "step with STABILIZE.",
        {{"ELSET (energies of an element set)", "not implemented"},
         {"ALLSE, ALLPD, ALLDMD and the other energies",
          "ALLIE holds the elastic, plastic and damage work together"}}},

@@ -151,6 +151,18 @@ struct RiksSettings {
   std::array<SourceLoc, 8> field_loc{};  // fields 1–8 (invalid when blank)
 };
 
+// *STATIC, STABILIZE (docs/stabilization.md): viscous forces c M* v on the free DOFs, with the
+// damping factor c from the dissipated energy fraction or given (FACTOR), adapted within the
+// step unless ALLSDTOL=0 (docs/decisions.md "Automatic stabilization").
+struct StaticStabilization {
+  SourceLoc loc;                   // the STABILIZE parameter
+  double energy_fraction = 2e-4;   // STABILIZE=value
+  std::optional<double> factor;    // FACTOR: c itself, from the first increment on
+  double allsdtol = 0.05;          // ALLSDTOL: adaptive when > 0; the warning's fraction
+  bool allsdtol_given = false;
+  bool continue_previous = false;  // CONTINUE=YES: c of the previous step's end
+};
+
 // *STATIC with its data line, defaults resolved (§15).
 struct StaticProcedure {
   SourceLoc loc;                         // keyword line
@@ -163,6 +175,7 @@ struct StaticProcedure {
   SourceLoc data_loc;                    // the data line (invalid when absent)
   std::array<SourceLoc, 4> field_loc{};  // fields 1–4 (invalid when blank)
   std::optional<RiksSettings> riks;      // RIKS: the data line is the Riks method's
+  std::optional<StaticStabilization> stabilize;  // STABILIZE
 };
 
 // *DYNAMIC (implicit, docs/dynamics.md): the integration operator with its defaults resolved

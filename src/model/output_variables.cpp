@@ -53,7 +53,7 @@ constexpr std::array<OutputVariableInfo, 2> kDerived{{
     {"CDERU", OutputKind::Connector, OutputProducer::Derived, "derived components"},
 }};
 
-constexpr std::array<OutputVariableInfo, 13> kOther{{
+constexpr std::array<OutputVariableInfo, 14> kOther{{
     {"U", OutputKind::Nodal, OutputProducer::Always, ""},
     {"V", OutputKind::Nodal, OutputProducer::StaticZero, ""},
     {"A", OutputKind::Nodal, OutputProducer::StaticZero, ""},
@@ -66,6 +66,7 @@ constexpr std::array<OutputVariableInfo, 13> kOther{{
     {"ALLIE", OutputKind::Model, OutputProducer::Always, ""},
     {"ALLFD", OutputKind::Model, OutputProducer::Always, ""},
     {"ALLVD", OutputKind::Model, OutputProducer::Always, ""},
+    {"ALLSD", OutputKind::Model, OutputProducer::Always, ""},
     {"ALLWK", OutputKind::Model, OutputProducer::Always, ""},
     {"ETOTAL", OutputKind::Model, OutputProducer::Always, ""},
 }};

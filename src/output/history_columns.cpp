@@ -18,6 +18,7 @@ double model_value(std::string_view variable, const ConnectorSystem& system) {
   if (variable == "ALLIE") return e.internal;
   if (variable == "ALLFD") return e.frictional;
   if (variable == "ALLVD") return e.viscous;
+  if (variable == "ALLSD") return e.stabilization;
   if (variable == "ALLWK") return e.work;
   return e.total();  // ETOTAL
 }

@@ -55,6 +55,7 @@ PANELS = (("force", "forces"), ("moment", "moments"), ("displacement", "displace
 # Whole-model energies (docs/dynamics.md "Energies"), drawn together in one plot.
 ENERGIES = {"ALLKE": "kinetic energy", "ALLIE": "internal energy",
             "ALLFD": "frictional dissipation", "ALLVD": "viscous dissipation",
+            "ALLSD": "stabilization energy",
             "ALLWK": "work of loads and reactions", "ETOTAL": "energy balance"}
 
 
@@ -248,7 +249,7 @@ def energy_history(page, history, columns, names):
     ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.005, 0.5))
     fig.tight_layout()
     page.figure(fig, "energies", "Whole-model energies: " + ", ".join(c.variable for c in columns)
-                + " (ETOTAL = ALLKE + ALLIE + ALLFD + ALLVD - ALLWK)", css="wide")
+                + " (ETOTAL = ALLKE + ALLIE + ALLFD + ALLVD + ALLSD - ALLWK)", css="wide")
 
 
 def choose(group, limit, choice, kind):

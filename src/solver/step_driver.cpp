@@ -284,6 +284,7 @@ class Driver {
         attempted.last_iteration = report.iterations.back();
       } else {
         step_problem_.revert();
+        if (!converged) step_problem_.attempt_failed();
       }
       return true;
     }
@@ -351,6 +352,9 @@ class Driver {
     step_problem_.end_increment();
     for (const std::string& event : step_problem_.take_events()) {
       out_.note(step_number, increment, event);
+    }
+    for (const std::string& warning : step_problem_.take_warnings()) {
+      out_.warning(fmt::format("step {} increment {}: {}", step_number, increment, warning));
     }
     return true;
   }

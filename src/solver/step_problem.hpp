@@ -85,6 +85,10 @@ class StepProblem {
   virtual std::vector<std::string> step_summary() const = 0;
   // What end_increment did that the log reports (one line each), taken once.
   virtual std::vector<std::string> take_events() = 0;
+  // Warnings of the converged state for the log (one line each), taken once.
+  virtual std::vector<std::string> take_warnings() { return {}; }
+  // An attempt did not converge and the increment is tried again (STABILIZE's adaptive factor).
+  virtual void attempt_failed() {}
   // What the laws asked for in the last evaluation: a time-step ratio (below 1: retry smaller;
   // above 1: grow at most so much), whether a result was unreliable, and why.
   virtual StepRequest step_request() const = 0;
