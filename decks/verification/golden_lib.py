@@ -232,6 +232,23 @@ def tabular(t, points):
 # golden.csv in the history-table layout (cli-contract.md).
 
 
+def integrate_second_order(acceleration, x0, v0, times, h):
+    """(x, x') at each of `times` (multiples of h, increasing) of x'' = acceleration(x) from
+    (x0, v0) at t = 0, by the classical fourth-order Runge-Kutta method with step h."""
+    x, v, t, out = x0, v0, 0.0, []
+    for target in times:
+        for _ in range(int(round((target - t) / h))):
+            k1 = (v, acceleration(x))
+            k2 = (v + h / 2 * k1[1], acceleration(x + h / 2 * k1[0]))
+            k3 = (v + h / 2 * k2[1], acceleration(x + h / 2 * k2[0]))
+            k4 = (v + h * k3[1], acceleration(x + h * k3[0]))
+            x += h / 6 * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0])
+            v += h / 6 * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1])
+        t = target
+        out.append((x, v))
+    return out
+
+
 def write_golden(script_file, provenance, names, rows):
     """Write golden.csv next to script_file, or <case>.golden.csv into $GOLDEN_OUT_DIR when it is
     set (tests/regression/check_references.sh). rows: (step, increment, step_time, total_time,

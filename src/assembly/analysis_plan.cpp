@@ -58,7 +58,10 @@ class PlanBuilder {
         std::any_of(steps.begin(), steps.end(), [](const Step& s) { return !s.nlgeom; });
     plan_.dynamic =
         std::any_of(steps.begin(), steps.end(), [](const Step& s) { return s.dynamic; });
-    if (plan_.dynamic) plan_.inertia = nodal_inertia(model_, plan_.dofs);
+    // A *FREQUENCY step's mass must lie in the pattern too (constrained inertia couples).
+    const bool frequency =
+        std::any_of(steps.begin(), steps.end(), [](const Step& s) { return s.frequency; });
+    if (plan_.dynamic || frequency) plan_.inertia = nodal_inertia(model_, plan_.dofs);
     plan_.stabilized = std::any_of(steps.begin(), steps.end(), [](const Step& s) {
       return s.procedure && s.procedure->stabilize && !s.dynamic;
     });

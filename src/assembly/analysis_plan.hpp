@@ -146,8 +146,8 @@ struct AnalysisPlan {
   // The DOFs kinematic constraints eliminate, and the elements that have some.
   DependentDofs dependents;
   std::vector<ElementExpansion> expansions;
-  // The nodes with MASS or ROTARYI elements, when some step is *DYNAMIC (empty otherwise: a
-  // static step does not use inertia).
+  // The nodes with MASS or ROTARYI elements, when some step is *DYNAMIC or *FREQUENCY (empty
+  // otherwise: a static step does not use inertia).
   std::vector<NodeInertia> inertia;
   bool dynamic = false;  // some step is *DYNAMIC (the state keeps velocities, accelerations)
   // Some *STATIC step has STABILIZE (stabilization_damping.hpp).

@@ -1,6 +1,7 @@
 #include "src/assembly/assembly_pattern.hpp"
 
 #include "src/assembly/constrained_elements.hpp"
+#include "src/assembly/constrained_inertia.hpp"
 #include "src/assembly/sparsity_pattern.hpp"
 
 namespace clinch {
@@ -39,9 +40,14 @@ AssemblyPattern build_assembly_pattern(const AnalysisPlan& plan, bool symmetric)
   builder.reserve(local_entries - local_diagonals);
   for (const ConnectorRecord& r : plan.connectors) builder.couple(equations(r));
   for (const SpringRecord& r : plan.springs) builder.couple(equations(r));
-  // A rotary inertia tensor couples the rotations of its node (no dependent DOF carries inertia:
-  // a dynamic step refuses kinematic constraints).
-  for (const NodeInertia& n : plan.inertia) builder.couple(in_solved_numbering(n.rotation));
+  // A rotary inertia tensor couples the rotations of its node; inertia on a dependent DOF couples
+  // the independent equations its block moves with (constrained_inertia.hpp).
+  for (const NodeInertia& n : plan.inertia) {
+    if (!has_dependent_dof(n.rotation, dependents)) builder.couple(in_solved_numbering(n.rotation));
+  }
+  for (const std::vector<int>& columns : constrained_inertia_couplings(plan.inertia, dependents)) {
+    builder.couple(in_solved_numbering(columns));
+  }
   // The curvature of rigid arms and links under NLGEOM couples the equations they read.
   for (const DependentDof& d : dependents.dofs) {
     if (!d.curved()) continue;

@@ -81,6 +81,14 @@ ConnectorSystem::ConnectorSystem(const Model& model, const AnalysisPlan& plan)
       if (eq >= 0 && state_.v.size() > 0) state_.v[eq] = state_.v_n[eq] = velocity.value;
     }
   }
+  if (state_.v_n.size() > 0 && !plan.dependents.empty()) {
+    // A constrained node moves with the DOFs it depends on: its initial velocity is theirs
+    // through the constraint, whatever was given on it (docs/dynamics.md).
+    motion_.update_gradients(state_.x, state_.rotation, false);
+    follow_constraint_rates(plan.dependents, motion_, state_.x, state_.rotation, false, state_.v_n,
+                            nullptr);
+    state_.v = state_.v_n;
+  }
   if (state_.v_n.size() > 0) initial_kinetic_ = kinetic_energy(plan_.inertia, state_.v_n, state_.rotation_n);
   if (energy_) energy_->set_kinetic(initial_kinetic_);
 }
@@ -106,13 +114,30 @@ void ConnectorSystem::start_dynamic_step(bool initial_acceleration) {
   const EvalStatus status = evaluate(residual, nullptr);
   rates_frozen_ = false;
   if (!status.ok) return;
-  const auto n = state_.r_n.size();
-  state_.r_n = internal_.head(n) - conditions_.external().head(n);
-  r_before_ = state_.r_n;
+  const Eigen::VectorXd condensed = static_residual();
   if (energy_) energy_->restart(energy_forces());
+  // Without INITIAL=YES the step starts from the accelerations it has.
   if (initial_acceleration) {
-    initial_accelerations(plan_.inertia, conditions_, state_.r_n, state_.a_n);
+    initial_accelerations(plan_.inertia, conditions_, condensed, state_.a_n);
+    if (!constrained_inertia_.empty()) {
+      // The velocity-product terms first (the independent accelerations zero), then the
+      // condensed solve, then the dependent accelerations that follow from it.
+      for (const MappedInertiaBlock& b : constrained_inertia_) {
+        for (const int column : b.columns) state_.a_n[column] = 0.0;
+      }
+      follow_constraint_rates(plan_.dependents, motion_, state_.x, state_.rotation,
+                              context_.nlgeom, state_.v_n, &state_.a_n);
+      constrained_initial_accelerations(plan_.inertia, constrained_inertia_, conditions_,
+                                        condensed, state_.a_n);
+      follow_constraint_rates(plan_.dependents, motion_, state_.x, state_.rotation,
+                              context_.nlgeom, state_.v_n, &state_.a_n);
+      state_.v = state_.v_n;
+    }
     state_.a = state_.a_n;
+  }
+  state_.r_n = hht_residual(condensed, true);
+  r_before_ = state_.r_n;
+  if (initial_acceleration) {
     // Once more at the initial accelerations, so that CA and the results hold them.
     rates_frozen_ = true;
     evaluate(residual, nullptr);
@@ -172,7 +197,8 @@ void ConnectorSystem::commit() {
   if (energy_) {
     const ModelEnergies before = energy_->energies();
     energy_->add_increment(state_.x - state_.x_n, energy_forces());
-    energy_->set_kinetic(state_.v.size() > 0 ? kinetic_energy(plan_.inertia, state_.v, state_.rotation) : 0.0);
+    energy_->set_kinetic(
+        state_.v.size() > 0 ? kinetic_energy(plan_.inertia, state_.v, state_.rotation) : 0.0);
     const ModelEnergies& after = energy_->energies();
     const double element_work = (after.internal + after.frictional + after.viscous) -
                                 (before.internal + before.frictional + before.viscous);
@@ -183,9 +209,54 @@ void ConnectorSystem::commit() {
   keep_converged_components();
   if (!newmark_) return;
   // The converged I − P of this increment is the next increment's HHT α term.
-  const auto n = state_.r_n.size();
   r_before_ = state_.r_n;
-  state_.r_n = internal_.head(n) - conditions_.external().head(n);
+  state_.r_n = hht_residual(static_residual(), false);
+}
+
+Eigen::VectorXd ConnectorSystem::hht_residual(Eigen::VectorXd r, bool start) const {
+  if (plan_.dependents.empty()) return r;
+  // HHT α on the DOFs' own rows, as with the constraint's reaction as a multiplier (the index-3
+  // form of Negrut, Rampalli, Ottarsson and Sajdak 2007, second order in Δt): the force at a
+  // dependent DOF, the reaction included, is R = −M a at the start and R₁ = (α R₀ − M a₁)/(1 + α)
+  // after an increment (its row of M a + (1 + α) R₁ − α R₀ = 0); the independent rows keep the
+  // condensed residual less TᵀR (docs/dynamics.md "Inertia on constrained nodes").
+  Eigen::VectorXd inertia;
+  if (start) {
+    inertia.setZero(r.size());
+    dependent_inertia_forces(constrained_inertia_, plan_.dependents, state_.a_n, inertia);
+  }
+  const double alpha = newmark_ ? newmark_->alpha : 0.0;
+  for (const DependentDof& d : plan_.dependents.dofs) {
+    const double held = start ? -inertia[d.equation]
+                              : (alpha * state_.r_n[d.equation] - inertia_force_[d.equation]) /
+                                    (1.0 + alpha);
+    r[d.equation] = held;
+    const std::span<const double> gradient = motion_.gradient(d);
+    for (std::uint32_t e = 0; e < d.resolved_count; ++e) {
+      r[plan_.dependents.resolved_equation[d.first_resolved + e]] -= gradient[e] * held;
+    }
+  }
+  return r;
+}
+
+Eigen::VectorXd ConnectorSystem::static_residual() const {
+  const auto n = state_.r_n.size();
+  Eigen::VectorXd r = internal_.head(n) - conditions_.external().head(n);
+  if (constraint_load_.size() > 0) r -= constraint_load_.head(n);
+  return r;
+}
+
+DependentMotion ConnectorSystem::dependent_motion() const {
+  DependentMotion motion(plan_.dependents, plan_.dofs);
+  if (!plan_.dependents.empty()) {
+    motion.update_gradients(state_.x, state_.rotation, context_.nlgeom);
+  }
+  return motion;
+}
+
+double ConnectorSystem::dependent_inertia(int eq) const {
+  if (!newmark_ || inertia_force_.size() == 0) return 0.0;
+  return inertia_force_[eq] / (1.0 + newmark_->alpha);
 }
 
 void ConnectorSystem::use_storage(bool symmetric) {
@@ -372,10 +443,15 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
   Eigen::VectorXd& full = dependents.empty() ? residual : full_residual_;
   full = internal_ - conditions_.external();
   if (newmark_) {
-    add_inertia(plan_.inertia, *newmark_, state_, conditions_,
-                {full, tangent, pattern_->diagonal, pattern_->symmetric,
-                 predicting_ ? &predictor_ : nullptr},
-                inertia_force_, element_forces_);
+    const InertiaTarget target{full, tangent, pattern_->diagonal, pattern_->symmetric,
+                               predicting_ ? &predictor_ : nullptr, dependents};
+    add_inertia(plan_.inertia, *newmark_, state_, conditions_, target, inertia_force_,
+                element_forces_);
+    if (!dependents.empty()) {
+      constrained_inertia_ = mapped_inertia_blocks(plan_.inertia, dependents, motion_);
+      add_constrained_inertia(constrained_inertia_, *newmark_, state_, conditions_, target,
+                              inertia_force_, element_forces_);
+    }
   }
   if (stabilization_.active()) {
     stabilization_force_.setZero();
@@ -507,17 +583,20 @@ void ConnectorSystem::finish_dependent_rows(Eigen::VectorXd& residual, SparseMat
   curvature_.clear();
   for (const DependentDof& d : dependents.dofs) {
     const double load = external[d.equation];
-    if (load != 0.0) {
+    // HHT α: the converged force on the DOF, pulled back with the current gradients.
+    const double held =
+        newmark_ ? -newmark_->alpha / (1.0 + newmark_->alpha) * state_.r_n[d.equation] : 0.0;
+    if (load != 0.0 || held != 0.0) {
       const std::span<const double> gradient = motion_.gradient(d);
       for (std::uint32_t e = 0; e < d.resolved_count; ++e) {
         const int eq = dependents.resolved_equation[d.first_resolved + e];
-        residual[eq] -= gradient[e] * load;
+        residual[eq] += gradient[e] * (held - load);
         constraint_load_[eq] += gradient[e] * load;
       }
     }
     if (tangent && context_.nlgeom) {
-      motion_.add_curvature(d, internal_[d.equation] - load, state_.x, state_.rotation,
-                            curvature_);
+      motion_.add_curvature(d, internal_[d.equation] + dependent_inertia(d.equation) + held - load,
+                            state_.x, state_.rotation, curvature_);
     }
     residual[d.equation] = 0.0;
   }

@@ -13,6 +13,7 @@
 #include "src/assembly/assembly_pattern.hpp"
 #include "src/assembly/connector_element.hpp"
 #include "src/assembly/constrained_elements.hpp"
+#include "src/assembly/constrained_inertia.hpp"
 #include "src/assembly/dependent_motion.hpp"
 #include "src/assembly/dynamic_terms.hpp"
 #include "src/assembly/energy_balance.hpp"
@@ -173,6 +174,8 @@ class ConnectorSystem final : public NonlinearProblem {
   ConnectorOutput connector_output(std::size_t connector) const;
   const SpringResult& spring_output(std::size_t spring) const { return springs_[spring]; }
   const AnalysisPlan& plan() const { return plan_; }
+  // The motion of the dependent DOFs with its gradients at the current state.
+  DependentMotion dependent_motion() const;
 
  private:
   template <typename Residual, typename Tangent>
@@ -236,7 +239,19 @@ class ConnectorSystem final : public NonlinearProblem {
   std::string dependent_failure_;  // why the dependent DOFs could not follow the last correction
   std::optional<NewmarkIncrement> newmark_;  // set during a dynamic step
   bool rates_frozen_ = false;  // evaluate at the converged velocities (start_dynamic_step)
-  Eigen::VectorXd inertia_force_;  // M a per equation at the last evaluation (reactions)
+  // M a per equation at the last evaluation, with what inertia on dependent DOFs puts on the
+  // independent ones (reactions).
+  Eigen::VectorXd inertia_force_;
+  // The inertia blocks with dependent DOFs at the current gradients (constrained_inertia.hpp).
+  std::vector<MappedInertiaBlock> constrained_inertia_;
+  // I − P at the current state over the independent equations, loads on dependent DOFs moved
+  // onto them (the right-hand side of INITIAL=YES).
+  Eigen::VectorXd static_residual() const;
+  // The HHT α term of the converged state (AnalysisState::r_n) from static_residual(), at the
+  // start of a step or after an increment: with dependent DOFs, the force on each at its own row.
+  Eigen::VectorXd hht_residual(Eigen::VectorXd condensed, bool start) const;
+  // The inertia force (M a)/(1 + α) on dependent equation `eq` (the curvature of its map).
+  double dependent_inertia(int eq) const;
   // r₋₁ = I − P at the start of the step's last converged increment (r₀ in its first): the
   // lagged term of the half-increment residual.
   Eigen::VectorXd r_before_;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "src/assembly/constrained_inertia.hpp"
 #include "src/assembly/rotary_inertia_finite.hpp"
 #include "src/assembly/sparsity_pattern.hpp"
 
@@ -94,6 +95,7 @@ void add_inertia(const std::vector<NodeInertia>& inertia, const NewmarkIncrement
     const int fields = has_finite_rotary_inertia(node, nlgeom) ? 1 : 2;
     for (int field = 0; field < fields; ++field) {  // forces, then moments
       const InertiaBlock& block = blocks[static_cast<std::size_t>(field)];
+      if (has_dependent_dof(block.eq, target.dependents)) continue;
       for (int i = 0; i < 3; ++i) {
         const int row = block.eq[static_cast<std::size_t>(i)];
         if (row < 0) continue;
@@ -119,10 +121,13 @@ void add_inertia(const std::vector<NodeInertia>& inertia, const NewmarkIncrement
             }
             continue;
           }
-          if (target.symmetric && column < row) continue;  // the upper triangle holds both
+          const int solved_row = target.dependents.solved(row);
+          const int solved_column = target.dependents.solved(column);
+          // The upper triangle holds both.
+          if (target.symmetric && solved_column < solved_row) continue;
           const int position = row == column
-                                   ? target.diagonal[static_cast<std::size_t>(row)]
-                                   : entry_position(*target.tangent, row, column);
+                                   ? target.diagonal[static_cast<std::size_t>(solved_row)]
+                                   : entry_position(*target.tangent, solved_row, solved_column);
           target.tangent->values[static_cast<std::size_t>(position)] += k;
         }
       }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "src/assembly/analysis_state.hpp"
+#include "src/assembly/dependent_dofs.hpp"
 #include "src/assembly/increment_conditions.hpp"
 #include "src/assembly/nodal_inertia.hpp"
 #include "src/model/history_model.hpp"
@@ -42,12 +43,14 @@ struct NewmarkIncrement {
 struct InertiaTarget {
   Eigen::VectorXd& residual;
   SparseMatrix* tangent;
-  const std::vector<int>& diagonal;  // position of each equation's diagonal entry
+  const std::vector<int>& diagonal;  // position of each solved equation's diagonal entry
   bool symmetric;
   Eigen::VectorXd* predictor;  // non-null while prescribed values are short of their targets
+  const DependentDofs& dependents;  // the tangent is over the solved equations
 };
 
-// Adds (M a₁ − α r₀)/(1 + α) to the rows of free nodal equations and ∂/∂u₁ of it to the tangent;
+// Adds (M a₁ − α r₀)/(1 + α) to the rows of free nodal equations and ∂/∂u₁ of it to the tangent
+// (a block with a dependent DOF is left to add_constrained_inertia, constrained_inertia.hpp);
 // `inertia_force` gets M a₁ per equation (a reaction includes it) and `entries` its magnitudes
 // (the force flux q̃ of the convergence criteria).
 void add_inertia(const std::vector<NodeInertia>& inertia, const NewmarkIncrement& increment,

@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "src/assembly/constrained_inertia.hpp"
 #include "src/assembly/nodal_inertia.hpp"
 #include "src/model/output_variables.hpp"
 
@@ -51,6 +52,42 @@ void add_block(const std::array<int, 3>& eq, const Matrix3& m, const ConnectorSy
   }
 }
 
+// A block with a dependent DOF, condensed onto the free independent equations it moves with
+// (constrained_inertia.hpp): the entries of TᵀMT and the columns Tᵀ(√d q).
+void add_mapped_block(const MappedInertiaBlock& b, const ConnectorSystem& system,
+                      LumpedMass& mass) {
+  const DependentDofs& dependents = system.plan().dependents;
+  std::vector<int> solved;
+  std::vector<Eigen::Index> kept;
+  for (std::size_t p = 0; p < b.columns.size(); ++p) {
+    if (system.is_prescribed(b.columns[p])) continue;
+    solved.push_back(dependents.solved(b.columns[p]));
+    kept.push_back(static_cast<Eigen::Index>(p));
+  }
+  if (kept.empty()) return;
+  Eigen::MatrixXd t(3, static_cast<Eigen::Index>(kept.size()));
+  for (std::size_t p = 0; p < kept.size(); ++p) t.col(static_cast<Eigen::Index>(p)) = b.t.col(kept[p]);
+  const Eigen::MatrixXd condensed = t.transpose() * b.m * t;
+  for (std::size_t p = 0; p < solved.size(); ++p) {
+    for (std::size_t q = 0; q < solved.size(); ++q) {
+      const double value = condensed(static_cast<Eigen::Index>(p), static_cast<Eigen::Index>(q));
+      if (solved[p] <= solved[q] && value != 0.0) mass.entries.push_back({solved[p], solved[q], value});
+    }
+  }
+  const Eigen::SelfAdjointEigenSolver<Matrix3> principal(b.m);
+  const double largest = principal.eigenvalues().maxCoeff();
+  for (int k = 0; k < 3; ++k) {
+    const double d = principal.eigenvalues()[k];
+    if (d <= 1e-12 * largest) continue;
+    const Eigen::VectorXd f = t.transpose() * (std::sqrt(d) * principal.eigenvectors().col(k));
+    std::vector<std::pair<int, double>> column;
+    for (std::size_t p = 0; p < solved.size(); ++p) {
+      if (f[static_cast<Eigen::Index>(p)] != 0.0) column.emplace_back(solved[p], f[static_cast<Eigen::Index>(p)]);
+    }
+    if (!column.empty()) mass.factor.push_back(std::move(column));
+  }
+}
+
 }  // namespace
 
 FrequencyModel frequency_model(const Model& model, const ConnectorSystem& system) {
@@ -66,9 +103,18 @@ FrequencyModel frequency_model(const Model& model, const ConnectorSystem& system
         output_column_label("U", plan.dofs.dof_of(eq)) + "@" +
         qualified_label(model, node.instance, node.label);
   }
-  for (const NodeInertia& node : nodal_inertia(model, plan.dofs)) {
-    add_block(node.translation, Matrix3(node.mass.asDiagonal()), system, out.mass);
-    add_block(node.rotation, node.rotary, system, out.mass);
+  const std::vector<NodeInertia> inertia = nodal_inertia(model, plan.dofs);
+  for (const NodeInertia& node : inertia) {
+    if (!has_dependent_dof(node.translation, plan.dependents)) {
+      add_block(node.translation, Matrix3(node.mass.asDiagonal()), system, out.mass);
+    }
+    if (!has_dependent_dof(node.rotation, plan.dependents)) {
+      add_block(node.rotation, node.rotary, system, out.mass);
+    }
+  }
+  const DependentMotion motion = system.dependent_motion();
+  for (const MappedInertiaBlock& b : mapped_inertia_blocks(inertia, plan.dependents, motion)) {
+    add_mapped_block(b, system, out.mass);
   }
   return out;
 }

@@ -28,9 +28,6 @@ void check_constraints(const Model& model, DiagnosticSink& sink);
 void check_dynamic_steps(const Model& model, DiagnosticSink& sink);
 // A step reads the inertia: *DYNAMIC or *FREQUENCY.
 bool has_dynamic_step(const Model& model);
-// The first *RIGID BODY, *COUPLING, *MPC or *EQUATION of the deck (null: none), for messages.
-struct ConstraintSource;
-const ConstraintSource* first_kinematic_constraint(const Model& model);
 
 // What a *FREQUENCY step cannot run yet (frequency_step_checks.cpp).
 void check_frequency_steps(const Model& model, DiagnosticSink& sink);

@@ -1,15 +1,19 @@
 // What a *DYNAMIC step cannot run yet (docs/dynamics.md "Not yet supported"), refused at the
 // *DYNAMIC line or at the keyword that asks for it, so that `clinch check` never passes a deck
-// that `clinch run` would integrate wrongly: kinematic constraints (rigid-body inertia), and the
-// options of *MASS and *ROTARY INERTIA that clinch does not read (mass-proportional damping
-// ALPHA, ORIENTATION, COMPOSITE).
+// that `clinch run` would integrate wrongly: the mass of a rigid body's elements from their
+// density and volume (clinch has no continuum or structural element to compute it; with
+// *FREQUENCY too), and the options of *MASS and *ROTARY INERTIA that clinch does not read
+// (mass-proportional damping ALPHA, ORIENTATION, COMPOSITE).
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <map>
+#include <set>
 
 #include "base/diagnostic.hpp"
 #include "src/check/check.hpp"
 #include "src/model/active_dofs.hpp"
+#include "src/model/element_library.hpp"
 #include "src/model/inertia_elements.hpp"
 #include "src/model/model.hpp"
 
@@ -22,30 +26,48 @@ void refuse(DiagnosticSink& sink, SourceLoc loc, std::string message) {
 
 }  // namespace
 
-const ConstraintSource* first_kinematic_constraint(const Model& model) {
-  const ConstraintModel& c = model.constraints;
-  if (c.rigid_bodies.empty() && c.couplings.empty() && c.mpcs.empty() &&
-      c.equation_definitions.empty()) {
-    return nullptr;
+namespace {
+
+// Abaqus computes a rigid body's mass from the density and volume of the solid, shell, membrane,
+// beam, truss and planar elements it carries (Abaqus Analysis User's Guide, "Rigid body
+// definition": "the mass and inertia of a rigid body can be calculated based on contributions
+// from its elements"). clinch has no formulation of those elements to compute it: a body that
+// carries them is refused once per *ELEMENT block, since its inertia would be silently short.
+// Rigid elements (R3D4, ...) carry no mass in Abaqus/Standard; MASS and ROTARYI are read.
+void check_rigid_body_element_mass(const Model& model, DiagnosticSink& sink) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, const ElementBlock*> block_at;
+  for (const Part& part : model.parts) {
+    for (const ElementBlock& block : part.element_blocks) {
+      block_at[{block.keyword_loc.file, block.keyword_loc.line}] = &block;
+    }
   }
-  static const ConstraintSource kUnnamed{"*RIGID BODY, *COUPLING, *MPC or *EQUATION", {}};
-  return c.sources.empty() ? &kUnnamed : &c.sources.front();
+  std::set<const ElementBlock*> reported;
+  for (const RigidBodyDefinition& body : model.constraints.rigid_bodies) {
+    for (const std::int32_t e : body.elements) {
+      const Element& element = model.elements[static_cast<std::size_t>(e)];
+      const auto found = block_at.find({element.file, element.keyword_line});
+      if (found == block_at.end()) continue;
+      const ElementBlock& block = *found->second;
+      const auto family = static_cast<ElementFamily>(block.family);
+      if (is_inertia_only(family) || family == ElementFamily::Rigid ||
+          family == ElementFamily::Analysed || !reported.insert(&block).second) {
+        continue;
+      }
+      Diagnostic& d = sink.report(
+          DiagCode::unsupported_option, block.type_loc,
+          fmt::format("the mass of the {} elements of type {} in a rigid body (from their density "
+                      "and volume) is not supported by clinch in a *DYNAMIC or *FREQUENCY step: "
+                      "it has no {} formulation to compute it; give the body's mass as MASS and "
+                      "ROTARYI elements on its nodes, and remove these elements",
+                      element_family_name(family), block.type, element_family_name(family)));
+      if (body.keyword_loc.valid()) d.notes.push_back({body.keyword_loc, "*RIGID BODY is here"});
+    }
+  }
 }
 
-namespace {
 
 void check_step(const Model& model, const Step& step, DiagnosticSink& sink) {
   const SourceLoc at = step.dynamic->loc;
-  if (const ConstraintSource* constraint = first_kinematic_constraint(model)) {
-    Diagnostic& d = sink.report(
-        DiagCode::unsupported_option, at,
-        "*DYNAMIC with kinematic constraints (*RIGID BODY, *COUPLING, *MPC, *EQUATION) is not "
-        "supported by clinch yet: the inertia of rigid bodies and of constrained nodes is not "
-        "implemented");
-    if (constraint->loc.valid()) {
-      d.notes.push_back({constraint->loc, fmt::format("{} is here", constraint->keyword)});
-    }
-  }
 }
 
 // *MASS and *ROTARY INERTIA options that would change the inertia clinch assembles.
@@ -118,6 +140,7 @@ void check_dynamic_steps(const Model& model, DiagnosticSink& sink) {
   }
   check_inertia_sections(model, sink);
   check_inertia_dofs(model, sink);
+  check_rigid_body_element_mass(model, sink);
 }
 
 }  // namespace clinch

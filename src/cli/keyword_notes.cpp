@@ -342,8 +342,9 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
        {{"EXPLICIT, SUBSPACE, ADIABATIC, NOHAF, STABILIZE and the other explicit or "
          "stabilization parameters",
          "not implemented"},
-        {"kinematic constraints in the model",
-         "not implemented"}}},
+        {"the mass of a rigid body's solid, shell, membrane, beam, truss or planar elements",
+         "clinch has no formulation to compute it from their density and volume; give it as "
+         "MASS and ROTARYI elements on the body's nodes"}}},
       {"ENERGY OUTPUT",
        "Whole-model energies as history columns: ALLKE, ALLIE, ALLFD, ALLVD, ALLSD, ALLWK, "
        "ETOTAL (docs/dynamics.md; ALLSD: docs/stabilization.md).",
@@ -365,7 +366,9 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
        {{"RESIDUAL MODES", "not implemented"},
         {"*BOUNDARY, *CLOAD, *CONNECTOR MOTION and *CONNECTOR LOAD in the step",
          "the step keeps the conditions of its base state"},
-        {"kinematic constraints in the model", "not implemented"}},
+        {"the mass of a rigid body's solid, shell, membrane, beam, truss or planar elements",
+         "clinch has no formulation to compute it from their density and volume; give it as "
+         "MASS and ROTARYI elements on the body's nodes"}},
        {{"ACOUSTIC COUPLING, DAMPING PROJECTION, SIM, BIAS, NUMBER INTERVAL, PROPERTY "
          "EVALUATION, STORAGE, SOLVER",
          "clinch has no acoustics, frequency-dependent properties or solver options to set"},

@@ -4,6 +4,7 @@
 #include <array>
 
 #include "src/model/connection_types.hpp"
+#include "src/model/inertia_elements.hpp"
 #include "src/model/model.hpp"
 
 namespace clinch {
@@ -102,8 +103,9 @@ DofMask element_dofs(const Model& model, const ConnectorDofs& connector_dofs,
 }
 
 // DOFs that *CLOAD and *BOUNDARY lines name at each node (a load or a condition on a rigid
-// body's node acts on the body), and every DOF of the nodes that nodal output names (a rigid
-// body's node reports how it moves).
+// body's node acts on the body), every DOF of the nodes that nodal output names (a rigid
+// body's node reports how it moves), and the translations of a MASS's node and the rotations of a
+// ROTARYI's (inertia on a rigid body's node is the body's inertia).
 std::vector<DofMask> named_dofs(const Model& model) {
   std::vector<DofMask> named(model.nodes.size(), 0);
   auto name = [&named](const std::vector<std::int32_t>& nodes, DofMask mask) {
@@ -113,6 +115,18 @@ std::vector<DofMask> named_dofs(const Model& model) {
       }
     }
   };
+  const bool two_d = model.dimension == 2;
+  const std::vector<std::int32_t> inertia_node = inertia_element_nodes(model);
+  for (const ElementSection& section : model.structure.sections) {
+    const bool mass = section.kind == ElementSection::Kind::Mass;
+    if (!mass && section.kind != ElementSection::Kind::RotaryInertia) continue;
+    const DofMask mask = mass ? (two_d ? kTranslations2D : kTranslations3D)
+                              : (two_d ? kAll2D & ~kTranslations2D : kAll3D & ~kTranslations3D);
+    for (const std::int32_t e : section.elements) {
+      const std::int32_t node = inertia_node[static_cast<std::size_t>(e)];
+      if (node >= 0) named[static_cast<std::size_t>(node)] |= mask;
+    }
+  }
   for (const BoundaryCondition& bc : model.history.model_boundaries) name(bc.resolved, bc.dofs);
   for (const Step& step : model.history.steps) {
     for (const BoundaryCondition& bc : step.boundaries) name(bc.resolved, bc.dofs);

@@ -30,7 +30,8 @@ struct MassEntry {
 };
 struct LumpedMass {
   std::vector<MassEntry> entries;
-  // F column by column: the equations and values of each (at most 3 entries: one node's block).
+  // F column by column: the equations and values of each (one node's block, or the equations a
+  // constrained node's block moves with).
   std::vector<std::vector<std::pair<int, double>>> factor;
 };
 

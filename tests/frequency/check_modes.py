@@ -17,6 +17,11 @@ eigenvalues, frequencies, generalized masses and mode shapes with a reference co
   of its table where the preload of 600 lands (3e4).
 - mechanism: K has only the stiffness of component 1 (k/m = 100); the two free components give
   two zero eigenvalues.
+- rigid: a rigid body whose mass sits on its tie nodes, with a spring on a tie node and a further
+  mass tied to it by an *EQUATION. In the reference node's six DOFs q a tie node at arm a moves
+  by u = T q, T = [I, -skew(a)] (small displacements), so M = sum m T^T T and K = K_bushing +
+  k t^T t over the rows t of T that the springs and the tied mass act on; assembled here from the
+  deck's values and solved densely, without clinch's condensation.
 
 With --mpi the run is `mpirun -n 2 clinch run --solver petsc` (docs/parallel.md): each rank runs
 the same eigensolve with PETSc's distributed solves of K - sigma M (CG to a relative residual of
@@ -32,7 +37,8 @@ import subprocess
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-DECKS = {"chain": "spring_mass_chain", "bushing": "bushing_mount", "mechanism": "mechanism"}
+DECKS = {"chain": "spring_mass_chain", "bushing": "bushing_mount", "mechanism": "mechanism",
+         "rigid": "rigid_body_mount"}
 
 # Spectra's Lanczos iteration stops at a relative residual of 1e-12: eigenvalues (Rayleigh
 # quotients, error of the order of the residual squared) agree to far better than 1e-9, and mode
@@ -232,6 +238,46 @@ def mechanism_reference(rows):
     return {1: [(0.0, None), (0.0, None), (lam, {"U1@2": 1.0, "U2@2": 0.0, "U3@2": 0.0})]}, {1: None}
 
 
+def rigid_rows(arm):
+    """The rows of T = [I, -skew(arm)]: u_i = u_i + (theta x arm)_i over (u1..u3, theta1..3)."""
+    ax, ay, az = arm
+    return [[1.0, 0.0, 0.0, 0.0, az, -ay],
+            [0.0, 1.0, 0.0, -az, 0.0, ax],
+            [0.0, 0.0, 1.0, ay, -ax, 0.0]]
+
+
+def rigid_matrices():
+    masses = {(1.0, 0.0, 0.0): 2.0, (0.0, 1.0, 0.5): 3.0, (-0.5, -0.5, 0.2): 1.5}
+    m = [[0.0] * 6 for _ in range(6)]
+    k = [[0.0] * 6 for _ in range(6)]
+    for i, value in enumerate([1.0e4, 2.0e4, 3.0e4, 500.0, 800.0, 1200.0]):
+        k[i][i] = value  # the BUSHING in the global axes
+
+    def add(matrix, row, value):
+        for i in range(6):
+            for j in range(6):
+                matrix[i][j] += value * row[i] * row[j]
+    for arm, mass in masses.items():
+        for row in rigid_rows(arm):
+            add(m, row, mass)
+    add(k, rigid_rows((1.0, 0.0, 0.0))[1], 4000.0)  # SPRING1 on U2 of node 3
+    tied = rigid_rows((0.0, 1.0, 0.5))[0]  # node 6 follows U1 of node 4
+    add(m, tied, 1.0)
+    add(k, tied, 2500.0)
+    return k, m
+
+
+def rigid_reference(rows):
+    names = ["U1@2", "U2@2", "U3@2", "UR1@2", "UR2@2", "UR3@2"]
+    k, m = rigid_matrices()
+    modes = []
+    for lam, phi in generalized_eigen(k, m):
+        shape = dict(zip(names, displacement_normalized(phi)))
+        shape.update({n.replace("@2", "@1"): 0.0 for n in names})
+        modes.append((lam, shape))
+    return {1: modes}, {1: None}
+
+
 # ---- the comparison -----------------------------------------------------------------------------
 
 def generalized_mass(row, case):
@@ -240,6 +286,10 @@ def generalized_mass(row, case):
         return sum(2.0 * float(row[f"U1@{2 * i + 1}"]) ** 2 for i in range(1, 31))
     if case == "bushing":
         _, m = bushing_matrices(1.0)
+        phi = [float(row[n]) for n in ["U1@2", "U2@2", "U3@2", "UR1@2", "UR2@2", "UR3@2"]]
+        return sum(phi[i] * m[i][j] * phi[j] for i in range(6) for j in range(6))
+    if case == "rigid":
+        _, m = rigid_matrices()
         phi = [float(row[n]) for n in ["U1@2", "U2@2", "U3@2", "UR1@2", "UR2@2", "UR3@2"]]
         return sum(phi[i] * m[i][j] * phi[j] for i in range(6) for j in range(6))
     return 4.0 * sum(float(row[f"U{d}@2"]) ** 2 for d in (1, 2, 3))
@@ -270,7 +320,7 @@ def main():
     with open(os.path.join(out, deck + ".modes.csv"), newline="") as f:
         rows = list(csv.DictReader(f))
     reference, _ = {"chain": chain_reference, "bushing": bushing_reference,
-                    "mechanism": mechanism_reference}[case](rows)
+                    "mechanism": mechanism_reference, "rigid": rigid_reference}[case](rows)
     compared = 0
     for step, modes in reference.items():
         got = [r for r in rows if int(r["step"]) == step]

@@ -90,8 +90,9 @@ for i, t in enumerate(times):
     work = -MASS * GRAV * u2
     rows.append((1, i, t, t, [u1, u2, v1, v2, kinetic, work]))
 
-g.write_golden(__file__, [
-    "dynamic_pendulum: simple pendulum L = 1, g = 9.81, m = 1, released at rest from 90",
-    f"degrees; exact motion from Jacobi's elliptic functions, period 4 K(k)/w0 = {PERIOD:.15g}",
-    "(Abramowitz and Stegun 16.4, 17.6); rows at the eighths of the period and the step's end",
-], names, rows)
+if __name__ == "__main__":  # iftomm_simple_pendulum reuses state()
+    g.write_golden(__file__, [
+        "dynamic_pendulum: simple pendulum L = 1, g = 9.81, m = 1, released at rest from 90",
+        f"degrees; exact motion from Jacobi's elliptic functions, period 4 K(k)/w0 = {PERIOD:.15g}",
+        "(Abramowitz and Stegun 16.4, 17.6); rows at the eighths of the period and the step's end",
+    ], names, rows)
