@@ -65,9 +65,39 @@ void check_rigid_body_element_mass(const Model& model, DiagnosticSink& sink) {
   }
 }
 
+// Whether a kinematic constraint eliminates a rotation of `node` (a rigid body's tie node, a
+// kinematic coupling node, MPC BEAM, an *EQUATION whose first term is a rotation).
+bool rotation_is_dependent(const Model& model, std::int32_t node) {
+  const ConstraintModel& c = model.constraints;
+  for (const NodeFollower& f : c.followers) {
+    if (f.node == node && (f.dofs & 0b111000) != 0) return true;
+  }
+  for (const LinearConstraint& e : c.equations) {
+    if (!e.terms.empty() && e.terms.front().node == node && e.terms.front().dof >= 4) return true;
+  }
+  return false;
+}
 
+// Under NLGEOM a ROTARYI turns by finite rotations with the node's own update
+// (rotary_inertia_finite.hpp); a node whose rotation a constraint gives has no such update.
 void check_step(const Model& model, const Step& step, DiagnosticSink& sink) {
-  const SourceLoc at = step.dynamic->loc;
+  if (!step.nlgeom) return;
+  const std::vector<std::int32_t> node_of = inertia_element_nodes(model);
+  for (const ElementSection& section : model.structure.sections) {
+    if (section.kind != ElementSection::Kind::RotaryInertia) continue;
+    for (const std::int32_t e : section.elements) {
+      const std::int32_t node = node_of[static_cast<std::size_t>(e)];
+      if (node < 0 || !rotation_is_dependent(model, node)) continue;
+      Diagnostic& d = sink.report(
+          DiagCode::unsupported_option, section.keyword_loc,
+          "*ROTARY INERTIA on a node whose rotation a kinematic constraint gives (a rigid body's "
+          "tie node, a coupling node, MPC BEAM, *EQUATION) is not supported by clinch with "
+          "NLGEOM: put the rotary inertia on the reference node, which turns with the same "
+          "rotation");
+      d.notes.push_back({step.dynamic->loc, "the NLGEOM *DYNAMIC step is here"});
+      break;
+    }
+  }
 }
 
 // *MASS and *ROTARY INERTIA options that would change the inertia clinch assembles.
