@@ -71,6 +71,24 @@ inline Eigen::VectorXd random_state(int size, unsigned seed, double amplitude) {
   return state;
 }
 
+// A dynamic increment of dt on `s` (full storage, node 0 held in translation): the step's start
+// with its initial accelerations, then a random trial state of the free solved DOFs (values in
+// ±0.05, the same for a seed), for the dynamic tangent checks.
+inline void start_dynamic_trial(ConnectorSystem& s, const AnalysisPlan& plan, bool nlgeom,
+                                const DynamicProcedure& procedure, double dt, unsigned seed) {
+  s.set_nlgeom(nlgeom);
+  s.use_storage(false);  // NLGEOM dynamic terms (dashpots, rigid arms) are unsymmetric
+  for (int dof = 1; dof <= 3; ++dof) s.conditions().prescribe(plan.dofs.equation(0, dof), 0);
+  s.start_dynamic_step(true);
+  s.set_integration(&procedure, dt);
+  s.start_increment(0.0);
+  Eigen::VectorXd state = random_state(s.size(), seed, 0.05);
+  for (int i = 0; i < s.size(); ++i) {
+    if (s.is_prescribed(s.equation_of_solved(i))) state[i] = 0;
+  }
+  s.apply_correction(state);
+}
+
 // Newton on the current increment with tolerances far below the defaults, so that it iterates
 // down to round-off.
 inline NewtonReport solve_tightly(ConnectorSystem& s) {
