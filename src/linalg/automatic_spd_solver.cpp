@@ -23,7 +23,15 @@ LinearStatus AutomaticSpdSolver::analyze(const SparseMatrix& pattern, std::strin
                            : std::numeric_limits<double>::infinity();
   const bool costly = flops >= kIterativeFromFlops &&
                       flops >= kIterativeFromFlopsPerEntry * pattern.nonzeros();
-  if (!costly) return analyzed;
+  if (!costly) {
+    // The step's log line says why CHOLMOD stays (docs/parallel.md "The automatic choice").
+    if (analyzed == LinearStatus::Ok) {
+      choice_ = fmt::format("CHOLMOD predicts {:.3g} flops, below the hand-over to CG with "
+                            "BoomerAMG ({:.0e} flops and {:.0f} per stored entry)",
+                            flops, kIterativeFromFlops, kIterativeFromFlopsPerEntry);
+    }
+    return analyzed;
+  }
   const std::string cost =
       analyzed == LinearStatus::Ok
           ? fmt::format("CHOLMOD predicts {:.3g} flops per factorization", flops)
