@@ -224,9 +224,10 @@ int run_deck(const RunCommandOptions& options) {
   }
   // Per step, the driver asks for the solver of the storage the step needs.
   const bool definite = !plan->has_multipliers;
-  const SolverFactory solvers = [&](bool symmetric) -> std::unique_ptr<LinearSolver> {
+  const SolverFactory solvers = [&](bool symmetric,
+                                    bool tangent_changes) -> std::unique_ptr<LinearSolver> {
     if (!symmetric && options.solver == SolverChoice::Cholmod) return nullptr;
-    return make_linear_solver(options.solver, symmetric, definite);
+    return make_linear_solver(options.solver, symmetric, definite, tangent_changes);
   };
   Progress progress = Progress::for_stderr(options.quiet || !writer);
   HistoryRecorder history(columns, table, system);

@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "src/linalg/automatic_spd_solver.hpp"
+#include "src/linalg/automatic_solver.hpp"
 #include "src/linalg/cholmod_solver.hpp"
 #include "src/linalg/dense_solver.hpp"
 #include "src/linalg/petsc_plugin_loader.hpp"
@@ -26,15 +26,14 @@ const char* to_string(LinearStatus status) {
 }
 
 std::unique_ptr<LinearSolver> make_linear_solver(SolverChoice choice, bool symmetric,
-                                                 bool positive_definite) {
+                                                 bool positive_definite, bool tangent_changes) {
   const bool spd = symmetric && positive_definite;
   switch (choice) {
     case SolverChoice::Automatic:
       // Under mpirun the solve is shared only by the PETSc backend; the world communicator
       // comes from the same plugin, so it has loaded.
       if (launched_on_several_ranks()) return make_petsc_solver(symmetric, positive_definite);
-      if (spd) return std::make_unique<AutomaticSpdSolver>();
-      return std::make_unique<UmfpackSolver>();
+      return std::make_unique<AutomaticSolver>(symmetric, positive_definite, tangent_changes);
     case SolverChoice::Cholmod:
       if (!symmetric) throw std::invalid_argument("CHOLMOD needs a symmetric matrix");
       return std::make_unique<CholmodSolver>();

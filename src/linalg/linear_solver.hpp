@@ -44,17 +44,21 @@ class LinearSolver {
 
 enum class SolverChoice { Automatic, Cholmod, Umfpack, Dense, Petsc };
 
-// Automatic: the PETSc backend under mpirun with several ranks; else for symmetric positive
-// definite systems CHOLMOD, handing over to the PETSc backend when the factorization would cost
-// too much and to UMFPACK when the matrix is found indefinite (automatic_spd_solver.hpp), and
-// UMFPACK otherwise (symmetric
-// indefinite KKT systems with Lagrange multipliers, connection-types.md §3.8; softening and
-// unsymmetric tangents, behaviors.md §7.4). Dense: Cholesky when symmetric and positive definite,
-// LU otherwise. Petsc: CG with BoomerAMG when symmetric and positive definite, MUMPS LU
-// otherwise (petsc_solver.hpp), from the plugin libclinch_petsc.so (petsc_plugin_loader.hpp);
-// when the plugin cannot be loaded, a solver whose every operation fails with the reason. Asking
-// for CHOLMOD on an unsymmetric system throws std::invalid_argument.
+// Automatic: the PETSc backend under mpirun with several ranks; else CHOLMOD for symmetric
+// positive definite systems and UMFPACK for the others (symmetric indefinite KKT systems with
+// Lagrange multipliers, connection-types.md §3.8; softening and unsymmetric tangents,
+// behaviors.md §7.4), handing over to the PETSc backend where factorizations cost more than
+// AMG-preconditioned solves, and from CHOLMOD to UMFPACK when the matrix is found indefinite
+// (automatic_solver.hpp). Dense: Cholesky when symmetric and positive definite, LU otherwise.
+// Petsc: CG with BoomerAMG when symmetric and positive definite, GMRES with BoomerAMG when
+// unsymmetric without multipliers, MUMPS LU otherwise (petsc_solver.hpp), from the plugin
+// libclinch_petsc.so (petsc_plugin_loader.hpp); when the plugin cannot be loaded, a solver whose
+// every operation fails with the reason. Asking for CHOLMOD on an unsymmetric system throws
+// std::invalid_argument.
+// `tangent_changes`: the matrix will change at every Newton iteration (the automatic choice
+// weighs factorizations against iterative solves from the start).
 std::unique_ptr<LinearSolver> make_linear_solver(SolverChoice choice, bool symmetric,
-                                                 bool positive_definite);
+                                                 bool positive_definite,
+                                                 bool tangent_changes = false);
 
 }  // namespace clinch

@@ -109,7 +109,7 @@ LinearStatus petsc_failure(PetscErrorCode code, const char* stage, std::string* 
 }  // namespace
 
 PetscSolver::PetscSolver(bool symmetric, bool positive_definite)
-    : direct_(!(symmetric && positive_definite)) {
+    : symmetric_(symmetric), direct_(!positive_definite) {
   if (!ensure_petsc_initialized(&init_error_)) return;
   int ranks = 1;
   MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
@@ -233,9 +233,11 @@ PetscErrorCode PetscSolver::configure_iterative() {
   PC pc = nullptr;
   PetscCall(KSPCreate(distributed_ ? PETSC_COMM_WORLD : PETSC_COMM_SELF, &ksp_));
   PetscCall(KSPSetOperators(ksp_, matrix_, matrix_));
-  PetscCall(KSPSetType(ksp_, KSPCG));
+  PetscCall(KSPSetType(ksp_, symmetric_ ? KSPCG : KSPGMRES));
   // The true residual ‖b − Ax‖ ≤ rtol ‖b‖ is what the tolerance promises, not a preconditioned
-  // norm that depends on the AMG hierarchy.
+  // norm that depends on the AMG hierarchy; GMRES measures it only when preconditioned from the
+  // right.
+  if (!symmetric_) PetscCall(KSPSetPCSide(ksp_, PC_RIGHT));
   PetscCall(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED));
   PetscCall(KSPSetTolerances(ksp_, rtol_, kAbsoluteTolerance, PETSC_DEFAULT, kMaxIterations));
   PetscCall(KSPGetPC(ksp_, &pc));
@@ -303,9 +305,9 @@ LinearStatus PetscSolver::factorize(const SparseMatrix& k, std::string* message)
     return petsc_failure(code, "matrix access", message);
   }
   if (!direct_) {
-    // A diagonal entry a_jj <= 0 proves the matrix is not positive definite (e_jᵀ K e_j = a_jj)
-    // and CG is not meant for it: LU takes over for good, as CHOLMOD hands over to UMFPACK
-    // (automatic_spd_solver.hpp).
+    // A diagonal entry a_jj <= 0 proves the matrix is not positive definite (e_jᵀ K e_j = a_jj):
+    // CG is not meant for it, nor BoomerAMG's smoothers; LU takes over for good, as CHOLMOD hands
+    // over to UMFPACK (automatic_solver.hpp).
     const bool indefinite = std::any_of(diagonal_.begin(), diagonal_.end(),
                                         [&](int p) { return p < 0 || k.values[p] <= 0.0; });
     if (!indefinite) return set_up_iterative(message);
@@ -457,9 +459,10 @@ LinearStatus PetscSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x,
     preconditioner_is_fresh_ = true;
   }
   if (code == 0 && reason_ < 0 && !direct_) {
-    // CG failed with a fresh hierarchy: the matrix is indefinite or singular after all. MUMPS
+    // The Krylov method failed with a fresh hierarchy: the matrix is indefinite or singular
+    // after all. MUMPS
     // either solves it or reports it singular.
-    iterative_failure = fmt::format("CG + BoomerAMG stopped on {} after {} iterations",
+    iterative_failure = fmt::format("{} stopped on {} after {} iterations", method(),
                                     reason_name(reason_), iterations_);
     code = use_direct();
     if (code == 0) {

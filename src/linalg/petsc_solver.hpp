@@ -1,7 +1,8 @@
 // PETSc backend, the one that scales past a direct factorization (ARCHITECTURE.md "Beyond one
 // machine"): conjugate gradients preconditioned by hypre BoomerAMG for symmetric positive definite
-// tangents, MUMPS LU through PETSc for unsymmetric and indefinite ones (KKT systems with
-// multipliers, connection-types.md §3.8; softening, behaviors.md §7.4). On one process the matrix
+// tangents, GMRES with BoomerAMG for unsymmetric ones without multipliers (friction, damage:
+// behaviors.md §7.4), MUMPS LU through PETSc for KKT systems with multipliers
+// (connection-types.md §3.8) and for any system on which the Krylov method fails. On one process the matrix
 // is a sequential AIJ; under mpirun each rank holds its share of the rows, and every rank passes
 // the same whole matrix and right-hand side and receives the whole solution (docs/parallel.md).
 #pragma once
@@ -22,7 +23,7 @@ namespace clinch {
 class PetscSolver final : public LinearSolver {
  public:
   // `symmetric` and `positive_definite` as for make_linear_solver: both true selects CG + AMG,
-  // anything else MUMPS.
+  // positive_definite alone (no multipliers) GMRES + AMG, anything else MUMPS.
   PetscSolver(bool symmetric, bool positive_definite);
   ~PetscSolver() override;
   PetscSolver(const PetscSolver&) = delete;
@@ -39,8 +40,10 @@ class PetscSolver final : public LinearSolver {
   // Throws std::invalid_argument outside 0 < rtol < 1.
   void set_relative_tolerance(double rtol) override;
 
-  // "cg+boomeramg" or "mumps": the method the next solve uses.
-  const char* method() const { return direct_ ? "mumps" : "cg+boomeramg"; }
+  // "cg+boomeramg", "gmres+boomeramg" or "mumps": the method the next solve uses.
+  const char* method() const {
+    return direct_ ? "mumps" : symmetric_ ? "cg+boomeramg" : "gmres+boomeramg";
+  }
   // Krylov iterations of the last solve (1 for MUMPS), and how many AMG setups have been made;
   // for reports, tests and benchmarks.
   int iterations() const { return iterations_; }
@@ -68,6 +71,7 @@ class PetscSolver final : public LinearSolver {
   int run_solve();
   int set_up_preconditioner();
 
+  bool symmetric_;
   bool direct_;
   std::string init_error_;
   // Several ranks: this rank's rows [first_row_, first_row_ + local_rows_) of the distributed

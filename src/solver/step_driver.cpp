@@ -184,7 +184,7 @@ class Driver {
     out_.begin_step(s);
     step_problem_.begin_step(s, step.nlgeom);
     step_problem_.use_storage(true);
-    std::unique_ptr<LinearSolver> solver = solvers_(true);
+    std::unique_ptr<LinearSolver> solver = solvers_(true, false);
     if (!solver) {
       return fail("the requested linear solver cannot solve a *FREQUENCY step", step_number, 0);
     }
@@ -443,7 +443,7 @@ class Driver {
     step_problem_.use_storage(symmetric);
     if (!solver) {
       const auto start = std::chrono::steady_clock::now();
-      solver = solvers_(symmetric);
+      solver = solvers_(symmetric, step.nlgeom);
       if (!solver) {
         return fail(fmt::format("the requested linear solver cannot solve this step ({}): use "
                                 "--solver auto or umfpack",

@@ -41,8 +41,11 @@ struct RunResult {
 };
 
 // Makes the linear solver of a storage (symmetric: upper triangle; otherwise the full pattern),
-// nullptr when the solver the user chose cannot solve it.
-using SolverFactory = std::function<std::unique_ptr<LinearSolver>(bool symmetric)>;
+// nullptr when the solver the user chose cannot solve it. `tangent_changes`: the step that asks
+// first refactorizes at every Newton iteration (NLGEOM), which the automatic choice weighs
+// (automatic_solver.hpp).
+using SolverFactory =
+    std::function<std::unique_ptr<LinearSolver>(bool symmetric, bool tangent_changes)>;
 
 // Runs every step of `model` on `problem` (what Newton solves) and `step_problem` (what the
 // driver sets and keeps between solves), the two faces of one analysis.

@@ -17,7 +17,8 @@
 #include <tuple>
 #include <vector>
 
-#include "src/linalg/automatic_spd_solver.hpp"
+#include "src/linalg/automatic_solver.hpp"
+#include "src/linalg/fill_estimate.hpp"
 #include "src/linalg/cholmod_solver.hpp"
 #include "src/linalg/linear_solver.hpp"
 #include "src/linalg/pivot_checks.hpp"
@@ -357,20 +358,11 @@ TEST(LinearSolverChoice, AutomaticFallsBackToLuOnAnIndefiniteMatrix) {
   EXPECT_NEAR(x[1], 1.0, 1e-14);
 }
 
-// The automatic SPD solver keeps CHOLMOD where its predicted factorization is cheap and hands a
-// costly one to CG with BoomerAMG. The truss lattice with 22³ nodes (31 944 equations, 19 nodes
-// per row) is predicted at 1.75e10 flops; the chain of the same order at a few flops per entry.
-// Both are then solved to the tolerance of their backend.
-TEST(LinearSolverChoice, AutomaticHandsCostlyFactorizationsToPetsc) {
-  const SparseMatrix lattice = truss_lattice_3d(22);
-  CholmodSolver cholmod;
-  std::string message;
-  ASSERT_EQ(cholmod.analyze(lattice, &message), LinearStatus::Ok) << message;
-  ASSERT_GE(cholmod.predicted_flops(), 1.5 * kIterativeFromFlops);
-  // A chain of unit springs, every node also on a spring of stiffness 1 to ground: 3 on the
-  // diagonal, −1 beside it (well conditioned), upper storage.
+// A chain of unit springs, every node also on a spring of stiffness 1 to ground: 3 on the
+// diagonal, −1 beside it (well conditioned), upper storage.
+SparseMatrix grounded_spring_chain(int n) {
   SparseMatrix chain;
-  chain.n = lattice.n;
+  chain.n = n;
   chain.symmetric_upper = true;
   chain.col_ptr.push_back(0);
   for (int j = 0; j < chain.n; ++j) {
@@ -382,9 +374,37 @@ TEST(LinearSolverChoice, AutomaticHandsCostlyFactorizationsToPetsc) {
     chain.values.push_back(3.0);
     chain.col_ptr.push_back(static_cast<int>(chain.row_idx.size()));
   }
-  ASSERT_EQ(cholmod.analyze(chain, &message), LinearStatus::Ok) << message;
-  ASSERT_LE(cholmod.predicted_flops(), 100.0 * chain.nonzeros());
+  return chain;
+}
 
+// The fill estimate (one AMD ordering of the node graph) bounds what CHOLMOD's analysis finds
+// from above, within a small factor on a 3-D lattice (AMD against METIS), and is exact on a chain
+// whose AMD ordering has no fill.
+TEST(LinearSolverChoice, FillEstimateBoundsCholmodsPrediction) {
+  const SparseMatrix lattice = truss_lattice_3d(16);
+  CholmodSolver cholmod;
+  std::string message;
+  ASSERT_EQ(cholmod.analyze(lattice, &message), LinearStatus::Ok) << message;
+  const double estimate = estimated_cholesky_flops(lattice);
+  EXPECT_GE(estimate, cholmod.predicted_flops());
+  EXPECT_LE(estimate, 10.0 * cholmod.predicted_flops());
+  RecordProperty("estimate_over_cholmod", std::to_string(estimate / cholmod.predicted_flops()));
+  const SparseMatrix chain = grounded_spring_chain(1000);
+  ASSERT_EQ(cholmod.analyze(chain, &message), LinearStatus::Ok) << message;
+  EXPECT_DOUBLE_EQ(estimated_cholesky_flops(chain), cholmod.predicted_flops());
+}
+
+// The automatic choice hands a pattern whose factorization is costly even once to the PETSc
+// backend at analysis (the truss lattice with 22³ nodes, 31 944 equations: estimated above
+// kAtOnceFlops) and keeps CHOLMOD for a chain of the same order (a few flops per entry). Both are
+// then solved to the tolerance of their backend.
+TEST(LinearSolverChoice, AutomaticHandsCostlyFactorizationsToPetscAtOnce) {
+  const SparseMatrix lattice = truss_lattice_3d(22);
+  ASSERT_GE(estimated_cholesky_flops(lattice), 1.5 * kAtOnceFlops);
+  const SparseMatrix chain = grounded_spring_chain(lattice.n);
+  ASSERT_LE(estimated_cholesky_flops(chain), 100.0 * chain.nonzeros());
+
+  std::string message;
   const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(lattice.n, -1.0, 2.0);
   for (const auto& [matrix, expected] : {std::pair{&lattice, "petsc"}, {&chain, "cholmod"}}) {
     auto solver = make_linear_solver(SolverChoice::Automatic, true, true);
@@ -393,7 +413,7 @@ TEST(LinearSolverChoice, AutomaticHandsCostlyFactorizationsToPetsc) {
     // The step's log line says why the automatic choice left CHOLMOD, or kept it.
     const bool left = std::string(expected) == "petsc";
     EXPECT_NE(solver->choice().find(left ? "flops per factorization, so CG with BoomerAMG"
-                                         : "flops, below the hand-over to CG with BoomerAMG"),
+                                         : "flops per factorization, below the hand-over"),
               std::string::npos)
         << solver->choice();
     ASSERT_EQ(solver->factorize(*matrix, &message), LinearStatus::Ok) << message;
@@ -401,6 +421,65 @@ TEST(LinearSolverChoice, AutomaticHandsCostlyFactorizationsToPetsc) {
     ASSERT_EQ(solver->solve(b, x, &message), LinearStatus::Ok) << message;
     EXPECT_LE(relative_residual(*matrix, x, b), 1.1e-10) << expected;
   }
+}
+
+// A pattern whose factorization is affordable once but costs more than AMG-preconditioned solves
+// (the truss lattice with 14³ nodes: CHOLMOD predicts between kOnChangeFlops and kAtOnceFlops,
+// above kOnChangeFlopsPerEntry) stays with CHOLMOD while the matrix is the same (a linear step)
+// and goes to the PETSc backend once it changes (a Newton iteration of a nonlinear step). Every
+// solve is checked against its own matrix.
+TEST(LinearSolverChoice, AutomaticHandsOverOnceTheTangentChanges) {
+  const SparseMatrix lattice = truss_lattice_3d(14);
+  CholmodSolver cholmod;
+  std::string message;
+  ASSERT_EQ(cholmod.analyze(lattice, &message), LinearStatus::Ok) << message;
+  ASSERT_GE(cholmod.predicted_flops(), kOnChangeFlops);
+  ASSERT_GE(cholmod.predicted_flops(), kOnChangeFlopsPerEntry * lattice.nonzeros());
+  ASSERT_LT(estimated_cholesky_flops(lattice), kAtOnceFlops);
+
+  auto solver = make_linear_solver(SolverChoice::Automatic, true, true);
+  ASSERT_EQ(solver->analyze(lattice, &message), LinearStatus::Ok) << message;
+  EXPECT_NE(solver->choice().find("takes over once the tangent changes"), std::string::npos)
+      << solver->choice();
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(lattice.n, -1.0, 2.0);
+  SparseMatrix changed = lattice;
+  for (double& value : changed.values) value *= 1.5;
+  for (const auto& [matrix, expected] :
+       {std::pair{&lattice, "cholmod"}, {&lattice, "cholmod"}, {&changed, "petsc"}}) {
+    ASSERT_EQ(solver->factorize(*matrix, &message), LinearStatus::Ok) << message;
+    EXPECT_STREQ(solver->name(), expected);
+    Eigen::VectorXd x;
+    ASSERT_EQ(solver->solve(b, x, &message), LinearStatus::Ok) << message;
+    EXPECT_LE(relative_residual(*matrix, x, b), 1.1e-10) << expected;
+  }
+  EXPECT_NE(solver->choice().find("the tangent changed"), std::string::npos) << solver->choice();
+}
+
+// An unsymmetric system without multipliers (friction, damage) that is costly to factorize goes
+// to GMRES with BoomerAMG: the lattice of 22³ nodes in full storage with every entry above the
+// diagonal scaled by 1.01, which keeps it positive definite in its symmetric part.
+TEST(LinearSolverChoice, AutomaticHandsCostlyUnsymmetricSystemsToGmres) {
+  const SparseMatrix upper = truss_lattice_3d(22);
+  SparseMatrix full = from_eigen(to_eigen(upper), Storage::Full);
+  full.node_block = upper.node_block;
+  for (int j = 0; j < full.n; ++j) {
+    for (int p = full.col_ptr[j]; p < full.col_ptr[j + 1]; ++p) {
+      if (full.row_idx[p] < j) full.values[p] *= 1.01;
+    }
+  }
+  auto solver = make_linear_solver(SolverChoice::Automatic, false, true);
+  std::string message;
+  ASSERT_EQ(solver->analyze(full, &message), LinearStatus::Ok) << message;
+  EXPECT_STREQ(solver->name(), "petsc");
+  EXPECT_NE(solver->choice().find("so GMRES with BoomerAMG"), std::string::npos)
+      << solver->choice();
+  ASSERT_EQ(solver->factorize(full, &message), LinearStatus::Ok) << message;
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(full.n, -1.0, 2.0);
+  Eigen::VectorXd x;
+  ASSERT_EQ(solver->solve(b, x, &message), LinearStatus::Ok) << message;
+  EXPECT_LE(relative_residual(full, x, b), 1.1e-10);
+  // Under multipliers (not positive definite) UMFPACK keeps the system.
+  EXPECT_STREQ(make_linear_solver(SolverChoice::Automatic, false, false)->name(), "umfpack");
 }
 
 TEST(LinearSolverChoice, AutomaticTakesCholeskyOnlyForSpdSystems) {

@@ -66,8 +66,8 @@ DriverRun run_with_law(const std::string& deck_text, const Behavior& law, const 
   HistoryRecorder history(columns, table, system);
   RunOutputs outputs(history, status, log, progress);
   ConnectorStepProblem step_problem(deck.model, system);
-  const SolverFactory solvers = [](bool symmetric) {
-    return make_linear_solver(SolverChoice::Automatic, symmetric, true);
+  const SolverFactory solvers = [](bool symmetric, bool tangent_changes) {
+    return make_linear_solver(SolverChoice::Automatic, symmetric, true, tangent_changes);
   };
   run.result = run_analysis(deck.model, system, step_problem, solvers, outputs, options);
   table = HistoryTable{};
