@@ -48,11 +48,12 @@ int run_command_line(int argc, char** argv) {
                 "compare the assembled tangent with finite differences of the residual at the "
                 "first iteration of each increment and log the worst entries (small decks)");
   run->add_option("--solver", solver,
-                  "linear solver: auto (CHOLMOD for SPD systems, handing over to petsc when its "
-                  "factorization would cost 1e10 flops or more and to UMFPACK when the matrix "
-                  "proves indefinite; UMFPACK for the others; petsc under mpirun), cholmod "
-                  "(symmetric steps only), umfpack, dense (Cholesky or LU) or petsc (CG with "
-                  "BoomerAMG for SPD systems, MUMPS otherwise)")
+                  "linear solver: auto (CHOLMOD for SPD systems, UMFPACK for the others, handing "
+                  "over to petsc where factorizations cost more than AMG-preconditioned solves "
+                  "(the step's log line says why) and from CHOLMOD to UMFPACK when the matrix "
+                  "proves indefinite; petsc under mpirun), cholmod (symmetric steps only), "
+                  "umfpack, dense (Cholesky or LU) or petsc (CG with BoomerAMG for SPD systems, "
+                  "GMRES with BoomerAMG for unsymmetric ones, MUMPS with multipliers)")
       ->check(CLI::IsMember({"auto", "cholmod", "umfpack", "dense", "petsc"}))
       ->capture_default_str();
 

@@ -18,9 +18,9 @@ chosen so that the front reaches about --front rows (default n / 2):
 delta = mu F_N front^2 / (2 k_spring) (a chain in which each slider holds mu F_N). Without
 friction the deck is linear.
 
-Each slider has its own ground node: with one ground node shared by all sliders, its held DOFs
-stay in the pattern as a dense row and column, and UMFPACK's factorization took 14.0 s instead of
-0.79 s at n = 100 (CHOLMOD was not slowed down; 2026-12-03).
+Each slider has its own ground node; with --shared-ground one held ground node (node 1) carries
+every floor connector, whose DOFs stay in the pattern as a dense row and column (the case of
+docs/benchmarks.md "Connector friction" that direct LU handled worst).
 
 Solvers clinch picks (the .log's "step 2:" line): CARTESIAN with friction, UMFPACK on the full
 pattern (the friction tangent is unsymmetric: the capacity follows f1); without friction, CHOLMOD
@@ -43,6 +43,8 @@ def main():
     p = argparse.ArgumentParser()
     p.add_argument("--n", type=int, required=True, help="sliders per grid side")
     p.add_argument("--friction", action="store_true")
+    p.add_argument("--shared-ground", action="store_true",
+                   help="one ground node for every floor connector")
     p.add_argument("--out", required=True)
     p.add_argument("--mu", type=float, default=0.3)
     p.add_argument("--normal", type=float, default=10.0, help="normal load F_N per slider")
@@ -64,7 +66,7 @@ def main():
         return 2 * (i * n + j) + 2
 
     def ground(i, j):
-        return 2 * (i * n + j) + 1
+        return 1 if a.shared_ground else 2 * (i * n + j) + 1
 
     out = open(a.out, "w")
     w = out.write
@@ -74,9 +76,11 @@ def main():
     for i in range(n):  # i: z index, j: y index
         for j in range(n):
             y, z = float(j), float(i)
-            w(f"{ground(i, j)}, 0., {y}, {z}\n{slider(i, j)}, 0., {y}, {z}\n")
+            if ground(i, j) == 2 * (i * n + j) + 1:
+                w(f"{ground(i, j)}, 0., {y}, {z}\n")
+            w(f"{slider(i, j)}, 0., {y}, {z}\n")
     w("*NSET, NSET=GROUND, GENERATE\n")
-    w(f"1, {2 * n * n - 1}, 2\n")
+    w(f"1, {1 if a.shared_ground else 2 * n * n - 1}, 2\n")
     w("*NSET, NSET=BOTTOM, GENERATE\n")
     w(f"{slider(0, 0)}, {slider(0, n - 1)}, 2\n")
     w("*NSET, NSET=TOP, GENERATE\n")
