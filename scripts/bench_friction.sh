@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Connector-friction benchmarks (docs/benchmarks.md):
-# 1. time per Newton iteration on a lattice of friction connectors
+# 1. time per Newton iteration on a lattice of friction connectors, and the whole run with one
+#    ground node shared by every floor connector (--shared-ground) against own ground nodes
 #    (decks/bench/generate_friction_lattice.py: an n x n grid of sliders, each on the floor through a
 #    CARTESIAN connector with a stiff normal spring and CONTACT FORCE=1 friction, neighbours joined
 #    by elastic CARTESIAN springs, the top row sheared), with friction (clinch picks UMFPACK on the
@@ -75,10 +76,11 @@ results=$dir/results.txt
 : > "$results"
 for count in "${counts[@]}"; do
   n=$(awk -v c="$count" 'BEGIN {printf "%d", sqrt(c) + 0.5}')
-  for variant in friction plain; do
+  for variant in friction plain shared; do
     deck=$dir/lattice-$variant-$n.inp
     flag=()
     [ "$variant" = friction ] && flag=(--friction)
+    [ "$variant" = shared ] && flag=(--friction --shared-ground)
     python3 decks/bench/generate_friction_lattice.py --n "$n" --type "$type" "${flag[@]}" \
       --front "$front" --increment 1 --out "$deck"
     row=$(measure "$deck" "$dir/out-$variant-$n")
@@ -97,12 +99,15 @@ while read -r n variant wall fs nw its eq solver; do
   printf "| %d | %s | %s | %s | %s | %.3f | %.4g | %.4g |\n" $((n * n)) "$variant" "$eq" \
     "${solver//_/ }" "$its" "$wall" "$fs" "$nw"
 done < "$results"
-printf "\n| friction connectors | Newton s/it, friction / without | factorize+solve s/it, friction / without |\n|---|---|---|\n"
+printf "\n| friction connectors | Newton s/it, friction / without | factorize+solve s/it, friction / without | wall s, one shared ground node / own ground nodes |\n|---|---|---|---|\n"
 awk '{key = $1; if ($3 == "failed") next
-      if ($2 == "friction") {fw[key] = $5; ff[key] = $4} else {pw[key] = $5; pf[key] = $4}
+      if ($2 == "friction") {fw[key] = $5; ff[key] = $4; fwall[key] = $3}
+      else if ($2 == "plain") {pw[key] = $5; pf[key] = $4}
+      else {swall[key] = $3}
       order[key] = NR}
      END {for (k in order) if ((k in fw) && (k in pw))
-            printf "| %d | %.2f | %.2f |\n", k * k, fw[k] / pw[k], ff[k] / pf[k]}' "$results" |
+            printf "| %d | %.2f | %.2f | %s |\n", k * k, fw[k] / pw[k], ff[k] / pf[k],
+                   (k in swall) ? sprintf("%.2f", swall[k] / fwall[k]) : "failed"}' "$results" |
   sort -t '|' -k 2 -n
 echo "Wall s: the whole run (start, reading, plan, both steps, output). s/it: the .log's figures,"
 echo "Newton's time (evaluation, assembly, factorization, solve) and one factorization plus solve,"
