@@ -114,6 +114,8 @@ LinearStatus AutomaticSolver::factorize(const SparseMatrix& k, std::string* mess
   other_ = std::make_unique<UmfpackSolver>();
   active_ = other_.get();
   direct_.reset();
+  hand_over_on_change_ = false;
+  choice_ = "CHOLMOD found the matrix indefinite, so UMFPACK solves it";
   const LinearStatus analyzed = active_->analyze(k, message);
   return analyzed == LinearStatus::Ok ? active_->factorize(k, message) : analyzed;
 }

@@ -309,6 +309,7 @@ class Driver {
       const NewtonReport report =
           attempt(step_number, increment, attempt_number, iterations, changes);
       result_.iterations += iterations;
+      note_solver_hand_over(step_number, increment);
       if (report.outcome == NewtonOutcome::Interrupted && interrupted(step_number, increment)) {
         return false;
       }
@@ -460,11 +461,21 @@ class Driver {
     solver_ = solver.get();
     if (symmetric && step_problem_.has_multipliers()) why += "; the multipliers make it indefinite";
     if (const std::string choice = solver_->choice(); !choice.empty()) why += "; " + choice;
+    announced_solver_ = solver_->name();
     out_.note(step_number, 0,
               fmt::format("{} on the {} ({} equations, {} stored entries): {}", solver_->name(),
                           symmetric ? "upper triangle" : "full pattern", problem_.pattern().n,
                           problem_.pattern().values.size(), why));
     return true;
+  }
+
+  // The automatic choice may hand over between two factorizations (automatic_solver.hpp): the
+  // log says so where it happened.
+  void note_solver_hand_over(int step_number, int increment) {
+    if (solver_ == nullptr || announced_solver_ == solver_->name()) return;
+    announced_solver_ = solver_->name();
+    out_.note(step_number, increment,
+              fmt::format("the linear solver is now {}: {}", announced_solver_, solver_->choice()));
   }
 
   const Model& model_;
@@ -473,6 +484,7 @@ class Driver {
   const SolverFactory& solvers_;
   std::unique_ptr<LinearSolver> symmetric_solver_, full_solver_;
   LinearSolver* solver_ = nullptr;
+  std::string announced_solver_;  // the backend the log last named
   // What Newton solves in the current step: problem_ and *solver_, or the procedure's system.
   NonlinearProblem* newton_problem_ = nullptr;
   LinearSolver* newton_solver_ = nullptr;
