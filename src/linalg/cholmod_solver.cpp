@@ -5,29 +5,11 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "src/linalg/cholmod_view.hpp"
 #include "src/linalg/pivot_checks.hpp"
 
 namespace clinch {
 namespace {
-
-// A view of the caller's arrays, without copying. stype = 1: CHOLMOD reads the upper triangle
-// only, so a full symmetric matrix is viewed the same way. CHOLMOD does not write to its input;
-// the casts only satisfy its non-const C interface.
-cholmod_sparse view(const SparseMatrix& m, int xtype) {
-  cholmod_sparse a{};
-  a.nrow = a.ncol = static_cast<std::size_t>(m.n);
-  a.nzmax = static_cast<std::size_t>(m.nonzeros());
-  a.p = const_cast<int*>(m.col_ptr.data());
-  a.i = const_cast<int*>(m.row_idx.data());
-  a.x = xtype == CHOLMOD_PATTERN ? nullptr : const_cast<double*>(m.values.data());
-  a.stype = 1;
-  a.itype = CHOLMOD_INT;
-  a.xtype = xtype;
-  a.dtype = CHOLMOD_DOUBLE;
-  a.sorted = 1;
-  a.packed = 1;
-  return a;
-}
 
 const char* ordering_name(int ordering) {
   switch (ordering) {
@@ -90,7 +72,7 @@ LinearStatus CholmodSolver::analyze(const SparseMatrix& pattern, std::string* me
   nonzeros_ = pattern.nonzeros();
   diagonal_ = diagonal_positions(pattern);
   if (n_ == 0) return LinearStatus::Ok;
-  cholmod_sparse a = view(pattern, CHOLMOD_PATTERN);
+  cholmod_sparse a = cholmod_view(pattern, CHOLMOD_PATTERN);
   factor_ = cholmod_analyze(&a, &common_);
   if (factor_ == nullptr) {
     n_ = -1;
@@ -116,7 +98,7 @@ LinearStatus CholmodSolver::factorize(const SparseMatrix& k, std::string* messag
     set_message(message, non_finite_message(k, p, name()));
     return LinearStatus::Failure;
   }
-  cholmod_sparse a = view(k, CHOLMOD_REAL);
+  cholmod_sparse a = cholmod_view(k, CHOLMOD_REAL);
   cholmod_factorize(&a, factor_, &common_);
   const int* perm = static_cast<const int*>(factor_->Perm);
   const auto diagonal = [&](int column) {

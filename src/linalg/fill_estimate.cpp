@@ -6,6 +6,8 @@
 #include <limits>
 #include <vector>
 
+#include "src/linalg/cholmod_view.hpp"
+
 namespace clinch {
 namespace {
 
@@ -42,17 +44,7 @@ double amd_cholesky_flops(const SparseMatrix& upper) {
   common.nmethods = 1;
   common.method[0].ordering = CHOLMOD_AMD;
   common.supernodal = CHOLMOD_SIMPLICIAL;
-  cholmod_sparse a{};
-  a.nrow = a.ncol = static_cast<std::size_t>(upper.n);
-  a.nzmax = static_cast<std::size_t>(upper.nonzeros());
-  a.p = const_cast<int*>(upper.col_ptr.data());
-  a.i = const_cast<int*>(upper.row_idx.data());
-  a.stype = 1;
-  a.itype = CHOLMOD_INT;
-  a.xtype = CHOLMOD_PATTERN;
-  a.dtype = CHOLMOD_DOUBLE;
-  a.sorted = 1;
-  a.packed = 1;
+  cholmod_sparse a = cholmod_view(upper, CHOLMOD_PATTERN);
   cholmod_factor* factor = cholmod_analyze(&a, &common);
   const double flops = factor != nullptr ? common.fl : std::numeric_limits<double>::infinity();
   cholmod_free_factor(&factor, &common);
