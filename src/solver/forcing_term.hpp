@@ -3,7 +3,7 @@
 // solve costs a few iterative-solver steps and loses nothing, since the next residual is
 // evaluated exactly; as the residual falls quadratically the term tightens with it, so the
 // converged increment is judged by the same criteria as with a direct solver
-// (docs/linear-solvers.md).
+// (docs/parallel.md "Inexact Newton").
 #pragma once
 
 namespace clinch {
