@@ -31,7 +31,7 @@ namespace clinch {
 
 inline constexpr double kAtOnceFlops = 2e10;
 inline constexpr double kAtOnceFlopsPerEntry = 2000.0;
-inline constexpr double kOnChangeFlops = 1e9;
+inline constexpr double kOnChangeFlops = 1e8;
 inline constexpr double kOnChangeFlopsPerEntry = 1000.0;
 
 class AutomaticSolver final : public LinearSolver {
