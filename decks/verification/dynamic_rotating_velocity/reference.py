@@ -4,7 +4,8 @@
 b = (2, 4, 1) and the translational velocity c = (0.5, 0, -0.25): every node starts at
 v = c + w x (x - a), w = omega (b - a)/|b - a|, and a node with rotational DOFs at VR = w. No
 force or moment acts, so the motion is uniform: U = v t, V = v, UR = w t, VR = w (exactly, also
-for the scheme, whose accelerations stay zero)."""
+for the scheme, whose accelerations stay zero). Nodes 4-6 form a rigid body (small
+displacements): its tie nodes move as v_ref + w x (x - x_ref) = c + w x (x - a), the same field."""
 import math
 import os
 import sys
@@ -14,8 +15,10 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 import golden_lib as g  # noqa: E402
 
 A, B, C, OMEGA = [1.0, 2.0, -1.0], [2.0, 4.0, 1.0], [0.5, 0.0, -0.25], 3.0
-NODES = {1: [0.0, 0.0, 0.0], 2: [3.0, -1.0, 2.0], 3: [2.0, 0.0, 0.0]}
-ROTATING = {3}  # the node with a ROTARYI, whose rotations are DOFs
+NODES = {1: [0.0, 0.0, 0.0], 2: [3.0, -1.0, 2.0], 3: [2.0, 0.0, 0.0],
+         4: [0.0, 1.0, 1.0], 5: [1.0, 1.0, 0.0], 6: [-1.0, 2.0, 3.0]}
+# The node with a ROTARYI and the rigid body's nodes (reference 4, ties 5 and 6) have rotations.
+ROTATING = {3, 4, 5, 6}
 DT, OUTPUT_EVERY, T_END = 0.1, 5, 1.0
 
 axis = g.sub(B, A)
