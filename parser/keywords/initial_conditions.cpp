@@ -1,6 +1,12 @@
-// *INITIAL CONDITIONS (model data): TYPE=VELOCITY, the nodal velocities a *DYNAMIC step starts
-// from (docs/dynamics.md). Data lines: node or node set, DOF (1–6), velocity. Every other TYPE
-// sets a field clinch has no use for yet, and is refused at its value.
+// *INITIAL CONDITIONS (model data): TYPE=VELOCITY and TYPE=ROTATING VELOCITY, the nodal velocities
+// a *DYNAMIC step starts from (docs/dynamics.md). VELOCITY data lines: node or node set, DOF (1–6),
+// velocity. ROTATING VELOCITY takes pairs of lines: node or node set, ω, the first point on the
+// axis; then the second point, optionally followed by a translational velocity (docs/decisions.md).
+// Every other TYPE sets a field clinch has no use for yet, and is refused at its value.
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
 #include <fmt/format.h>
 
 #include "parser/keywords/history_keywords.hpp"
@@ -14,10 +20,11 @@ class InitialConditionsHandler : public KeywordHandler {
     const ParamSet& params = ctx.params();
     skip_ = report_unsupported_params(ctx, {"USER", "FILE", "STEP", "INC", "INTERPOLATE"});
     const std::string_view type = params.enum_value("TYPE");
-    if (type != "VELOCITY") {
+    rotating_ = type == "ROTATING VELOCITY";
+    if (type != "VELOCITY" && !rotating_) {
       ctx.report(DiagCode::unsupported_option, params.loc("TYPE", true),
                  fmt::format("TYPE={} on *INITIAL CONDITIONS is not supported by clinch (only "
-                             "TYPE=VELOCITY)",
+                             "TYPE=VELOCITY and TYPE=ROTATING VELOCITY)",
                              params.value("TYPE") ? params.value("TYPE")->text : type));
       skip_ = true;
     }
@@ -25,6 +32,14 @@ class InitialConditionsHandler : public KeywordHandler {
 
   void data_line(BlockContext& ctx, const DataLine& line, std::vector<Field>& fields) override {
     if (skip_ || line.blank) return;
+    if (rotating_) {
+      if (pending_) {
+        axis_line(ctx, line, fields);
+      } else {
+        first_line(ctx, line, fields);
+      }
+      return;
+    }
     ctx.check_field_count(line, fields, 3, "node or node set, DOF, velocity");
     if (fields.empty() || fields[0].empty()) {
       ctx.missing(fields.empty() ? line.loc : fields[0].loc, "node or node set");
@@ -53,8 +68,100 @@ class InitialConditionsHandler : public KeywordHandler {
     ctx.model().history.initial_velocities.push_back(std::move(velocity));
   }
 
+  void end(BlockContext& ctx) override {
+    if (!pending_) return;
+    ctx.report(DiagCode::missing_data_line, pending_->loc,
+               "*INITIAL CONDITIONS, TYPE=ROTATING VELOCITY: this line needs a second data line "
+               "with the second point on the axis of rotation");
+    pending_.reset();
+  }
+
  private:
+  // First line: node or node set, ω, the first point on the axis.
+  void first_line(BlockContext& ctx, const DataLine& line, std::vector<Field>& fields) {
+    ctx.check_field_count(line, fields, 5, "node or node set, angular velocity, x, y, z of the "
+                                           "first point on the axis");
+    RotatingVelocity rotating;
+    rotating.loc = line.loc;
+    bool ok = true;
+    if (fields.empty() || fields[0].empty()) {
+      ctx.missing(fields.empty() ? line.loc : fields[0].loc, "node or node set");
+      ok = false;
+    } else if (auto target = ctx.target(fields[0], "node")) {
+      rotating.target = std::move(*target);
+    } else {
+      ok = false;
+    }
+    ok = read_real(ctx, line, fields, 1, "angular velocity", rotating.omega) && ok;
+    for (std::size_t i = 0; i < 3; ++i) {
+      ok = read_real(ctx, line, fields, 2 + i, kFirstPoint[i], rotating.a[i]) && ok;
+    }
+    // The second line is read as the axis whatever happened here, so that it is not taken for a
+    // first line; `valid_` says whether the pair is kept.
+    pending_ = std::move(rotating);
+    valid_ = ok;
+  }
+
+  // Second line: the second point on the axis, then an optional translational velocity.
+  void axis_line(BlockContext& ctx, const DataLine& line, std::vector<Field>& fields) {
+    RotatingVelocity rotating = std::move(*pending_);
+    pending_.reset();
+    ctx.check_field_count(line, fields, 6, "x, y, z of the second point on the axis, then "
+                                           "optionally the translational velocity vx, vy, vz");
+    bool ok = valid_;
+    for (std::size_t i = 0; i < 3; ++i) {
+      ok = read_real(ctx, line, fields, i, kSecondPoint[i], rotating.b[i]) && ok;
+    }
+    for (std::size_t i = 0; i < 3; ++i) {
+      if (fields.size() <= 3 + i || fields[3 + i].empty()) continue;
+      const auto v = ctx.real(fields[3 + i], kTranslation[i]);
+      if (!v) ok = false;
+      else rotating.translation[i] = *v;
+    }
+    if (!ok) return;
+    const double length = std::hypot(rotating.b[0] - rotating.a[0], rotating.b[1] - rotating.a[1],
+                                     rotating.b[2] - rotating.a[2]);
+    const double scale = std::max({1.0, std::abs(rotating.a[0]), std::abs(rotating.a[1]),
+                                   std::abs(rotating.a[2]), std::abs(rotating.b[0]),
+                                   std::abs(rotating.b[1]), std::abs(rotating.b[2])});
+    // Two points closer than the geometric tolerance's relative size leave no axis.
+    if (!(length > 1e-8 * scale)) {
+      ctx.report(DiagCode::degenerate_geometry, line.loc,
+                 fmt::format("the second point on the axis of rotation ({}, {}, {}) coincides with "
+                             "the first ({}, {}, {}): two distinct points define the axis",
+                             rotating.b[0], rotating.b[1], rotating.b[2], rotating.a[0],
+                             rotating.a[1], rotating.a[2]));
+      return;
+    }
+    ctx.model().history.rotating_velocities.push_back(std::move(rotating));
+  }
+
+  // A required real field; E0305 at the end of a short line.
+  static bool read_real(BlockContext& ctx, const DataLine& line, const std::vector<Field>& fields,
+                        std::size_t i, std::string_view what, double& out) {
+    if (fields.size() <= i || fields[i].empty()) {
+      ctx.missing(fields.size() <= i ? BlockContext::end_of_line(line) : fields[i].loc, what);
+      return false;
+    }
+    const auto value = ctx.real(fields[i], what);
+    if (value) out = *value;
+    return value.has_value();
+  }
+
+  static constexpr std::string_view kFirstPoint[3] = {"x of the first point on the axis",
+                                                      "y of the first point on the axis",
+                                                      "z of the first point on the axis"};
+  static constexpr std::string_view kSecondPoint[3] = {"x of the second point on the axis",
+                                                       "y of the second point on the axis",
+                                                       "z of the second point on the axis"};
+  static constexpr std::string_view kTranslation[3] = {"translational velocity vx",
+                                                       "translational velocity vy",
+                                                       "translational velocity vz"};
+
   bool skip_ = false;
+  bool rotating_ = false;
+  std::optional<RotatingVelocity> pending_;  // a first line waiting for its axis line
+  bool valid_ = true;
 };
 
 }  // namespace

@@ -376,10 +376,12 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
          "lines after the first",
          "they tune Abaqus's own eigensolver"}}},
       {"INITIAL CONDITIONS",
-       "With TYPE=VELOCITY: the nodal velocities at the start of the analysis, read by the first "
-       "*DYNAMIC step (docs/dynamics.md).",
-       "`node or set, DOF, velocity`.",
-       {{"TYPE other than VELOCITY (ROTATING VELOCITY, STRESS, TEMPERATURE, ...)",
+       "With TYPE=VELOCITY or ROTATING VELOCITY: the nodal velocities at the start of the "
+       "analysis, read by the first *DYNAMIC step (docs/dynamics.md).",
+       "VELOCITY: `node or set, DOF, velocity`. ROTATING VELOCITY, pairs of lines: `node or set, "
+       "ω, x, y, z of a first point on the axis`, then `x, y, z of a second point[, vx, vy, vz]` "
+       "(docs/decisions.md).",
+       {{"TYPE other than VELOCITY and ROTATING VELOCITY (STRESS, TEMPERATURE, ...)",
          "not implemented"},
         {"USER, FILE, STEP, INC, INTERPOLATE", "not implemented"}}},
       {"CONTROLS",

@@ -110,6 +110,17 @@ struct ConcentratedLoad {
   SourceLoc loc, dof_loc;
 };
 
+// *INITIAL CONDITIONS, TYPE=ROTATING VELOCITY, a pair of data lines: the nodes turn at `omega`
+// about the axis from point `a` to point `b` (right-hand rule) and translate at `translation`:
+// v = translation + ω (b − a)/|b − a| × (x − a), with x a node's original coordinates; a node with
+// rotational DOFs turns at ω (b − a)/|b − a| (docs/dynamics.md, docs/decisions.md).
+struct RotatingVelocity {
+  TargetRef target;
+  double omega = 0;
+  std::array<double, 3> a{}, b{}, translation{};
+  SourceLoc loc;
+};
+
 // *DLOAD data line of type GRAV (docs/dynamics.md "Gravity"): the acceleration g along
 // `direction` (a unit vector) on the masses of the MASS elements of `target` (every MASS element
 // when the line names none).
@@ -377,6 +388,7 @@ struct HistoryModel {
   std::vector<BoundaryCondition> model_boundaries;
   std::vector<ConnectorCondition> model_motions;
   std::vector<InitialVelocity> initial_velocities;  // *INITIAL CONDITIONS, TYPE=VELOCITY
+  std::vector<RotatingVelocity> rotating_velocities;  // TYPE=ROTATING VELOCITY
 
   std::vector<Step> steps;
   std::unordered_map<std::string, std::int32_t> step_by_key;

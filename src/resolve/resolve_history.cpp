@@ -4,6 +4,8 @@
 // prescribed DOFs or components (W0801), connector motions and loads against the connection type
 // (E0512, E0709, E0702), UNSYMM=NO with an unsymmetric behaviour (W0806), and the output requests
 // (resolve_output_requests.cpp).
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -138,6 +140,9 @@ class HistoryValidator {
     }
 
     for (InitialVelocity& velocity : history.initial_velocities) check_initial_velocity(velocity);
+    for (const RotatingVelocity& rotating : history.rotating_velocities) {
+      expand_rotating_velocity(rotating);
+    }
 
     for (Step& step : history.steps) {
       check_step_structure(step);
@@ -374,6 +379,54 @@ class HistoryValidator {
                    fmt::format("initial velocity on DOF {} of node {}, which no element uses",
                                velocity.dof, node_name(model_, node)));
       return;
+    }
+  }
+
+  // *INITIAL CONDITIONS, TYPE=ROTATING VELOCITY: the velocities that the rigid rotation gives each
+  // node, as the DOF-wise velocities of TYPE=VELOCITY (which the run reads), on the DOFs the node
+  // has; a node with no translational DOF would lose its velocity, which is an error.
+  void expand_rotating_velocity(const RotatingVelocity& rotating) {
+    std::vector<std::int32_t> nodes;
+    if (!resolve(rotating.target, false, nodes)) return;
+    const Vec3 axis{rotating.b[0] - rotating.a[0], rotating.b[1] - rotating.a[1],
+                    rotating.b[2] - rotating.a[2]};
+    const double length = length_of(axis);
+    const Vec3 w{rotating.omega * axis[0] / length, rotating.omega * axis[1] / length,
+                 rotating.omega * axis[2] / length};
+    for (std::int32_t node : nodes) {
+      const Vec3& x = model_.nodes[static_cast<std::size_t>(node)].x;
+      const Vec3 r{x[0] - rotating.a[0], x[1] - rotating.a[1], x[2] - rotating.a[2]};
+      const std::array<double, 6> rates{
+          rotating.translation[0] + w[1] * r[2] - w[2] * r[1],
+          rotating.translation[1] + w[2] * r[0] - w[0] * r[2],
+          rotating.translation[2] + w[0] * r[1] - w[1] * r[0], w[0], w[1], w[2]};
+      const DofMask active = active_[static_cast<std::size_t>(node)];
+      const bool held = on_held_element(node);
+      // A translational velocity on a DOF no element uses would be lost, as for TYPE=VELOCITY; a
+      // node without rotational DOFs (a point mass) has no angular velocity to take.
+      const double speed = length_of({rates[0], rates[1], rates[2]});
+      for (int dof = 1; dof <= 3 && !held; ++dof) {
+        if ((active & (1u << (dof - 1))) ||
+            std::abs(rates[static_cast<std::size_t>(dof - 1)]) <= 1e-12 * speed) {
+          continue;
+        }
+        sink_.report(DiagCode::invalid_dof, rotating.target.loc,
+                     fmt::format("the rotating velocity gives DOF {} of node {} the velocity {}, "
+                                 "but no element uses that DOF",
+                                 dof, node_name(model_, node),
+                                 rates[static_cast<std::size_t>(dof - 1)]));
+        return;
+      }
+      for (int dof = 1; dof <= 6; ++dof) {
+        if (!held && !(active & (1u << (dof - 1)))) continue;
+        InitialVelocity velocity;
+        velocity.target = rotating.target;
+        velocity.resolved = {node};
+        velocity.dof = dof;
+        velocity.value = rates[static_cast<std::size_t>(dof - 1)];
+        velocity.loc = velocity.dof_loc = rotating.loc;
+        model_.history.initial_velocities.push_back(std::move(velocity));
+      }
     }
   }
 
