@@ -142,13 +142,6 @@ EigenResult solve_frequency_eigenproblem(const SparseMatrix& k, const LumpedMass
   const auto r = static_cast<int>(mass.factor.size());
   result.available = r;
   if (r == 0) return result;
-  if (std::string_view(solver.name()) == "petsc") {
-    if (std::unique_ptr<NearestEigenpairs> slepc = make_slepc_eigensolver(k, mass, request.shift)) {
-      result.eigensolver = slepc->name();
-      select_nearest(*slepc, request, result);
-      return result;
-    }
-  }
 
   // K − σM in the pattern of K: every entry of the lumped mass lies in a node's block, which the
   // elements on the node fill.
@@ -167,14 +160,26 @@ EigenResult solve_frequency_eigenproblem(const SparseMatrix& k, const LumpedMass
         request.shift * e.value;
   }
   std::string message;
-  if (solver.factorize(shifted, &message) != LinearStatus::Ok) {
-    // A named pivot is described by the caller in the deck's terms rather than the solver's.
+  // A named pivot is described by the caller in the deck's terms rather than the solver's.
+  const auto singular = [&]() {
     result.failed_equation = solver.failed_pivot();
     result.error = fmt::format("K − σM cannot be factorized at the shift σ = {:.6g}{}",
                                request.shift,
                                result.failed_equation >= 0 ? "" : ": " + message);
     return result;
+  };
+  if (std::string_view(solver.name()) == "petsc") {
+    if (std::unique_ptr<NearestEigenpairs> slepc = make_slepc_eigensolver(k, mass, request.shift)) {
+      result.eigensolver = slepc->name();
+      select_nearest(*slepc, request, result);
+      // SLEPc's message for a singular K − σM is MUMPS's; the linear solver names the pivot.
+      if (result.error.empty() || solver.factorize(shifted, &message) == LinearStatus::Ok) {
+        return result;
+      }
+      return singular();
+    }
   }
+  if (solver.factorize(shifted, &message) != LinearStatus::Ok) return singular();
 
   SpectraNearest spectra(ShiftInvertOperator(mass, k.n, solver), request.shift);
   result.eigensolver = spectra.name();
