@@ -6,8 +6,11 @@
 # run is timed by /usr/bin/time (elapsed), its log line must name the expected eigensolver and its
 # ten lowest eigenvalues must match the closed form
 #   omega_j = 2 sqrt(k/(2m)) sin((2j - 1) pi / (2(2N + 1)))
-# to 1e-8 relative (both eigensolvers stop at a relative residual of 1e-12; see
-# tests/frequency/check_modes.py). Printed: each variant's median over the runs.
+# to 1e-8 relative plus 1e-11 absolute: both eigensolvers stop at a relative residual of 1e-12
+# (tests/frequency/check_modes.py), but the factorization of K - sigma M is backward stable only
+# to round-off of its entries, which perturbs each eigenvalue by some ulps of the largest,
+# lambda_max < 4 (k/2) / m = 1000, so 1e-11 = 1e-14 lambda_max (about 45 ulps; 1.3e-13 measured
+# at N = 20000, where lambda_1 = 1.5e-6). Printed: each variant's median over the runs.
 # Usage: scripts/bench_frequency_chain.sh [CLINCH]   Environment: CHAIN_MASSES (20000), CHAIN_RUNS (3)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -41,7 +44,7 @@ assert len(rows) == 10, f"{len(rows)} modes, expected 10"
 for j, row in enumerate(rows, start=1):
     omega = 2 * math.sqrt(1000 / (2 * 2)) * math.sin((2 * j - 1) * math.pi / (2 * (2 * n + 1)))
     lam = float(row["eigenvalue"])
-    assert abs(lam - omega ** 2) <= 1e-8 * omega ** 2, f"mode {j}: {lam}, expected {omega ** 2}"
+    assert abs(lam - omega ** 2) <= 1e-8 * omega ** 2 + 1e-11, f"mode {j}: {lam}, expected {omega ** 2}"
 PY
 }
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
@@ -62,7 +65,7 @@ for ((i = 0; i < runs; ++i)); do
   done
 done
 median() { tr ' ' '\n' <<< "$1" | grep . | sort -g | awk '{ a[NR] = $1 } END { print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2 }'; }
-echo "chain of $masses masses ($((2 * masses)) equations), 10 lowest modes, closed form to 1e-8"
+echo "chain of $masses masses ($((2 * masses)) equations), 10 lowest modes match the closed form"
 for v in "${variants[@]}"; do
   printf '%-8s median %.2f s over %d runs (%s)\n' "$v" "$(median "${times[$v]}")" "$runs" "${times[$v]% }"
 done
