@@ -4,14 +4,15 @@
 # what is missing and rebuilds incrementally. matplotlib draws the plots of `clinch study` and
 # `clinch report`; Chromium loads the report page in its test. libspectra-dev is the Lanczos
 # eigensolver of *FREQUENCY steps. petsc-dev brings PETSc with hypre and
-# MUMPS, and OpenMPI (mpirun included) under it.
+# MUMPS, and OpenMPI (mpirun included) under it; slepc-dev the eigensolver of *FREQUENCY steps
+# run with PETSc.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(g++ cmake ninja-build pkg-config python3
           libeigen3-dev libspectra-dev libsuitesparse-dev libopenblas-dev libopenblas0-pthread
           libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libfmt-dev nlohmann-json3-dev
-          libre2-dev petsc-dev libceres-dev
+          libre2-dev petsc-dev slepc-dev libceres-dev
           python3-matplotlib chromium)
 missing=()
 for p in "${packages[@]}"; do

@@ -9,6 +9,9 @@
 #include "src/linalg/petsc_plugin_loader.hpp"
 #include "src/linalg/petsc_runtime.hpp"
 #include "src/linalg/petsc_solver.hpp"
+#ifdef CLINCH_WITH_SLEPC
+#include "src/linalg/slepc_eigensolver.hpp"
+#endif
 #include "src/parallel/communicator.hpp"
 
 namespace clinch {
@@ -46,6 +49,19 @@ __attribute__((visibility("default"))) clinch::Communicator* clinch_plugin_make_
   }
 }
 
+#ifdef CLINCH_WITH_SLEPC
+__attribute__((visibility("default"))) clinch::NearestEigenpairs*
+clinch_plugin_make_slepc_eigensolver(const clinch::SparseMatrix& k, const clinch::LumpedMass& mass,
+                                     double shift, std::string* error) {
+  try {
+    return new clinch::SlepcEigensolver(k, mass, shift);
+  } catch (const std::exception& e) {
+    if (error != nullptr) *error = std::string("SLEPc eigensolver: ") + e.what();
+    return nullptr;
+  }
+}
+#endif
+
 }  // extern "C"
 
 // The signatures above are those the loader expects.
@@ -53,5 +69,9 @@ static_assert(
     std::is_same_v<decltype(clinch_plugin_interface_version), clinch::PetscPluginInterfaceVersion>);
 static_assert(
     std::is_same_v<decltype(clinch_plugin_make_petsc_solver), clinch::PetscPluginMakeSolver>);
+#ifdef CLINCH_WITH_SLEPC
+static_assert(std::is_same_v<decltype(clinch_plugin_make_slepc_eigensolver),
+                             clinch::PetscPluginMakeEigensolver>);
+#endif
 static_assert(std::is_same_v<decltype(clinch_plugin_make_world_communicator),
                              clinch::PetscPluginMakeWorldCommunicator>);

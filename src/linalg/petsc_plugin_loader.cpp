@@ -76,6 +76,9 @@ struct LoadedPlugin {
         resolve(handle, "clinch_plugin_make_petsc_solver", tried));
     plugin.make_world_communicator = reinterpret_cast<PetscPluginMakeWorldCommunicator*>(
         resolve(handle, "clinch_plugin_make_world_communicator", tried));
+    // Optional: a plugin built without SLEPc lacks it.
+    plugin.make_eigensolver = reinterpret_cast<PetscPluginMakeEigensolver*>(
+        dlsym(handle, "clinch_plugin_make_slepc_eigensolver"));
     return plugin.make_solver != nullptr && plugin.make_world_communicator != nullptr;
   }
 
@@ -135,6 +138,14 @@ std::unique_ptr<Communicator> make_world_communicator(std::string* error) {
   const PetscPlugin* plugin = petsc_plugin(error);
   if (plugin == nullptr) return nullptr;
   return std::unique_ptr<Communicator>(plugin->make_world_communicator(error));
+}
+
+std::unique_ptr<NearestEigenpairs> make_slepc_eigensolver(const SparseMatrix& k,
+                                                          const LumpedMass& mass, double shift) {
+  const PetscPlugin* plugin = petsc_plugin(nullptr);
+  if (plugin == nullptr || plugin->make_eigensolver == nullptr) return nullptr;
+  std::string error;
+  return std::unique_ptr<NearestEigenpairs>(plugin->make_eigensolver(k, mass, shift, &error));
 }
 
 }  // namespace clinch

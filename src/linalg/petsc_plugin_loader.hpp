@@ -10,6 +10,8 @@
 #include <string>
 #include <utility>
 
+#include "src/solver/frequency_eigensolver.hpp"
+
 #include "src/linalg/linear_solver.hpp"
 #include "src/parallel/communicator.hpp"
 
@@ -25,11 +27,17 @@ using PetscPluginMakeSolver = LinearSolver*(bool symmetric, bool positive_defini
                                             std::string* error);
 // The world communicator (make_world_communicator), null with the reason in `error`.
 using PetscPluginMakeWorldCommunicator = Communicator*(std::string* error);
+// SLEPc's eigensolver of K φ = λ M φ nearest σ, owned by the caller (slepc_eigensolver.hpp);
+// null with the reason in `error`. A plugin built without SLEPc does not have it.
+using PetscPluginMakeEigensolver = NearestEigenpairs*(const SparseMatrix& k,
+                                                      const LumpedMass& mass, double shift,
+                                                      std::string* error);
 }
 
 struct PetscPlugin {
   PetscPluginMakeSolver* make_solver = nullptr;
   PetscPluginMakeWorldCommunicator* make_world_communicator = nullptr;
+  PetscPluginMakeEigensolver* make_eigensolver = nullptr;  // null: built without SLEPc
 };
 
 // The plugin, loaded on the first call: the file named by the environment variable
@@ -42,6 +50,11 @@ const PetscPlugin* petsc_plugin(std::string* error);
 // The PETSc backend (petsc_solver.hpp) from the plugin; when the plugin cannot be loaded, an
 // UnavailableSolver that carries the reason.
 std::unique_ptr<LinearSolver> make_petsc_solver(bool symmetric, bool positive_definite);
+
+// SLEPc's eigensolver from the plugin; null when the plugin cannot be loaded or has no SLEPc
+// (the caller then uses Spectra).
+std::unique_ptr<NearestEigenpairs> make_slepc_eigensolver(const SparseMatrix& k,
+                                                          const LumpedMass& mass, double shift);
 
 // A backend that cannot be used: analyze, factorize and solve return LinearStatus::Failure with
 // the reason it is unavailable.

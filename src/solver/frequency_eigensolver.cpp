@@ -6,6 +6,10 @@
 #include <Spectra/SymEigsSolver.h>
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <string_view>
+
+#include "src/linalg/petsc_plugin_loader.hpp"
 
 namespace clinch {
 namespace {
@@ -87,6 +91,40 @@ bool largest_magnitude(const ShiftInvertOperator& op, int wanted, Eigen::VectorX
   return true;
 }
 
+// Spectra's side of NearestEigenpairs: λ = σ + 1/ν, φ = (K − σM)⁻¹ F z / ν.
+class SpectraNearest final : public NearestEigenpairs {
+ public:
+  SpectraNearest(const ShiftInvertOperator& op, double shift) : op_(op), shift_(shift) {}
+  std::string name() const override {
+    return "Spectra Lanczos on the mass-carrying directions, shift-and-invert by the linear solver";
+  }
+  bool find(int wanted, std::string* error) override {
+    if (!largest_magnitude(op_, wanted, nu_, z_)) {
+      *error = fmt::format("the Lanczos iteration did not converge for {} eigenvalues", wanted);
+      return false;
+    }
+    finite_.clear();
+    // ν = 0 is a direction of C's null space: no finite eigenvalue.
+    for (Eigen::Index i = 0; i < nu_.size(); ++i) {
+      if (nu_[i] != 0.0) finite_.push_back(static_cast<int>(i));
+    }
+    return true;
+  }
+  int found() const override { return static_cast<int>(finite_.size()); }
+  double eigenvalue(int i) const override { return shift_ + 1.0 / nu_[finite_[i]]; }
+  Eigen::VectorXd vector(int i) const override {
+    const Eigen::VectorXd zi = z_.col(finite_[i]);
+    return op_.solve(op_.spread(zi.data())) / nu_[finite_[i]];
+  }
+
+ private:
+  ShiftInvertOperator op_;
+  double shift_;
+  Eigen::VectorXd nu_;
+  Eigen::MatrixXd z_;
+  std::vector<int> finite_;
+};
+
 }  // namespace
 
 Eigen::VectorXd mass_times(const LumpedMass& mass, const Eigen::VectorXd& x) {
@@ -122,35 +160,49 @@ EigenResult solve_frequency_eigenproblem(const SparseMatrix& k, const LumpedMass
         request.shift * e.value;
   }
   std::string message;
-  if (solver.factorize(shifted, &message) != LinearStatus::Ok) {
-    // A named pivot is described by the caller in the deck's terms rather than the solver's.
+  // A named pivot is described by the caller in the deck's terms rather than the solver's.
+  const auto singular = [&]() {
     result.failed_equation = solver.failed_pivot();
     result.error = fmt::format("K − σM cannot be factorized at the shift σ = {:.6g}{}",
                                request.shift,
                                result.failed_equation >= 0 ? "" : ": " + message);
     return result;
+  };
+  if (std::string_view(solver.name()) == "petsc") {
+    if (std::unique_ptr<NearestEigenpairs> slepc = make_slepc_eigensolver(k, mass, request.shift)) {
+      result.eigensolver = slepc->name();
+      select_nearest(*slepc, request, result);
+      // SLEPc's message for a singular K − σM is MUMPS's; the linear solver names the pivot.
+      if (result.error.empty() || solver.factorize(shifted, &message) == LinearStatus::Ok) {
+        return result;
+      }
+      return singular();
+    }
   }
+  if (solver.factorize(shifted, &message) != LinearStatus::Ok) return singular();
 
-  const ShiftInvertOperator op(mass, k.n, solver);
+  SpectraNearest spectra(ShiftInvertOperator(mass, k.n, solver), request.shift);
+  result.eigensolver = spectra.name();
+  select_nearest(spectra, request, result);
+  return result;
+}
+
+void select_nearest(NearestEigenpairs& eigensolver, const EigenRequest& request,
+                    EigenResult& result) {
+  const int r = result.available;
   int wanted = std::min(r, request.count ? std::max(*request.count, 1) + 2 : 8);
   for (;;) {
-    Eigen::VectorXd nu;
-    Eigen::MatrixXd z;
-    if (!largest_magnitude(op, wanted, nu, z)) {
-      result.error = fmt::format("the Lanczos iteration did not converge for {} eigenvalues",
-                                 wanted);
-      return result;
+    if (std::string error; !eigensolver.find(wanted, &error)) {
+      result.error = error;
+      return;
     }
     // Every eigenvalue within `reach` of σ is among those found.
     std::vector<std::pair<double, int>> found;
     double reach = 0.0;
-    for (Eigen::Index i = 0; i < nu.size(); ++i) {
-      if (nu[i] == 0.0) continue;  // a direction of C's null space: no finite eigenvalue
-      const double lambda = request.shift + 1.0 / nu[i];
-      reach = std::max(reach, std::abs(1.0 / nu[i]));
-      if (lambda >= request.lower && lambda <= request.upper) {
-        found.emplace_back(lambda, static_cast<int>(i));
-      }
+    for (int i = 0; i < eigensolver.found(); ++i) {
+      const double lambda = eigensolver.eigenvalue(i);
+      reach = std::max(reach, std::abs(lambda - request.shift));
+      if (lambda >= request.lower && lambda <= request.upper) found.emplace_back(lambda, i);
     }
     std::sort(found.begin(), found.end());
     const bool all = wanted >= r;
@@ -163,13 +215,8 @@ EigenResult solve_frequency_eigenproblem(const SparseMatrix& k, const LumpedMass
       if (request.count && static_cast<int>(found.size()) > *request.count) {
         found.resize(static_cast<std::size_t>(*request.count));
       }
-      for (const auto& [lambda, i] : found) {
-        // φ = (K − σM)⁻¹ F z / ν: the massless equations and multipliers follow the massive.
-        const Eigen::VectorXd zi = z.col(i);
-        EigenPair pair{lambda, op.solve(op.spread(zi.data())) / nu[i]};
-        result.pairs.push_back(std::move(pair));
-      }
-      return result;
+      for (const auto& [lambda, i] : found) result.pairs.push_back({lambda, eigensolver.vector(i)});
+      return;
     }
     wanted = std::min(r, 2 * wanted);
   }

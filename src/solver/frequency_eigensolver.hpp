@@ -10,6 +10,9 @@
 // so the infinite eigenvalues of a singular M do not arise; K − σM is factorized once by the
 // project's linear solver (CHOLMOD, or UMFPACK when it is indefinite), and Spectra's implicitly
 // restarted Lanczos method (SymEigsSolver) finds the ν of largest magnitude: the λ nearest σ.
+// When the linear solver is PETSc's (`--solver petsc`, mpirun) and the PETSc plugin was built with
+// SLEPc, SLEPc's Krylov–Schur with shift-and-invert (MUMPS) finds them instead
+// (src/linalg/slepc_eigensolver.hpp).
 #pragma once
 
 #include <Eigen/Core>
@@ -19,6 +22,7 @@
 #include <vector>
 
 #include "src/linalg/linear_solver.hpp"
+#include "src/solver/nearest_eigenpairs.hpp"
 
 namespace clinch {
 
@@ -53,7 +57,14 @@ struct EigenResult {
   int available = 0;             // r: the number of finite eigenvalues
   std::string error;             // why none could be computed (empty: success)
   int failed_equation = -1;      // the zero pivot of K − σM, when that was why
+  std::string eigensolver;       // the method that ran (NearestEigenpairs::name)
 };
+
+// Asks `eigensolver` for more eigenpairs nearest σ until every wanted one is among them (those
+// within the distance of the farthest found) or all result.available are found; appends them to
+// result.pairs, or sets result.error.
+void select_nearest(NearestEigenpairs& eigensolver, const EigenRequest& request,
+                    EigenResult& result);
 
 // Solves with `solver` already analysed on the pattern of `k`. Asks Spectra for more
 // eigenvalues nearest σ until every wanted one is among them (those within the distance of the

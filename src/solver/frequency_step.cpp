@@ -78,7 +78,8 @@ FrequencyStepResult solve_frequency_step(const FrequencyProcedure& procedure,
     result.failed_equation = eigen.failed_equation;
     return result;
   }
-  result.notes.push_back(fmt::format("eigenvalues nearest the shift σ = {:.6g}", request.shift));
+  result.notes.push_back(fmt::format("eigenvalues nearest the shift σ = {:.6g}{}", request.shift,
+                                     eigen.eigensolver.empty() ? "" : " by " + eigen.eigensolver));
   int number = 0;
   for (EigenPair& pair : eigen.pairs) {
     normalize(procedure, model.mass, model.dof_names, pair.vector);

@@ -1,6 +1,6 @@
 """*FREQUENCY steps against independent references (docs/dynamics.md "Natural frequencies").
 
-Usage: check_modes.py CLINCH CASE OUTDIR [--mpi], CASE one of chain, bushing, mechanism: runs the deck
+Usage: check_modes.py CLINCH CASE OUTDIR [--petsc | --mpi [--spectra]], CASE one of chain, bushing, mechanism: runs the deck
 tests/frequency/<deck>.inp through `clinch run`, reads <job>.modes.csv and compares each step's
 eigenvalues, frequencies, generalized masses and mode shapes with a reference computed here:
 
@@ -23,9 +23,11 @@ eigenvalues, frequencies, generalized masses and mode shapes with a reference co
   k t^T t over the rows t of T that the springs and the tied mass act on; assembled here from the
   deck's values and solved densely, without clinch's condensation.
 
-With --mpi the run is `mpirun -n 2 clinch run --solver petsc` (docs/parallel.md): each rank runs
-the same eigensolve with PETSc's distributed solves of K - sigma M (CG to a relative residual of
-1e-10), and the same references hold within the same tolerances.
+With --petsc the run is `clinch run --solver petsc`, with --mpi `mpirun -n 2 clinch run --solver
+petsc` (docs/parallel.md): SLEPc's Krylov-Schur with shift-and-invert (MUMPS) solves the problem,
+its rows shared by the ranks, and the step's log line must name SLEPc and the number of ranks;
+without either, or with --mpi --spectra (a build without SLEPc), the log line must name Spectra. The same references hold within the same
+tolerances (see EIGEN_RTOL).
 
 The interpreter CTest finds may have no numpy, so the dense solve is written out in pure Python.
 """
@@ -40,10 +42,10 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 DECKS = {"chain": "spring_mass_chain", "bushing": "bushing_mount", "mechanism": "mechanism",
          "rigid": "rigid_body_mount"}
 
-# Spectra's Lanczos iteration stops at a relative residual of 1e-12: eigenvalues (Rayleigh
-# quotients, error of the order of the residual squared) agree to far better than 1e-9, and mode
-# shapes to the residual over the relative gap between eigenvalues (at least 0.1 here), well
-# within 1e-7. The dense path is exact to round-off.
+# Spectra's Lanczos iteration and SLEPc's Krylov-Schur (EPSSetTolerances 1e-12) both stop at a
+# relative residual of 1e-12: eigenvalues (Rayleigh quotients, error of the order of the residual
+# squared) agree to far better than 1e-9, and mode shapes to the residual over the relative gap
+# between eigenvalues (at least 0.1 here), well within 1e-7. The dense path is exact to round-off.
 EIGEN_RTOL = 1e-9
 SHAPE_ATOL = 1e-7
 
@@ -310,13 +312,25 @@ def main():
     deck = DECKS[case]
     command = [clinch, "run", "--quiet", "--out", out, os.path.join(HERE, deck + ".inp")]
     env = dict(os.environ)
-    if sys.argv[4:] == ["--mpi"]:
+    mode = sys.argv[4:]
+    spectra = "by Spectra Lanczos"
+    eigensolver = spectra
+    if mode == ["--petsc"]:
+        command += ["--solver", "petsc"]
+        eigensolver = "by SLEPc Krylov-Schur, shift-and-invert with MUMPS, on 1 rank"
+    if mode[:1] == ["--mpi"]:
         # Open MPI refuses root without these; --oversubscribe lets 2 ranks share fewer cores.
         env.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
         command = ["mpirun", "--oversubscribe", "-n", "2"] + command + ["--solver", "petsc"]
+        eigensolver = spectra if mode[1:] == ["--spectra"] else (
+            "by SLEPc Krylov-Schur, shift-and-invert with MUMPS, on 2 ranks")
     run = subprocess.run(command, capture_output=True, text=True, env=env)
     if run.returncode != 0:
         fail(f"clinch run exited {run.returncode}: {run.stderr}")
+    with open(os.path.join(out, deck + ".log"), encoding="utf-8") as f:
+        named = [line for line in f if "eigenvalues nearest the shift" in line]
+    if not named or not all(eigensolver in line for line in named):
+        fail(f"the log's eigensolver lines {named} do not all say '{eigensolver}'")
     with open(os.path.join(out, deck + ".modes.csv"), newline="") as f:
         rows = list(csv.DictReader(f))
     reference, _ = {"chain": chain_reference, "bushing": bushing_reference,
