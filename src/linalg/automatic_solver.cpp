@@ -23,15 +23,16 @@ AutomaticSolver::AutomaticSolver(bool symmetric, bool positive_definite, bool ta
   active_ = direct_.get();
 }
 
+const char* AutomaticSolver::krylov_method() const { return symmetric_ ? "CG" : "GMRES"; }
+
 bool AutomaticSolver::hand_over_to_petsc(const std::string& cost) {
-  const char* method = symmetric_ ? "CG" : "GMRES";
   std::string unavailable;
   if (petsc_plugin(&unavailable) == nullptr) {
     choice_ = fmt::format("{}, but the PETSc backend is unavailable: {}", cost, unavailable);
     hand_over_on_change_ = false;
     return false;
   }
-  choice_ = fmt::format("{}, so {} with BoomerAMG solves it", cost, method);
+  choice_ = fmt::format("{}, so {} with BoomerAMG solves it", cost, krylov_method());
   other_ = make_petsc_solver(symmetric_, positive_definite_);
   active_ = other_.get();
   direct_.reset();
@@ -77,7 +78,7 @@ LinearStatus AutomaticSolver::analyze(const SparseMatrix& pattern, std::string* 
   flops_ = cholesky != nullptr ? cholesky->predicted_flops() : estimate;
   hand_over_on_change_ = flops_ >= kOnChangeFlops && flops_ >= kOnChangeFlopsPerEntry * entries;
   const char* predictor = cholesky != nullptr ? "CHOLMOD" : "the AMD ordering";
-  const char* method = symmetric_ ? "CG" : "GMRES";
+  const char* method = krylov_method();
   // The step's log line says what the automatic choice will do, and why.
   choice_ = hand_over_on_change_
                 ? fmt::format("{} predicts {:.3g} flops per factorization: {} with BoomerAMG "

@@ -47,6 +47,8 @@ class AutomaticSolver final : public LinearSolver {
   std::string choice() const override { return choice_; }
 
  private:
+  // The Krylov method the PETSc backend runs on this storage: "CG" or "GMRES".
+  const char* krylov_method() const;
   // Makes the PETSc backend the active one when its plugin loads; false (and the reason in
   // choice_) when it does not.
   bool hand_over_to_petsc(const std::string& cost);
