@@ -397,4 +397,18 @@ struct HistoryModel {
   bool field_output_warned = false;  // W0902 once per deck
 };
 
+// The history *OUTPUT requests in force in each step (keywords.md §13, §17): they carry over;
+// OP=NEW drops the earlier ones, OP=REPLACE the one of the same name. FIELD requests are left out.
+std::vector<std::vector<const OutputRequest*>> history_requests_in_force(
+    const HistoryModel& history);
+
+// The step time between the rows of `request` in `step` (keywords.md §17): TIME INTERVAL, or the
+// step's period over NUMBER INTERVAL; none when the request counts increments or the step has no
+// time of its own (a Riks step's time is its arc length, a *FREQUENCY step has none).
+std::optional<double> output_time_interval(const OutputRequest& request, const Step& step);
+
+// The distinct output time intervals of the requests in force in step `s`: its increments end
+// at each multiple of them (keywords.md §17).
+std::vector<double> output_time_intervals(const HistoryModel& history, std::size_t s);
+
 }  // namespace clinch

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <optional>
 
 #include "src/model/output_variables.hpp"
@@ -96,27 +97,20 @@ void HistoryColumns::expand_steps() {
     // connector, variable and component, so no name repeats. Built once and without the name
     // index, which over 10⁶ connectors took longer than the columns themselves.
     index_names_ = false;
-    const std::vector<Request> requests = expand_step({}, {}, true);
+    const std::vector<Request> requests = expand_step(nullptr, {}, {}, true);
     index_names_ = true;
     step_requests_.assign(model_.history.steps.size(), requests);
     add_load_factor_column();
     return;
   }
-  // Requests carry over (keywords.md §13, §17, §18): OP=NEW drops earlier *OUTPUT requests,
-  // REPLACE the one with the same name; the first *NODE PRINT (*EL PRINT) of a step replaces the
-  // earlier ones.
-  std::vector<const OutputRequest*> outputs;
+  // Requests carry over (keywords.md §13, §17, §18): history_requests_in_force for *OUTPUT; the
+  // first *NODE PRINT (*EL PRINT) of a step replaces the earlier ones.
+  const std::vector<std::vector<const OutputRequest*>> in_force =
+      history_requests_in_force(model_.history);
   std::vector<const PrintRequest*> node_prints, element_prints;
-  for (const Step& step : model_.history.steps) {
+  for (std::size_t s = 0; s < model_.history.steps.size(); ++s) {
+    const Step& step = model_.history.steps[s];
     bool new_node_prints = false, new_element_prints = false;
-    for (const OutputRequest& r : step.outputs) {
-      if (r.field) continue;
-      if (r.op == OutputRequest::Op::New) outputs.clear();
-      if (r.op == OutputRequest::Op::Replace) {
-        std::erase_if(outputs, [&](const OutputRequest* o) { return o->name.key == r.name.key; });
-      }
-      outputs.push_back(&r);
-    }
     for (const PrintRequest& p : step.prints) {
       bool& replaced = p.node ? new_node_prints : new_element_prints;
       std::vector<const PrintRequest*>& list = p.node ? node_prints : element_prints;
@@ -126,7 +120,7 @@ void HistoryColumns::expand_steps() {
     }
     std::vector<const PrintRequest*> prints = node_prints;
     prints.insert(prints.end(), element_prints.begin(), element_prints.end());
-    step_requests_.push_back(expand_step(outputs, prints, false));
+    step_requests_.push_back(expand_step(&step, in_force[s], prints, false));
   }
   add_load_factor_column();
 }
@@ -144,12 +138,12 @@ void HistoryColumns::add_load_factor_column() {
   const Term term{Source::Model, 0};
   const std::size_t column_index = column("LPF", c, std::span(&term, 1));
   for (std::vector<Request>& requests : step_requests_) {
-    requests.push_back(Request{1, {column_index}});
+    requests.push_back(Request{1, std::nullopt, {column_index}});
   }
 }
 
 std::vector<HistoryColumns::Request> HistoryColumns::expand_step(
-    const std::vector<const OutputRequest*>& outputs,
+    const Step* step, const std::vector<const OutputRequest*>& outputs,
     const std::vector<const PrintRequest*>& prints, bool default_request) {
   std::vector<Request> requests;
   // `among`: the elements of an *ELEMENT OUTPUT, VARIABLE=PRESELECT block (else every connector).
@@ -233,6 +227,7 @@ std::vector<HistoryColumns::Request> HistoryColumns::expand_step(
   for (const OutputRequest* r : outputs) {
     Request request;
     request.frequency = r->frequency;
+    request.time_interval = output_time_interval(*r, *step);
     if (r->variables != OutputRequest::Variables::Listed) default_columns(request);
     for (const ElementOutputRequest& block : r->elements) {
       if (!block.has_elset) continue;
@@ -420,12 +415,20 @@ void HistoryColumns::node_columns(const OutputIdentifier& id, const std::vector<
 
 void HistoryColumns::begin_step(std::size_t step) { step_ = step; }
 
-bool HistoryColumns::due(int increment, bool last) const {
+// §17: every FREQUENCY-th increment and the step's last, or the increments that end at a multiple
+// of the request's time interval (the time stepper ends increments there) and the step's last.
+bool HistoryColumns::Request::due(int increment, double step_time, bool last) const {
   if (increment == 0) return true;
-  for (const Request& r : step_requests_[step_]) {
-    if (r.frequency > 0 && (last || increment % r.frequency == 0)) return true;
+  if (time_interval) {
+    const double k = std::round(step_time / *time_interval);
+    return last || (k >= 1 && std::abs(step_time - k * *time_interval) <= 1e-9 * step_time);
   }
-  return false;
+  return frequency > 0 && (last || increment % frequency == 0);
+}
+
+bool HistoryColumns::due(int increment, double step_time, bool last) const {
+  return std::any_of(step_requests_[step_].begin(), step_requests_[step_].end(),
+                     [&](const Request& r) { return r.due(increment, step_time, last); });
 }
 
 double HistoryColumns::value(const Column& c, ConnectorSystem& system) {
@@ -481,14 +484,12 @@ double HistoryColumns::value(const Column& c, ConnectorSystem& system) {
   return sum;
 }
 
-void HistoryColumns::evaluate(ConnectorSystem& system, int increment, bool last,
+void HistoryColumns::evaluate(ConnectorSystem& system, int increment, double step_time, bool last,
                               std::vector<double>& values) {
   values.resize(columns_.size(), 0.0);
   output_connector_ = -1;  // the state has changed since the last row
   for (const Request& r : step_requests_[step_]) {
-    const bool request_due =
-        increment == 0 || (r.frequency > 0 && (last || increment % r.frequency == 0));
-    if (!request_due) continue;
+    if (!r.due(increment, step_time, last)) continue;
     for (std::size_t c : r.columns) values[c] = value(columns_[c], system);
   }
 }

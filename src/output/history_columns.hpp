@@ -7,6 +7,7 @@
 
 #include <array>
 #include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -30,11 +31,13 @@ class HistoryColumns {
   const std::vector<std::string>& names() const { return names_; }
   // Makes the requests of step `step` (0-based) current.
   void begin_step(std::size_t step);
-  // True when a row is due at increment `increment` of the current step (`last`: the step's last).
-  bool due(int increment, bool last) const;
+  // True when a row is due at increment `increment` of the current step, which ends at
+  // `step_time` (`last`: the step's last).
+  bool due(int increment, double step_time, bool last) const;
   // Fills `values` (one per column) for the current state; columns of requests that are not due
   // keep their previous value.
-  void evaluate(ConnectorSystem& system, int increment, bool last, std::vector<double>& values);
+  void evaluate(ConnectorSystem& system, int increment, double step_time, bool last,
+                std::vector<double>& values);
 
  private:
   enum class Source : std::uint8_t { Connector, Spring, Node, Model };
@@ -55,7 +58,9 @@ class HistoryColumns {
   };
   struct Request {
     int frequency = 1;
+    std::optional<double> time_interval;  // TIME INTERVAL or NUMBER INTERVAL in step time
     std::vector<std::size_t> columns;
+    bool due(int increment, double step_time, bool last) const;
   };
   // Hash and equality of column indices by their names in names_, and of a name with an index:
   // the set of columns can be searched by name without holding a second copy of every name.
@@ -82,7 +87,7 @@ class HistoryColumns {
   std::size_t column(const std::string& name, Column column, std::span<const Term> terms);
   void expand_steps();
   void add_load_factor_column();
-  std::vector<Request> expand_step(const std::vector<const OutputRequest*>& outputs,
+  std::vector<Request> expand_step(const Step* step, const std::vector<const OutputRequest*>& outputs,
                                    const std::vector<const PrintRequest*>& prints,
                                    bool default_request);
   void element_columns(const OutputIdentifier& id, std::span<const std::int32_t> elements,

@@ -7,8 +7,8 @@ namespace clinch {
 
 void HistoryRecorder::converged(int step, int increment, double step_time, double total_time,
                                 bool last) {
-  if (!columns_.due(increment, last)) return;
-  columns_.evaluate(system_, increment, last, values_);
+  if (!columns_.due(increment, step_time, last)) return;
+  columns_.evaluate(system_, increment, step_time, last, values_);
   table_.write_row(step, increment, step_time, total_time, values_);
 }
 
@@ -18,9 +18,9 @@ bool HistoryRecorder::perturbation(int step, double total_time, double h,
   std::vector<double> plus(values_.size(), std::numeric_limits<double>::quiet_NaN());
   std::vector<double> minus = plus;
   if (!at(h)) return false;
-  columns_.evaluate(system_, 1, true, plus);
+  columns_.evaluate(system_, 1, 0.0, true, plus);
   if (!at(-h)) return false;
-  columns_.evaluate(system_, 1, true, minus);
+  columns_.evaluate(system_, 1, 0.0, true, minus);
   values_.resize(plus.size(), 0.0);
   for (std::size_t i = 0; i < plus.size(); ++i) {
     if (!std::isnan(plus[i]) || !std::isnan(minus[i])) values_[i] = (plus[i] - minus[i]) / (2 * h);

@@ -19,9 +19,10 @@ std::optional<HalfIncrementTolerance> HalfIncrementTolerance::of(
   return std::nullopt;
 }
 
-DynamicStepProcedure::DynamicStepProcedure(const Step& step)
+DynamicStepProcedure::DynamicStepProcedure(const Step& step,
+                                           const std::vector<double>& output_intervals)
     : settings_(StaticTimeSettings::of(step.procedure.value_or(StaticProcedure{}),
-                                       step.max_increments, step.controls.time)),
+                                       step.max_increments, step.controls.time, output_intervals)),
       rules_{settings_.direct && step.procedure && step.procedure->no_stop, settings_.direct},
       operator_(step.dynamic.value_or(DynamicProcedure{})) {
   if (!settings_.direct) tolerance_ = HalfIncrementTolerance::of(operator_);

@@ -29,7 +29,7 @@ struct HalfIncrementTolerance {
 
 class DynamicStepProcedure final : public Procedure {
  public:
-  explicit DynamicStepProcedure(const Step& step);
+  explicit DynamicStepProcedure(const Step& step, const std::vector<double>& output_intervals = {});
 
   double period() const override { return settings_.period; }
   std::unique_ptr<TimeStepper> time_stepper() const override;

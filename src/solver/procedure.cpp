@@ -7,10 +7,11 @@
 
 namespace clinch {
 
-std::unique_ptr<Procedure> procedure_for(const Step& step) {
-  if (step.dynamic) return std::make_unique<DynamicStepProcedure>(step);
+std::unique_ptr<Procedure> procedure_for(const Step& step,
+                                         const std::vector<double>& output_intervals) {
+  if (step.dynamic) return std::make_unique<DynamicStepProcedure>(step, output_intervals);
   if (step.procedure && step.procedure->riks) return std::make_unique<RiksProcedure>(step);
-  return std::make_unique<StaticStepProcedure>(step);
+  return std::make_unique<StaticStepProcedure>(step, output_intervals);
 }
 
 }  // namespace clinch

@@ -9,6 +9,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "src/linalg/linear_solver.hpp"
 #include "src/solver/step_problem.hpp"
@@ -73,7 +74,9 @@ class Procedure {
 };
 
 // The procedure of `step`: *DYNAMIC (dynamic_step_procedure.hpp) or *STATIC (also when the step
-// names none: keywords.md §15).
-std::unique_ptr<Procedure> procedure_for(const Step& step);
+// names none: keywords.md §15); its increments end at the multiples of `output_intervals`
+// (output_time_intervals, history_model.hpp).
+std::unique_ptr<Procedure> procedure_for(const Step& step,
+                                         const std::vector<double>& output_intervals = {});
 
 }  // namespace clinch

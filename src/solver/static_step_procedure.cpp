@@ -2,11 +2,14 @@
 
 namespace clinch {
 
-StaticStepProcedure::StaticStepProcedure(const Step& step)
-    : StaticStepProcedure(step, step.procedure.value_or(StaticProcedure{})) {}
+StaticStepProcedure::StaticStepProcedure(const Step& step,
+                                         const std::vector<double>& output_intervals)
+    : StaticStepProcedure(step, step.procedure.value_or(StaticProcedure{}), output_intervals) {}
 
-StaticStepProcedure::StaticStepProcedure(const Step& step, const StaticProcedure& procedure)
-    : settings_(StaticTimeSettings::of(procedure, step.max_increments, step.controls.time)),
+StaticStepProcedure::StaticStepProcedure(const Step& step, const StaticProcedure& procedure,
+                                         const std::vector<double>& output_intervals)
+    : settings_(StaticTimeSettings::of(procedure, step.max_increments, step.controls.time,
+                                       output_intervals)),
       rules_{procedure.direct && procedure.no_stop, procedure.direct},
       extrapolation_(step.extrapolation) {}
 

@@ -11,7 +11,7 @@ namespace clinch {
 
 class StaticStepProcedure final : public Procedure {
  public:
-  explicit StaticStepProcedure(const Step& step);
+  explicit StaticStepProcedure(const Step& step, const std::vector<double>& output_intervals = {});
 
   double period() const override { return settings_.period; }
   std::unique_ptr<TimeStepper> time_stepper() const override;
@@ -19,7 +19,8 @@ class StaticStepProcedure final : public Procedure {
   void begin_increment(StepProblem& problem, const IncrementTimes& times) const override;
 
  private:
-  StaticStepProcedure(const Step& step, const StaticProcedure& procedure);
+  StaticStepProcedure(const Step& step, const StaticProcedure& procedure,
+                      const std::vector<double>& output_intervals);
 
   StaticTimeSettings settings_;
   IncrementRules rules_;

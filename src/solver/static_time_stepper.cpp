@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace clinch {
 namespace {
@@ -20,7 +22,8 @@ TimeProposal proposal(TimeProposal::Kind kind, double dt, bool cut_back = false,
 }  // namespace
 
 StaticTimeSettings StaticTimeSettings::of(const StaticProcedure& procedure, int max_increments,
-                                          const TimeIncrementationControls& controls) {
+                                          const TimeIncrementationControls& controls,
+                                          const std::vector<double>& output_intervals) {
   return {procedure.period,
           procedure.initial_increment,
           procedure.min_increment,
@@ -28,7 +31,8 @@ StaticTimeSettings StaticTimeSettings::of(const StaticProcedure& procedure, int 
           procedure.direct,
           max_increments,
           controls,
-          std::nullopt};
+          std::nullopt,
+          output_intervals};
 }
 
 StaticTimeStepper::StaticTimeStepper(const StaticTimeSettings& settings)
@@ -38,7 +42,7 @@ TimeProposal StaticTimeStepper::first() { return propose(); }
 
 TimeProposal StaticTimeStepper::next(const AttemptOutcome& outcome) {
   if (outcome.kind != AttemptOutcome::Kind::Converged) return cut_back(outcome);
-  step_time_ += dt_;
+  step_time_ = attempt_end_;
   ++increments_;
   cutbacks_in_a_row_ = 0;
   if (!settings_.direct) grow(outcome);
@@ -50,10 +54,26 @@ TimeProposal StaticTimeStepper::propose() {
   if (increments_ >= settings_.max_increments) {
     return stop(fmt::format("too many increments (INC={})", settings_.max_increments));
   }
-  // The last increment ends exactly at T (keywords.md §15).
-  const double remaining = settings_.period - step_time_;
-  if (dt_ >= remaining * (1.0 - 1e-9)) dt_ = remaining;
-  return proposal(TimeProposal::Kind::Attempt, dt_);
+  // The last increment ends exactly at T (keywords.md §15), and an increment at the output time
+  // it would pass (§17). One that would end within 10⁻⁶ of itself short of them is stretched to
+  // them: the rounding of a sum of fixed increments leaves no sliver.
+  attempt_ = dt_;
+  attempt_end_ = step_time_ + dt_;
+  const double end = std::min(settings_.period, next_output_time());
+  if (end - attempt_end_ <= 1e-6 * dt_) {
+    attempt_ = end - step_time_;
+    attempt_end_ = end;
+  }
+  return proposal(TimeProposal::Kind::Attempt, attempt_);
+}
+
+// The first multiple of an output interval after the step time (infinity: none).
+double StaticTimeStepper::next_output_time() const {
+  double next = std::numeric_limits<double>::infinity();
+  for (const double interval : settings_.output_intervals) {
+    next = std::min(next, (std::floor((step_time_ + 1e-6 * dt_) / interval) + 1) * interval);
+  }
+  return next;
 }
 
 TimeProposal StaticTimeStepper::stop(std::string reason) const {
@@ -105,14 +125,16 @@ TimeProposal StaticTimeStepper::cut_back(const AttemptOutcome& outcome) {
   if (++cutbacks_in_a_row_ > t.ia) {
     return give_up(outcome, fmt::format("too many cutbacks ({}; last: {})", t.ia, outcome.reason));
   }
-  dt_ *= smaller ? outcome.dt_ratio : outcome.kind == Kind::Diverged ? t.df : t.dc;
+  dt_ = attempt_ * (smaller ? outcome.dt_ratio : outcome.kind == Kind::Diverged ? t.df : t.dc);
   easy_in_a_row_ = 0;
   accurate_in_a_row_ = 0;
   if (dt_ < settings_.min_increment * (1.0 - 1e-12)) {
     return give_up(outcome, fmt::format("time increment {} below the minimum {} ({})", dt_,
                                         settings_.min_increment, outcome.reason));
   }
-  return proposal(TimeProposal::Kind::Attempt, dt_, true);
+  TimeProposal retry = propose();
+  retry.cut_back = true;
+  return retry;
 }
 
 }  // namespace clinch

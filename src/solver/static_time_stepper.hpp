@@ -5,11 +5,12 @@
 // cuts back a failed attempt (D_F after divergence, D_C otherwise, or the ratio a law asked for)
 // at most I_A times in a row and never below the minimum, and caps growth where a law asks; DIRECT
 // keeps the increment and stops on the first failure. The last increment ends exactly at the step
-// period.
+// period, and every increment at the output times it would pass.
 #pragma once
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "src/model/history_model.hpp"
 #include "src/solver/time_stepper.hpp"
@@ -36,9 +37,14 @@ struct StaticTimeSettings {
   int max_increments = 100;  // *STEP, INC
   TimeIncrementationControls controls;
   std::optional<AccuracyControls> accuracy;  // none: the step measures no accuracy
+  // Step times between history outputs (TIME INTERVAL, NUMBER INTERVAL; keywords.md §17): an
+  // increment that would pass a multiple of one ends there instead, and the next resumes at the
+  // increment it was shortened from.
+  std::vector<double> output_intervals;
 
   static StaticTimeSettings of(const StaticProcedure& procedure, int max_increments,
-                               const TimeIncrementationControls& controls);
+                               const TimeIncrementationControls& controls,
+                               const std::vector<double>& output_intervals = {});
 };
 
 class StaticTimeStepper final : public TimeStepper {
@@ -58,9 +64,11 @@ class StaticTimeStepper final : public TimeStepper {
   TimeProposal give_up(const AttemptOutcome& outcome, std::string why) const;
   void grow(const AttemptOutcome& outcome);
   TimeProposal cut_back(const AttemptOutcome& outcome);
+  double next_output_time() const;
 
   StaticTimeSettings settings_;
   double dt_ = 0.0, step_time_ = 0.0;
+  double attempt_ = 0.0, attempt_end_ = 0.0;  // the increment proposed and the time it ends at
   int increments_ = 0, cutbacks_ = 0, cutbacks_in_a_row_ = 0, easy_in_a_row_ = 0;
   int accurate_in_a_row_ = 0;  // increments with ε < D_H T since the last cutback
 };

@@ -136,7 +136,8 @@ class Driver {
     const Step& step = model_.history.steps[s];
     if (step.frequency) return run_frequency_step(s);
     if (step.perturbation) return run_static_perturbation_step(s);
-    const std::unique_ptr<Procedure> procedure = procedure_for(step);
+    const std::unique_ptr<Procedure> procedure =
+        procedure_for(step, output_time_intervals(model_.history, s));
     const int step_number = static_cast<int>(s) + 1;
     if (!begin_step(step, *procedure, step_number)) return false;
     newton_problem_ = &procedure->newton_problem(problem_, step_problem_);

@@ -4,6 +4,8 @@
 // covers their rounding.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "src/solver/static_time_stepper.hpp"
 
 namespace clinch {
@@ -214,7 +216,8 @@ TEST(StaticTimeStepper, HitsTheStepEndExactly) {
   EXPECT_EQ(stepper.next(converged(1)).kind, Kind::Done);
   EXPECT_TRUE(stepper.at_end());
   EXPECT_DOUBLE_EQ(stepper.step_time(), 1.0);
-  // An increment within 1e-9 of what remains is stretched to it rather than leave a sliver.
+  // An increment within 1e-6 of itself of what remains is stretched to it rather than leave a
+  // sliver.
   StaticTimeStepper near(settings(1.0 - 1e-10));
   EXPECT_DOUBLE_EQ(near.first().dt, 1.0);
 }
@@ -228,6 +231,54 @@ TEST(StaticTimeStepper, StopsAtTheIncrementLimit) {
   const TimeProposal p = stepper.next(converged(1));
   EXPECT_EQ(p.kind, Kind::Stop);
   EXPECT_EQ(p.reason, "too many increments (INC=2)");
+}
+
+// TIME INTERVAL (keywords.md §17): an increment that would pass an output time ends there; the next
+// resumes at the increment it was shortened from. DIRECT 0.3 with outputs every 0.25 over 1:
+// 0.25 (shortened), 0.25 (to 0.5, shortened), 0.25 (to 0.75), 0.25 (to 1). A cutback of a
+// shortened attempt cuts what was attempted.
+TEST(StaticTimeStepper, EndsIncrementsAtOutputTimes) {
+  StaticTimeSettings s = settings(0.3);
+  s.direct = true;
+  s.output_intervals = {0.25};
+  StaticTimeStepper stepper(s);
+  EXPECT_NEAR(stepper.first().dt, 0.25, 1e-15);
+  EXPECT_NEAR(stepper.next(converged(1)).dt, 0.25, 1e-15);
+  EXPECT_EQ(stepper.step_time(), 0.25);  // exactly the output time
+  EXPECT_NEAR(stepper.next(converged(1)).dt, 0.25, 1e-15);
+  EXPECT_EQ(stepper.step_time(), 0.5);
+  stepper.next(converged(1));
+  EXPECT_EQ(stepper.next(converged(1)).kind, Kind::Done);
+  EXPECT_EQ(stepper.increments(), 4);
+
+  // Automatic: 0.4 is shortened to the output at 0.25; after two easy increments the natural
+  // 0.4 grows to 0.6, still shortened to the next output times. A cutback halves the 0.25 tried.
+  StaticTimeSettings a = settings(0.4, 2.0);
+  a.max_increment = 1.0;
+  a.output_intervals = {0.25, 1.0};
+  StaticTimeStepper automatic(a);
+  EXPECT_NEAR(automatic.first().dt, 0.25, 1e-15);
+  EXPECT_NEAR(automatic.next(converged(1)).dt, 0.25, 1e-15);  // 0.4 would pass 0.5
+  const TimeProposal cut = automatic.next(failed(AttemptOutcome::Kind::NotConverged));
+  EXPECT_TRUE(cut.cut_back);
+  EXPECT_NEAR(cut.dt, 0.125, 1e-15);
+}
+
+// 3·10⁵ fixed increments of 0.001 drift from the exact multiples by rounding (5·10⁻¹⁰ by 277.5):
+// each still ends at the output time it reaches, with no sliver increment after it.
+TEST(StaticTimeStepper, LeavesNoSliverAtOutputTimesAfterLongRuns) {
+  StaticTimeSettings s = settings(0.001, 300.0);
+  s.direct = true;
+  s.max_increments = 1000000;
+  s.output_intervals = {0.5};
+  StaticTimeStepper stepper(s);
+  double smallest = 1.0;
+  for (TimeProposal p = stepper.first(); p.kind == Kind::Attempt; p = stepper.next(converged(1))) {
+    smallest = std::min(smallest, p.dt);
+  }
+  EXPECT_EQ(stepper.increments(), 300000);
+  EXPECT_GT(smallest, 0.001 * (1 - 1e-6));
+  EXPECT_EQ(stepper.step_time(), 300.0);
 }
 
 }  // namespace

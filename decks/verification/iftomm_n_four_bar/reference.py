@@ -26,38 +26,49 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 import golden_lib as g  # noqa: E402
 
 N, L, MASS, GRAV = 2, 1.0, 1.0, 9.81
-INERTIA = ((N + 1) / 3 + N) * MASS * L * L
-WEIGHT = ((N + 1) / 2 + N) * MASS * GRAV * L
 PHI0, RATE0 = math.pi / 2, -1.0
 TIMES = [0.1 * i for i in range(1, 31)]
 
 
-def phi_acceleration(phi):
-    return -WEIGHT * math.cos(phi) / INERTIA
+def inertia(n):
+    return ((n + 1) / 3 + n) * MASS * L * L
 
 
-def integrate(times, h):
-    return g.integrate_second_order(phi_acceleration, PHI0, RATE0, times, h)
+def weight(n):
+    return ((n + 1) / 2 + n) * MASS * GRAV * L
 
 
-def energy(phi, rate):
-    return 0.5 * INERTIA * rate * rate + WEIGHT * math.sin(phi)
+def integrate(times, h, n=N):
+    """(phi, phi') at each of `times` for the mechanism of n windows."""
+    return g.integrate_second_order(lambda phi: -weight(n) * math.cos(phi) / inertia(n),
+                                    PHI0, RATE0, times, h)
 
 
-states = integrate(TIMES, 1e-4)
-# Self-checks of the integration (not of clinch): step halving and the energy integral.
-coarse = integrate(TIMES, 2e-4)
-g.assert_close([s[0] for s in coarse], [s[0] for s in states], 1e-9, "RK4 h = 2e-4 against 1e-4")
-g.assert_close([energy(*s) for s in states], [energy(PHI0, RATE0)] * len(states), 1e-10,
-               "energy integral")
+def energy(phi, rate, n=N):
+    return 0.5 * inertia(n) * rate * rate + weight(n) * math.sin(phi)
 
-rows = [(1, 0, 0.0, 0.0, [0.0, 0.0, -L * RATE0, 0.0])]
-for i, (t, (phi, rate)) in enumerate(zip(TIMES, states), start=1):
-    rows.append((1, i, t, t, [L * math.cos(phi), L * math.sin(phi) - L,
-                              -L * math.sin(phi) * rate, L * math.cos(phi) * rate]))
 
-g.write_golden(__file__, [
-    "iftomm_n_four_bar: IFToMM benchmark A02, N-four-bar mechanism with N = 2 (bars of 1 m,",
-    "1 kg), square windows at t = 0, B0 at 1 m/s along +x, g = 9.81; exact equation of motion of",
-    "the parallelogram branch integrated by RK4, h = 1e-4; rows every 0.1 s over 3 s",
-], ["U1@3", "U2@3", "V1@3", "V2@3"], rows)
+def b0_motion(phi, rate):
+    """U1, U2, V1, V2 of B0 from its initial position (0, L)."""
+    return [L * math.cos(phi), L * math.sin(phi) - L,
+            -L * math.sin(phi) * rate, L * math.cos(phi) * rate]
+
+
+if __name__ == "__main__":  # scripts/iftomm_full_horizon.py reuses integrate() and b0_motion()
+    states = integrate(TIMES, 1e-4)
+    # Self-checks of the integration (not of clinch): step halving and the energy integral.
+    coarse = integrate(TIMES, 2e-4)
+    g.assert_close([s[0] for s in coarse], [s[0] for s in states], 1e-9,
+                   "RK4 h = 2e-4 against 1e-4")
+    g.assert_close([energy(*s) for s in states], [energy(PHI0, RATE0)] * len(states), 1e-10,
+                   "energy integral")
+
+    rows = [(1, 0, 0.0, 0.0, [0.0, 0.0, -L * RATE0, 0.0])]
+    for i, (t, (phi, rate)) in enumerate(zip(TIMES, states), start=1):
+        rows.append((1, i, t, t, b0_motion(phi, rate)))
+
+    g.write_golden(__file__, [
+        "iftomm_n_four_bar: IFToMM benchmark A02, N-four-bar mechanism with N = 2 (bars of 1 m,",
+        "1 kg), square windows at t = 0, B0 at 1 m/s along +x, g = 9.81; exact equation of motion of",
+        "the parallelogram branch integrated by RK4, h = 1e-4; rows every 0.1 s over 3 s",
+    ], ["U1@3", "U2@3", "V1@3", "V2@3"], rows)
