@@ -9,6 +9,7 @@
 #include "src/cli/check_command.hpp"
 #include "src/cli/compare_command.hpp"
 #include "src/cli/fit_command.hpp"
+#include "src/cli/heap_reuse.hpp"
 #include "src/cli/huge_pages.hpp"
 #include "src/cli/keywords_command.hpp"
 #include "src/cli/report_command.hpp"
@@ -298,6 +299,7 @@ int main(int argc, char** argv) {
   // path reports which file could not be written (exit 3, cli-contract.md), instead of SIGXFSZ
   // ending the process without a word.
   std::signal(SIGXFSZ, SIG_IGN);
+  clinch::keep_freed_heap_for_reuse();
   clinch::use_huge_pages(argv);
   const int status = run_command_line(argc, argv);
   // Output that did not reach standard output (a full disk, /dev/full) is an I/O error, whatever

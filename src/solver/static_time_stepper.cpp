@@ -42,7 +42,17 @@ TimeProposal StaticTimeStepper::first() { return propose(); }
 
 TimeProposal StaticTimeStepper::next(const AttemptOutcome& outcome) {
   if (outcome.kind != AttemptOutcome::Kind::Converged) return cut_back(outcome);
-  step_time_ = attempt_end_;
+  if (attempt_stretched_) {
+    step_time_ = attempt_end_;
+    carry_ = 0.0;
+  } else {
+    // Compensated (Kahan) sum: 10⁷ fixed increments stay within rounding of k·Δt, so that the
+    // output times and the period are met without a sliver increment.
+    const double y = attempt_ - carry_;
+    const double t = step_time_ + y;
+    carry_ = (t - step_time_) - y;
+    step_time_ = t;
+  }
   ++increments_;
   cutbacks_in_a_row_ = 0;
   if (!settings_.direct) grow(outcome);
@@ -60,7 +70,8 @@ TimeProposal StaticTimeStepper::propose() {
   attempt_ = dt_;
   attempt_end_ = step_time_ + dt_;
   const double end = std::min(settings_.period, next_output_time());
-  if (end - attempt_end_ <= 1e-6 * dt_) {
+  attempt_stretched_ = end - attempt_end_ <= 1e-6 * dt_;
+  if (attempt_stretched_) {
     attempt_ = end - step_time_;
     attempt_end_ = end;
   }

@@ -69,6 +69,8 @@ class StaticTimeStepper final : public TimeStepper {
   StaticTimeSettings settings_;
   double dt_ = 0.0, step_time_ = 0.0;
   double attempt_ = 0.0, attempt_end_ = 0.0;  // the increment proposed and the time it ends at
+  bool attempt_stretched_ = false;            // it ends exactly at an output time or the period
+  double carry_ = 0.0;                        // the rounding the step time's sum carries
   int increments_ = 0, cutbacks_ = 0, cutbacks_in_a_row_ = 0, easy_in_a_row_ = 0;
   int accurate_in_a_row_ = 0;  // increments with ε < D_H T since the last cutback
 };

@@ -264,21 +264,31 @@ TEST(StaticTimeStepper, EndsIncrementsAtOutputTimes) {
   EXPECT_NEAR(cut.dt, 0.125, 1e-15);
 }
 
-// 3·10⁵ fixed increments of 0.001 drift from the exact multiples by rounding (5·10⁻¹⁰ by 277.5):
-// each still ends at the output time it reaches, with no sliver increment after it.
+// 3·10⁶ fixed increments of 10⁻⁴: a plain sum drifts from the exact multiples by rounding
+// (1.3·10⁻¹⁰ short of 256.5, more than 10⁻⁶ of an increment); each increment still ends at the
+// output time it reaches and at the period, with no sliver increment after it.
 TEST(StaticTimeStepper, LeavesNoSliverAtOutputTimesAfterLongRuns) {
-  StaticTimeSettings s = settings(0.001, 300.0);
+  StaticTimeSettings s = settings(1e-4, 300.0);
   s.direct = true;
-  s.max_increments = 1000000;
+  s.max_increments = 10000000;
   s.output_intervals = {0.5};
   StaticTimeStepper stepper(s);
   double smallest = 1.0;
   for (TimeProposal p = stepper.first(); p.kind == Kind::Attempt; p = stepper.next(converged(1))) {
     smallest = std::min(smallest, p.dt);
   }
-  EXPECT_EQ(stepper.increments(), 300000);
-  EXPECT_GT(smallest, 0.001 * (1 - 1e-6));
+  EXPECT_EQ(stepper.increments(), 3000000);
+  EXPECT_GT(smallest, 1e-4 * (1 - 1e-6));
   EXPECT_EQ(stepper.step_time(), 300.0);
+  // Without output times, 3·10⁶ increments end at the period itself.
+  s.output_intervals.clear();
+  StaticTimeStepper plain(s);
+  smallest = 1.0;
+  for (TimeProposal p = plain.first(); p.kind == Kind::Attempt; p = plain.next(converged(1))) {
+    smallest = std::min(smallest, p.dt);
+  }
+  EXPECT_EQ(plain.increments(), 3000000);
+  EXPECT_GT(smallest, 1e-4 * (1 - 1e-6));
 }
 
 }  // namespace
