@@ -427,6 +427,7 @@ bool HistoryColumns::Request::due(int increment, double step_time, bool last) co
 }
 
 bool HistoryColumns::due(int increment, double step_time, bool last) const {
+  if (increment == 0) return true;  // the initial state, also before the first request
   return std::any_of(step_requests_[step_].begin(), step_requests_[step_].end(),
                      [&](const Request& r) { return r.due(increment, step_time, last); });
 }
