@@ -10,6 +10,7 @@ void check_model(const Model& model, DiagnosticSink& sink) {
   check_dynamic_steps(model, sink);
   check_frequency_steps(model, sink);
   check_perturbation_steps(model, sink);
+  check_output_intervals(model, sink);
 }
 
 }  // namespace clinch

@@ -33,6 +33,8 @@ bool has_dynamic_step(const Model& model);
 void check_frequency_steps(const Model& model, DiagnosticSink& sink);
 // What a *STEP, PERTURBATION cannot have (perturbation_step_checks.cpp).
 void check_perturbation_steps(const Model& model, DiagnosticSink& sink);
+// TIME INTERVAL and NUMBER INTERVAL in force in a Riks step (output_interval_checks.cpp).
+void check_output_intervals(const Model& model, DiagnosticSink& sink);
 
 void check_model(const Model& model, DiagnosticSink& sink);
 
