@@ -3,6 +3,7 @@
 #include <map>
 
 #include "base/fold_name.hpp"
+#include "src/model/element_mass.hpp"
 #include "src/model/inertia_elements.hpp"
 
 namespace clinch {
@@ -40,6 +41,9 @@ std::vector<PointMass> point_masses(const Model& model) {
       if (node >= 0) masses.push_back({e, node, section_mass(section)});
     }
   }
+  for (const ElementMassLump& lump : rigid_body_element_mass(model).lumps) {
+    masses.push_back({lump.element, lump.node, Vector3::Constant(lump.mass)});
+  }
   return masses;
 }
 
@@ -69,6 +73,18 @@ std::vector<NodeInertia> nodal_inertia(const Model& model, const DofMap& dofs) {
       n.mass += m;
       n.rotary += j;
     }
+  }
+  // The mass of rigid bodies' solid and shell elements (element_mass.hpp).
+  const RigidBodyElementMass elements = rigid_body_element_mass(model);
+  for (const ElementMassLump& lump : elements.lumps) {
+    if (dofs.active(lump.node) == 0) continue;
+    by_node[lump.node].node = lump.node;
+    by_node[lump.node].mass += Vector3::Constant(lump.mass);
+  }
+  for (const ReferenceRotaryInertia& r : elements.rotary) {
+    if (dofs.active(r.node) == 0) continue;
+    by_node[r.node].node = r.node;
+    by_node[r.node].rotary += r.inertia;
   }
   std::vector<NodeInertia> inertia;
   inertia.reserve(by_node.size());

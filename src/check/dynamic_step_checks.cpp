@@ -1,7 +1,7 @@
 // What a *DYNAMIC step cannot run yet (docs/dynamics.md "Not yet supported"), refused at the
 // *DYNAMIC line or at the keyword that asks for it, so that `clinch check` never passes a deck
-// that `clinch run` would integrate wrongly: the mass of a rigid body's elements from their
-// density and volume (clinch has no continuum or structural element to compute it; with
+// that `clinch run` would integrate wrongly: the mass of a rigid body's elements of the types
+// whose mass clinch does not compute from their density and volume (element_mass.hpp; with
 // *FREQUENCY too), and the options of *MASS and *ROTARY INERTIA that clinch does not read
 // (mass-proportional damping ALPHA, ORIENTATION, COMPOSITE).
 #include <fmt/format.h>
@@ -14,6 +14,7 @@
 #include "src/check/check.hpp"
 #include "src/model/active_dofs.hpp"
 #include "src/model/element_library.hpp"
+#include "src/model/element_mass.hpp"
 #include "src/model/inertia_elements.hpp"
 #include "src/model/model.hpp"
 
@@ -31,9 +32,11 @@ namespace {
 // Abaqus computes a rigid body's mass from the density and volume of the solid, shell, membrane,
 // beam, truss and planar elements it carries (Abaqus Analysis User's Guide, "Rigid body
 // definition": "the mass and inertia of a rigid body can be calculated based on contributions
-// from its elements"). clinch has no formulation of those elements to compute it: a body that
-// carries them is refused once per *ELEMENT block, since its inertia would be silently short.
-// Rigid elements (R3D4, ...) carry no mass in Abaqus/Standard; MASS and ROTARYI are read.
+// from its elements"). clinch computes it for the linear tetrahedra, hexahedra and shells
+// (element_mass.hpp); a body that carries other elements is refused once per *ELEMENT block,
+// since its inertia would be silently short, and elements of those types whose material has no
+// *DENSITY are noted to carry no mass, as in Abaqus. Rigid elements (R3D4, ...) carry no mass in
+// Abaqus/Standard; MASS and ROTARYI are read.
 void check_rigid_body_element_mass(const Model& model, DiagnosticSink& sink) {
   std::map<std::pair<std::uint32_t, std::uint32_t>, const ElementBlock*> block_at;
   for (const Part& part : model.parts) {
@@ -42,6 +45,9 @@ void check_rigid_body_element_mass(const Model& model, DiagnosticSink& sink) {
     }
   }
   std::set<const ElementBlock*> reported;
+  const std::vector<std::optional<ElementMassData>> mass_data = element_mass_data(model);
+  const bool dynamic = std::any_of(model.history.steps.begin(), model.history.steps.end(),
+                                   [](const Step& s) { return s.dynamic.has_value(); });
   for (const RigidBodyDefinition& body : model.constraints.rigid_bodies) {
     for (const std::int32_t e : body.elements) {
       const Element& element = model.elements[static_cast<std::size_t>(e)];
@@ -50,16 +56,42 @@ void check_rigid_body_element_mass(const Model& model, DiagnosticSink& sink) {
       const ElementBlock& block = *found->second;
       const auto family = static_cast<ElementFamily>(block.family);
       if (is_inertia_only(family) || family == ElementFamily::Rigid ||
-          family == ElementFamily::Analysed || !reported.insert(&block).second) {
+          family == ElementFamily::Analysed) {
         continue;
       }
+      if (element_mass_computed(block)) {
+        const bool massive = mass_data[static_cast<std::size_t>(e)].has_value();
+        if ((massive && !dynamic) || !reported.insert(&block).second) continue;
+        if (!massive) {
+          sink.report(DiagCode::parameter_ignored, block.type_loc,
+                      fmt::format("the {} elements of type {} in a rigid body carry no mass: "
+                                  "they have no section with a material that gives *DENSITY",
+                                  element_family_name(family), block.type));
+          continue;
+        }
+        // The rest of the element inertia sits on the reference node as a rotary inertia that
+        // is not positive by itself: verified in *FREQUENCY steps, where the mass is factored
+        // over the blocks that make it positive, not yet in the time integration (under NLGEOM
+        // the finite-rotation update of a rotary inertia needs a positive one; docs/dynamics.md).
+        Diagnostic& d = sink.report(
+            DiagCode::unsupported_option, block.type_loc,
+            fmt::format("the mass of the {} elements of type {} in a rigid body (from their "
+                        "density and volume) is not supported by clinch in a *DYNAMIC step (it "
+                        "is in *FREQUENCY steps); give the body's mass as MASS and ROTARYI "
+                        "elements on its nodes, and remove these elements",
+                        element_family_name(family), block.type));
+        if (body.keyword_loc.valid()) d.notes.push_back({body.keyword_loc, "*RIGID BODY is here"});
+        continue;
+      }
+      if (!reported.insert(&block).second) continue;
       Diagnostic& d = sink.report(
           DiagCode::unsupported_option, block.type_loc,
           fmt::format("the mass of the {} elements of type {} in a rigid body (from their density "
                       "and volume) is not supported by clinch in a *DYNAMIC or *FREQUENCY step: "
-                      "it has no {} formulation to compute it; give the body's mass as MASS and "
-                      "ROTARYI elements on its nodes, and remove these elements",
-                      element_family_name(family), block.type, element_family_name(family)));
+                      "it computes it for C3D4, C3D8, S3 and S4 and their variants only; give the "
+                      "body's mass as MASS and ROTARYI elements on its nodes, and remove these "
+                      "elements",
+                      element_family_name(family), block.type));
       if (body.keyword_loc.valid()) d.notes.push_back({body.keyword_loc, "*RIGID BODY is here"});
     }
   }

@@ -4,6 +4,7 @@
 #include <array>
 
 #include "src/model/connection_types.hpp"
+#include "src/model/element_mass.hpp"
 #include "src/model/inertia_elements.hpp"
 #include "src/model/model.hpp"
 
@@ -126,6 +127,16 @@ std::vector<DofMask> named_dofs(const Model& model) {
       const std::int32_t node = inertia_node[static_cast<std::size_t>(e)];
       if (node >= 0) named[static_cast<std::size_t>(node)] |= mask;
     }
+  }
+  // The mass of rigid bodies' solid and shell elements: translations where it is lumped,
+  // rotations of the reference node that carries the rest of its inertia (element_mass.hpp).
+  const RigidBodyElementMass element_mass = rigid_body_element_mass(model);
+  for (const ElementMassLump& lump : element_mass.lumps) {
+    named[static_cast<std::size_t>(lump.node)] |= two_d ? kTranslations2D : kTranslations3D;
+  }
+  for (const ReferenceRotaryInertia& r : element_mass.rotary) {
+    named[static_cast<std::size_t>(r.node)] |=
+        two_d ? kAll2D & ~kTranslations2D : kAll3D & ~kTranslations3D;
   }
   for (const BoundaryCondition& bc : model.history.model_boundaries) name(bc.resolved, bc.dofs);
   for (const Step& step : model.history.steps) {

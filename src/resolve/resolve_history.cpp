@@ -21,6 +21,7 @@
 #include "base/suggest.hpp"
 #include "src/model/active_dofs.hpp"
 #include "src/model/connection_types.hpp"
+#include "src/model/element_mass.hpp"
 #include "src/model/model.hpp"
 #include "src/resolve/reference_lookup.hpp"
 #include "src/resolve/resolve.hpp"
@@ -431,7 +432,8 @@ class HistoryValidator {
   }
 
   // docs/dynamics.md "Gravity": the MASS elements of the line's set (of the model when it names
-  // none); a set without one would load nothing, which the analyst should hear of.
+  // none), and the rigid bodies' elements whose mass comes from their density (element_mass.hpp);
+  // a set without one would load nothing, which the analyst should hear of.
   void check_gravity(GravityLoad& load) {
     std::vector<std::int32_t> named;
     if (load.target && !resolve(*load.target, true, named)) return;
@@ -443,6 +445,13 @@ class HistoryValidator {
       for (std::int32_t e : section.elements) {
         if (wanted[static_cast<std::size_t>(e)]) load.resolved.push_back(e);
       }
+    }
+    std::int32_t last = -1;
+    for (const ElementMassLump& lump : rigid_body_element_mass(model_).lumps) {
+      if (lump.element != last && wanted[static_cast<std::size_t>(lump.element)]) {
+        load.resolved.push_back(lump.element);
+      }
+      last = lump.element;
     }
     if (load.resolved.empty()) {
       sink_.report(DiagCode::inactive_dof, load.target ? load.target->loc : load.loc,
