@@ -3,7 +3,6 @@
 #include <map>
 
 #include "base/fold_name.hpp"
-#include "src/model/element_mass.hpp"
 #include "src/model/inertia_elements.hpp"
 
 namespace clinch {
@@ -41,8 +40,8 @@ std::vector<PointMass> point_masses(const Model& model) {
       if (node >= 0) masses.push_back({e, node, section_mass(section)});
     }
   }
-  for (const ElementMassLump& lump : rigid_body_element_mass(model).lumps) {
-    masses.push_back({lump.element, lump.node, Vector3::Constant(lump.mass)});
+  for (const ElementMassPoint& p : model.constraints.element_masses) {
+    masses.push_back({p.element, p.node, Vector3::Constant(p.mass)});
   }
   return masses;
 }
@@ -74,17 +73,20 @@ std::vector<NodeInertia> nodal_inertia(const Model& model, const DofMap& dofs) {
       n.rotary += j;
     }
   }
-  // The mass of rigid bodies' solid and shell elements (element_mass.hpp).
-  const RigidBodyElementMass elements = rigid_body_element_mass(model);
-  for (const ElementMassLump& lump : elements.lumps) {
-    if (dofs.active(lump.node) == 0) continue;
-    by_node[lump.node].node = lump.node;
-    by_node[lump.node].mass += Vector3::Constant(lump.mass);
-  }
-  for (const ReferenceRotaryInertia& r : elements.rotary) {
-    if (dofs.active(r.node) == 0) continue;
-    by_node[r.node].node = r.node;
-    by_node[r.node].rotary += r.inertia;
+  // The mass of rigid bodies' solid and shell elements: at the node added at each one's centre,
+  // its inertia about that centre on the body's reference node (ElementMassPoint).
+  for (const ElementMassPoint& p : model.constraints.element_masses) {
+    if (dofs.active(p.node) != 0) {
+      by_node[p.node].node = p.node;
+      by_node[p.node].mass += Vector3::Constant(p.mass);
+    }
+    if (dofs.active(p.reference) != 0) {
+      Matrix3 j;
+      j << p.rotary[0], p.rotary[3], p.rotary[4], p.rotary[3], p.rotary[1], p.rotary[5],
+          p.rotary[4], p.rotary[5], p.rotary[2];
+      by_node[p.reference].node = p.reference;
+      by_node[p.reference].rotary += j;
+    }
   }
   std::vector<NodeInertia> inertia;
   inertia.reserve(by_node.size());

@@ -88,13 +88,17 @@ void add_finite_rotary_inertia(const std::vector<NodeInertia>& inertia, double d
           }
           continue;
         }
+        // The tangent is over the solved equations (dependent ones eliminated before them).
+        const int solved_row = target.dependents.solved(row);
+        const int solved_column = target.dependents.solved(column);
         double value = k(i, j);
         if (target.symmetric) {
-          if (column < row) continue;  // the upper triangle holds both: their mean
+          if (solved_column < solved_row) continue;  // the upper triangle holds both: their mean
           value = 0.5 * (k(i, j) + k(j, i));
         }
-        const int position = row == column ? target.diagonal[static_cast<std::size_t>(row)]
-                                           : entry_position(*target.tangent, row, column);
+        const int position = row == column
+                                 ? target.diagonal[static_cast<std::size_t>(solved_row)]
+                                 : entry_position(*target.tangent, solved_row, solved_column);
         target.tangent->values[static_cast<std::size_t>(position)] += value;
       }
     }

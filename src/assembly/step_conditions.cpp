@@ -19,26 +19,11 @@ StepConditions::StepConditions(const Model& model, const AnalysisPlan& plan)
   if (std::any_of(steps.begin(), steps.end(), [](const Step& s) { return !s.gravity.empty(); })) {
     point_masses_ = point_masses(model_);
     point_mass_of_element_.assign(model_.elements.size(), -1);
-    // An element's point masses are consecutive (a solid's lumps: one per node).
-    for (std::size_t i = point_masses_.size(); i-- > 0;) {
+    for (std::size_t i = 0; i < point_masses_.size(); ++i) {
       point_mass_of_element_[static_cast<std::size_t>(point_masses_[i].element)] =
           static_cast<std::int32_t>(i);
     }
   }
-}
-
-std::vector<std::int32_t> StepConditions::point_masses_of(std::int32_t element) const {
-  std::vector<std::int32_t> out;
-  std::int32_t p = point_mass_of_element_.empty()
-                       ? -1
-                       : point_mass_of_element_[static_cast<std::size_t>(element)];
-  if (p < 0) return out;
-  for (; static_cast<std::size_t>(p) < point_masses_.size() &&
-         point_masses_[static_cast<std::size_t>(p)].element == element;
-       ++p) {
-    out.push_back(p);
-  }
-  return out;
 }
 
 double StepConditions::Condition::value(
@@ -221,13 +206,12 @@ void StepConditions::begin_step(std::size_t s, ConnectorSystem& system) {
   for (const GravityLoad& g : step.gravity) {
     const ConditionBlock& block = step.blocks[static_cast<std::size_t>(g.block)];
     for (std::int32_t e : g.resolved) {
-      for (const std::int32_t p : point_masses_of(e)) {
-        for (int d = 0; d < 3; ++d) {
-          const std::int64_t key = static_cast<std::int64_t>(p) * 8 + d;
-          gravity_[key] = define(block, step,
-                                 g.magnitude * g.direction[static_cast<std::size_t>(d)],
-                                 load_start(gravity_, key), false);
-        }
+      const std::int32_t p = point_mass_of_element_[static_cast<std::size_t>(e)];
+      if (p < 0) continue;
+      for (int d = 0; d < 3; ++d) {
+        const std::int64_t key = static_cast<std::int64_t>(p) * 8 + d;
+        gravity_[key] = define(block, step, g.magnitude * g.direction[static_cast<std::size_t>(d)],
+                               load_start(gravity_, key), false);
       }
     }
   }
@@ -300,12 +284,12 @@ void StepConditions::begin_perturbation(const Step& step, ConnectorSystem& syste
   }
   for (const GravityLoad& g : step.gravity) {
     for (std::int32_t e : g.resolved) {
-      for (const std::int32_t p : point_masses_of(e)) {
-        for (int d = 0; d < 3; ++d) {
-          const std::int64_t key = static_cast<std::int64_t>(p) * 8 + d;
-          gravity_[key] = perturbed(load_start(base_->gravity, key),
-                                    g.magnitude * g.direction[static_cast<std::size_t>(d)]);
-        }
+      const std::int32_t p = point_mass_of_element_[static_cast<std::size_t>(e)];
+      if (p < 0) continue;
+      for (int d = 0; d < 3; ++d) {
+        const std::int64_t key = static_cast<std::int64_t>(p) * 8 + d;
+        gravity_[key] = perturbed(load_start(base_->gravity, key),
+                                  g.magnitude * g.direction[static_cast<std::size_t>(d)]);
       }
     }
   }

@@ -59,11 +59,9 @@ class StepConditions {
   const AnalysisPlan& plan_;
   std::vector<std::optional<AmplitudeFunction>> amplitudes_;
   Table boundaries_, loads_, motions_, connector_loads_, gravity_;
-  // The point masses gravity loads (nodal_inertia.hpp: MASS elements, the lumps of rigid bodies'
-  // solid and shell elements), and each element's first (its others follow it).
+  // The MASS elements gravity loads (nodal_inertia.hpp), and the point mass of each element.
   std::vector<PointMass> point_masses_;
   std::vector<std::int32_t> point_mass_of_element_;
-  std::vector<std::int32_t> point_masses_of(std::int32_t element) const;
   // Removed prescribed conditions become loads that decay to zero over the step.
   Table released_loads_, released_connector_loads_;
   double period_ = 1.0;

@@ -1,8 +1,8 @@
 // What a *DYNAMIC step cannot run yet (docs/dynamics.md "Not yet supported"), refused at the
 // *DYNAMIC line or at the keyword that asks for it, so that `clinch check` never passes a deck
 // that `clinch run` would integrate wrongly: the mass of a rigid body's elements of the types
-// whose mass clinch does not compute from their density and volume (element_mass.hpp; with
-// *FREQUENCY too), and the options of *MASS and *ROTARY INERTIA that clinch does not read
+// whose mass clinch does not compute from their density and volume (element_mass.hpp; in
+// *FREQUENCY steps too), and the options of *MASS and *ROTARY INERTIA that clinch does not read
 // (mass-proportional damping ALPHA, ORIENTATION, COMPOSITE).
 #include <fmt/format.h>
 
@@ -46,8 +46,6 @@ void check_rigid_body_element_mass(const Model& model, DiagnosticSink& sink) {
   }
   std::set<const ElementBlock*> reported;
   const std::vector<std::optional<ElementMassData>> mass_data = element_mass_data(model);
-  const bool dynamic = std::any_of(model.history.steps.begin(), model.history.steps.end(),
-                                   [](const Step& s) { return s.dynamic.has_value(); });
   for (const RigidBodyDefinition& body : model.constraints.rigid_bodies) {
     for (const std::int32_t e : body.elements) {
       const Element& element = model.elements[static_cast<std::size_t>(e)];
@@ -60,27 +58,11 @@ void check_rigid_body_element_mass(const Model& model, DiagnosticSink& sink) {
         continue;
       }
       if (element_mass_computed(block)) {
-        const bool massive = mass_data[static_cast<std::size_t>(e)].has_value();
-        if ((massive && !dynamic) || !reported.insert(&block).second) continue;
-        if (!massive) {
-          sink.report(DiagCode::parameter_ignored, block.type_loc,
-                      fmt::format("the {} elements of type {} in a rigid body carry no mass: "
-                                  "they have no section with a material that gives *DENSITY",
-                                  element_family_name(family), block.type));
-          continue;
-        }
-        // The rest of the element inertia sits on the reference node as a rotary inertia that
-        // is not positive by itself: verified in *FREQUENCY steps, where the mass is factored
-        // over the blocks that make it positive, not yet in the time integration (under NLGEOM
-        // the finite-rotation update of a rotary inertia needs a positive one; docs/dynamics.md).
-        Diagnostic& d = sink.report(
-            DiagCode::unsupported_option, block.type_loc,
-            fmt::format("the mass of the {} elements of type {} in a rigid body (from their "
-                        "density and volume) is not supported by clinch in a *DYNAMIC step (it "
-                        "is in *FREQUENCY steps); give the body's mass as MASS and ROTARYI "
-                        "elements on its nodes, and remove these elements",
-                        element_family_name(family), block.type));
-        if (body.keyword_loc.valid()) d.notes.push_back({body.keyword_loc, "*RIGID BODY is here"});
+        if (mass_data[static_cast<std::size_t>(e)] || !reported.insert(&block).second) continue;
+        sink.report(DiagCode::parameter_ignored, block.type_loc,
+                    fmt::format("the {} elements of type {} in a rigid body carry no mass: they "
+                                "have no section with a material that gives *DENSITY",
+                                element_family_name(family), block.type));
         continue;
       }
       if (!reported.insert(&block).second) continue;

@@ -342,9 +342,10 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
        {{"EXPLICIT, SUBSPACE, ADIABATIC, NOHAF, STABILIZE and the other explicit or "
          "stabilization parameters",
          "not implemented"},
-        {"the mass of a rigid body's solid, shell, membrane, beam, truss or planar elements",
-         "clinch has no formulation to compute it from their density and volume; give it as "
-         "MASS and ROTARYI elements on the body's nodes"}}},
+        {"the mass of a rigid body's solid, shell, membrane, beam, truss or planar elements "
+         "other than C3D4, C3D8, S3, S4 and their variants",
+         "clinch computes it from the density and volume of those types only; give it as MASS "
+         "and ROTARYI elements on the body's nodes"}}},
       {"ENERGY OUTPUT",
        "Whole-model energies as history columns: ALLKE, ALLIE, ALLFD, ALLVD, ALLSD, ALLWK, "
        "ETOTAL (docs/dynamics.md; ALLSD: docs/stabilization.md).",
@@ -356,7 +357,7 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
       {"FREQUENCY",
        "Natural frequencies and mode shapes about the base state (the converged state of the "
        "steps before; a linear perturbation step that leaves it unchanged): the tangent "
-       "stiffness there with the lumped mass of MASS and ROTARYI elements. The eigenvalue table "
+       "stiffness there with the lumped mass of MASS and ROTARYI elements and of rigid bodies' elements with a density. The eigenvalue table "
        "goes to the log and the modes to <job>.modes.csv (docs/dynamics.md). EIGENSOLVER="
        "LANCZOS, SUBSPACE and AMS are all read as a request for eigenpairs; NORMALIZATION="
        "DISPLACEMENT or MASS.",
@@ -366,9 +367,10 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
        {{"RESIDUAL MODES", "not implemented"},
         {"*BOUNDARY, *CLOAD, *CONNECTOR MOTION and *CONNECTOR LOAD in the step",
          "the step keeps the conditions of its base state"},
-        {"the mass of a rigid body's solid, shell, membrane, beam, truss or planar elements",
-         "clinch has no formulation to compute it from their density and volume; give it as "
-         "MASS and ROTARYI elements on the body's nodes"}},
+        {"the mass of a rigid body's solid, shell, membrane, beam, truss or planar elements "
+         "other than C3D4, C3D8, S3, S4 and their variants",
+         "clinch computes it from the density and volume of those types only; give it as MASS "
+         "and ROTARYI elements on the body's nodes"}},
        {{"ACOUSTIC COUPLING, DAMPING PROJECTION, SIM, BIAS, NUMBER INTERVAL, PROPERTY "
          "EVALUATION, STORAGE, SOLVER",
          "clinch has no acoustics, frequency-dependent properties or solver options to set"},

@@ -4,7 +4,6 @@
 #include <array>
 
 #include "src/model/connection_types.hpp"
-#include "src/model/element_mass.hpp"
 #include "src/model/inertia_elements.hpp"
 #include "src/model/model.hpp"
 
@@ -128,14 +127,11 @@ std::vector<DofMask> named_dofs(const Model& model) {
       if (node >= 0) named[static_cast<std::size_t>(node)] |= mask;
     }
   }
-  // The mass of rigid bodies' solid and shell elements: translations where it is lumped,
-  // rotations of the reference node that carries the rest of its inertia (element_mass.hpp).
-  const RigidBodyElementMass element_mass = rigid_body_element_mass(model);
-  for (const ElementMassLump& lump : element_mass.lumps) {
-    named[static_cast<std::size_t>(lump.node)] |= two_d ? kTranslations2D : kTranslations3D;
-  }
-  for (const ReferenceRotaryInertia& r : element_mass.rotary) {
-    named[static_cast<std::size_t>(r.node)] |=
+  // The mass of rigid bodies' solid and shell elements: the translations of the node at each
+  // one's centre, the rotations of the reference node that carries its inertia (ElementMassPoint).
+  for (const ElementMassPoint& p : model.constraints.element_masses) {
+    named[static_cast<std::size_t>(p.node)] |= two_d ? kTranslations2D : kTranslations3D;
+    named[static_cast<std::size_t>(p.reference)] |=
         two_d ? kAll2D & ~kTranslations2D : kAll3D & ~kTranslations3D;
   }
   for (const BoundaryCondition& bc : model.history.model_boundaries) name(bc.resolved, bc.dofs);

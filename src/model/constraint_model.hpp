@@ -79,6 +79,8 @@ struct ConstraintModel {
   std::vector<NodeFollower> followers;
   std::vector<LinearConstraint> equations;
   std::vector<DistanceLink> links;
+  // The mass of rigid bodies' elements, one point per element (added nodes among `followers`).
+  std::vector<ElementMassPoint> element_masses;
 };
 
 }  // namespace clinch

@@ -2,7 +2,7 @@
 
 #include <array>
 #include <cmath>
-#include <map>
+#include <algorithm>
 #include <span>
 
 #include "src/model/element_library.hpp"
@@ -119,22 +119,28 @@ const std::vector<ShapePoint>* points_of(const ElementBlock& block) {
   return nullptr;
 }
 
-// One element's nodal lumps ∫ρNᵢ dV (added to `lumps`) and its exact second moment ∫ρ x xᵀ dV
-// about the origin.
-Matrix3 integrate_element(const std::vector<ShapePoint>& points, bool shell,
-                          std::span<const Vector3> x, const ElementMassData& data,
-                          std::span<double> lumps) {
+// The mass of one element, and its first and second moments ∫ρ y dV and ∫ρ y yᵀ dV, y = x − x₀
+// measured from its first node (no cancellation in the inertia of an element far from the
+// origin).
+struct Moments {
+  double mass = 0.0;
+  Vector3 first = Vector3::Zero();
   Matrix3 second = Matrix3::Zero();
+};
+
+Moments integrate_element(const std::vector<ShapePoint>& points, bool shell,
+                          std::span<const Vector3> y, const ElementMassData& data) {
+  Moments out;
   for (const ShapePoint& p : points) {
     Vector3 at = Vector3::Zero();
-    for (std::size_t i = 0; i < x.size(); ++i) at += p.n[i] * x[i];
+    for (std::size_t i = 0; i < y.size(); ++i) at += p.n[i] * y[i];
     double measure = 0.0, density = data.density;
     Vector3 normal = Vector3::Zero();
     if (shell) {
       Vector3 d_xi = Vector3::Zero(), d_eta = Vector3::Zero();
-      for (std::size_t i = 0; i < x.size(); ++i) {
-        d_xi += p.dn2[i][0] * x[i];
-        d_eta += p.dn2[i][1] * x[i];
+      for (std::size_t i = 0; i < y.size(); ++i) {
+        d_xi += p.dn2[i][0] * y[i];
+        d_eta += p.dn2[i][1] * y[i];
       }
       const Vector3 cross = d_xi.cross(d_eta);
       measure = cross.norm() * p.weight;
@@ -142,21 +148,22 @@ Matrix3 integrate_element(const std::vector<ShapePoint>& points, bool shell,
       density *= data.thickness;  // per unit area
     } else {
       Matrix3 jacobian = Matrix3::Zero();
-      for (std::size_t i = 0; i < x.size(); ++i) {
-        jacobian += x[i] * Vector3(p.dn3[i][0], p.dn3[i][1], p.dn3[i][2]).transpose();
+      for (std::size_t i = 0; i < y.size(); ++i) {
+        jacobian += y[i] * Vector3(p.dn3[i][0], p.dn3[i][1], p.dn3[i][2]).transpose();
       }
       measure = std::abs(jacobian.determinant()) * p.weight;
     }
     const double mass = density * measure;
-    for (std::size_t i = 0; i < x.size(); ++i) lumps[i] += p.n[i] * mass;
-    second += mass * at * at.transpose();
+    out.mass += mass;
+    out.first += mass * at;
+    out.second += mass * at * at.transpose();
     // Through the thickness t of a shell: ∫ζ² dζ over [−t/2, t/2] = t³/12.
     if (shell) {
-      second += data.density * std::pow(data.thickness, 3) / 12 * measure * normal *
-                normal.transpose();
+      out.second += data.density * std::pow(data.thickness, 3) / 12 * measure * normal *
+                    normal.transpose();
     }
   }
-  return second;
+  return out;
 }
 
 Vector3 position(const Model& model, std::int32_t node) {
@@ -196,8 +203,8 @@ std::vector<std::optional<ElementMassData>> element_mass_data(const Model& model
   return data;
 }
 
-RigidBodyElementMass rigid_body_element_mass(const Model& model) {
-  RigidBodyElementMass out;
+std::vector<ElementMass> rigid_body_element_masses(const Model& model) {
+  std::vector<ElementMass> out;
   if (model.constraints.rigid_bodies.empty()) return out;
   // Each element's block, its place in it and its instance's node offset.
   struct Where {
@@ -217,46 +224,46 @@ RigidBodyElementMass rigid_body_element_mass(const Model& model) {
     }
   }
   const std::vector<std::optional<ElementMassData>> data = element_mass_data(model);
-  for (const RigidBodyDefinition& body : model.constraints.rigid_bodies) {
+  for (std::size_t b = 0; b < model.constraints.rigid_bodies.size(); ++b) {
+    const RigidBodyDefinition& body = model.constraints.rigid_bodies[b];
     if (body.reference < 0) continue;
     // A body written in a part is one definition for every instance: its reference node is the
-    // last instance's, and each instance's elements go to its own reference node.
+    // last instance's, and each instance's elements go to its own copy of it. A body written
+    // in the assembly has one reference node for all its elements.
     const std::int32_t last_offset =
-        model.instances[static_cast<std::size_t>(
-                            model.nodes[static_cast<std::size_t>(body.reference)].instance)]
-            .node_offset;
-    std::map<std::int32_t, Matrix3> rest_by_reference;
+        body.part == 0 ? 0
+                       : model.instances[static_cast<std::size_t>(
+                                             model.nodes[static_cast<std::size_t>(body.reference)]
+                                                 .instance)]
+                             .node_offset;
     for (const std::int32_t e : body.elements) {
       const Where& w = where[static_cast<std::size_t>(e)];
       const auto& d = data[static_cast<std::size_t>(e)];
       if (!w.block || !d || d->density == 0) continue;
       const std::span<const std::int32_t> local = w.block->element_nodes(w.k);
-      std::array<Vector3, 8> x;
-      std::array<std::int32_t, 8> nodes{};
-      bool grounded = false;
+      if (std::find(local.begin(), local.end(), kGround) != local.end()) continue;
+      const Vector3 origin = position(model, local[0] + w.node_offset);
+      std::array<Vector3, 8> y;
       for (std::size_t i = 0; i < local.size(); ++i) {
-        grounded = grounded || local[i] == kGround;
-        nodes[i] = local[i] + w.node_offset;
-        if (!grounded) x[i] = position(model, nodes[i]);
+        y[i] = position(model, local[i] + w.node_offset) - origin;
       }
-      if (grounded) continue;
-      std::array<double, 8> lumps{};
       const bool shell = static_cast<ElementFamily>(w.block->family) == ElementFamily::Shell;
-      const Matrix3 exact = integrate_element(*points_of(*w.block), shell,
-                                              std::span(x.data(), local.size()), *d,
-                                              std::span(lumps.data(), local.size()));
-      Matrix3 lumped = Matrix3::Zero();
-      for (std::size_t i = 0; i < local.size(); ++i) {
-        out.lumps.push_back({e, nodes[i], lumps[i]});
-        lumped += lumps[i] * x[i] * x[i].transpose();
-      }
-      const std::int32_t reference = body.reference - last_offset + w.node_offset;
-      auto [it, inserted] = rest_by_reference.try_emplace(reference, Matrix3::Zero());
-      it->second += exact - lumped;
-    }
-    // The second moment the lumps miss, as an inertia tensor: I = tr(S) 1 − S.
-    for (const auto& [reference, rest] : rest_by_reference) {
-      out.rotary.push_back({reference, rest.trace() * Matrix3::Identity() - rest});
+      const Moments m =
+          integrate_element(*points_of(*w.block), shell, std::span(y.data(), local.size()), *d);
+      if (m.mass <= 0) continue;
+      ElementMass element;
+      element.element = e;
+      element.body = static_cast<std::int32_t>(b);
+      element.reference =
+          body.part == 0 ? body.reference : body.reference - last_offset + w.node_offset;
+      element.mass = m.mass;
+      const Vector3 offset = m.first / m.mass;
+      element.centre = origin + offset;
+      // About the centre: S = ∫ρ y yᵀ dV − m c cᵀ (c the centre from the first node); the
+      // inertia tensor I = tr(S) 1 − S.
+      const Matrix3 spread = m.second - m.mass * offset * offset.transpose();
+      element.rotary = spread.trace() * Matrix3::Identity() - spread;
+      out.push_back(element);
     }
   }
   return out;

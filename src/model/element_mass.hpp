@@ -1,10 +1,11 @@
 // The mass of the solid and shell elements that a rigid body carries, from their density and
 // volume (docs/dynamics.md "Inertia on constrained nodes"). Abaqus computes a rigid body's mass
-// and inertia from its elements; clinch lumps each element's mass on its nodes as ∫ρNᵢ dV, which
-// keeps the mass and its first moment exact, and gives the rest of the second moment (what the
-// lumps miss of ∫ρ x xᵀ dV) to the body's reference node as a rotary inertia, so that the body's
-// mass, centre and inertia tensor are those of its elements. A shell's mass is ρ t per unit area,
-// its second moment with the thickness term ρ t³/12 n nᵀ.
+// and inertia from its elements; clinch integrates each element's mass, centre of mass and
+// inertia about that centre exactly (Gauss rules of sufficient degree). The resolve stage puts
+// the mass at a node of its own at the centre and the inertia on the body's reference node
+// (ElementMassPoint): lumping the mass on the element's corner nodes instead would keep the
+// mass and centre but overstate the inertia, with a rest that is not positive. A shell's mass
+// is ρ t per unit area, its inertia with the thickness term ρ t³/12 n nᵀ.
 #pragma once
 
 #include <cstdint>
@@ -18,19 +19,14 @@ namespace clinch {
 struct Model;
 struct ElementBlock;
 
-struct ElementMassLump {
-  std::int32_t element = 0, node = 0;  // global indices
+// One element's mass, its centre of mass and its inertia tensor about that centre (global
+// axes), and the reference node of the rigid body that carries it.
+struct ElementMass {
+  std::int32_t element = 0, reference = 0;  // global indices
+  std::int32_t body = 0;                     // into ConstraintModel::rigid_bodies
   double mass = 0.0;
-};
-
-struct ReferenceRotaryInertia {
-  std::int32_t node = 0;             // the rigid body's reference node
-  Matrix3 inertia = Matrix3::Zero();  // global axes; a correction, not positive by itself
-};
-
-struct RigidBodyElementMass {
-  std::vector<ElementMassLump> lumps;
-  std::vector<ReferenceRotaryInertia> rotary;
+  Vector3 centre = Vector3::Zero();
+  Matrix3 rotary = Matrix3::Zero();  // positive semi-definite
 };
 
 // Whether clinch computes the mass of the elements of `block`: the linear tetrahedra and
@@ -46,8 +42,8 @@ struct ElementMassData {
 };
 std::vector<std::optional<ElementMassData>> element_mass_data(const Model& model);
 
-// The element masses of every rigid body's solid and shell elements of the computed types that
-// have a density (the others are refused or warned about: src/check/dynamic_step_checks.cpp).
-RigidBodyElementMass rigid_body_element_mass(const Model& model);
+// The mass of every rigid body's solid and shell elements of the computed types that have a
+// density (the others are refused or warned about: src/check/dynamic_step_checks.cpp).
+std::vector<ElementMass> rigid_body_element_masses(const Model& model);
 
 }  // namespace clinch

@@ -4,6 +4,7 @@
 // constraint_model.hpp and fills the fields marked "resolved".
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -33,6 +34,19 @@ struct RigidBodyDefinition {
   std::int32_t rotation_node = -1;
   std::vector<std::int32_t> elements;
   std::vector<std::int32_t> tie_nodes, pin_nodes;  // sorted, disjoint, without the reference
+};
+
+// The mass of one of a rigid body's solid or shell elements from its density and volume
+// (src/model/element_mass.hpp): a point mass at a node that the resolve stage adds at the
+// element's centre of mass and pins to the body's reference node, and the element's rotary
+// inertia about that centre on the reference node. Both are exact and positive, so the body's
+// mass, centre and inertia tensor are those of its elements in every procedure.
+struct ElementMassPoint {
+  std::int32_t element = 0;
+  std::int32_t node = 0;       // the added node at the centre of mass (global index)
+  std::int32_t reference = 0;  // the body's reference node (global index)
+  double mass = 0.0;
+  std::array<double, 6> rotary{};  // about the centre, global axes: I11, I22, I33, I12, I13, I23
 };
 
 // One DOF range of a coupling: first…last (1…6).

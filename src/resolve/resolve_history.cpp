@@ -21,7 +21,6 @@
 #include "base/suggest.hpp"
 #include "src/model/active_dofs.hpp"
 #include "src/model/connection_types.hpp"
-#include "src/model/element_mass.hpp"
 #include "src/model/model.hpp"
 #include "src/resolve/reference_lookup.hpp"
 #include "src/resolve/resolve.hpp"
@@ -432,7 +431,7 @@ class HistoryValidator {
   }
 
   // docs/dynamics.md "Gravity": the MASS elements of the line's set (of the model when it names
-  // none), and the rigid bodies' elements whose mass comes from their density (element_mass.hpp);
+  // none), and the rigid bodies' elements whose mass comes from their density (ElementMassPoint);
   // a set without one would load nothing, which the analyst should hear of.
   void check_gravity(GravityLoad& load) {
     std::vector<std::int32_t> named;
@@ -446,12 +445,8 @@ class HistoryValidator {
         if (wanted[static_cast<std::size_t>(e)]) load.resolved.push_back(e);
       }
     }
-    std::int32_t last = -1;
-    for (const ElementMassLump& lump : rigid_body_element_mass(model_).lumps) {
-      if (lump.element != last && wanted[static_cast<std::size_t>(lump.element)]) {
-        load.resolved.push_back(lump.element);
-      }
-      last = lump.element;
+    for (const ElementMassPoint& p : model_.constraints.element_masses) {
+      if (wanted[static_cast<std::size_t>(p.element)]) load.resolved.push_back(p.element);
     }
     if (load.resolved.empty()) {
       sink_.report(DiagCode::inactive_dof, load.target ? load.target->loc : load.loc,
