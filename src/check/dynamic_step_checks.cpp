@@ -32,8 +32,7 @@ namespace {
 // Abaqus computes a rigid body's mass from the density and volume of the solid, shell, membrane,
 // beam, truss and planar elements it carries (Abaqus Analysis User's Guide, "Rigid body
 // definition": "the mass and inertia of a rigid body can be calculated based on contributions
-// from its elements"). clinch computes it for the linear tetrahedra, hexahedra and shells
-// (element_mass.hpp); a body that carries other elements is refused once per *ELEMENT block,
+// from its elements"). clinch computes it for the shapes of element_mass.hpp; a body that carries other elements is refused once per *ELEMENT block,
 // since its inertia would be silently short, and elements of those types whose material has no
 // *DENSITY are noted to carry no mass, as in Abaqus. Rigid elements (R3D4, ...) carry no mass in
 // Abaqus/Standard; MASS and ROTARYI are read.
@@ -70,9 +69,10 @@ void check_rigid_body_element_mass(const Model& model, DiagnosticSink& sink) {
           DiagCode::unsupported_option, block.type_loc,
           fmt::format("the mass of the {} elements of type {} in a rigid body (from their density "
                       "and volume) is not supported by clinch in a *DYNAMIC or *FREQUENCY step: "
-                      "it computes it for C3D4, C3D8, S3 and S4 and their variants only; give the "
-                      "body's mass as MASS and ROTARYI elements on its nodes, and remove these "
-                      "elements",
+                      "it computes it for solids, shells, membranes, plane stress and plane strain "
+                      "elements and trusses, not for beams, pyramids or axisymmetric elements; "
+                      "give the body's mass as MASS and ROTARYI elements on its nodes, and remove "
+                      "these elements",
                       element_family_name(family), block.type));
       if (body.keyword_loc.valid()) d.notes.push_back({body.keyword_loc, "*RIGID BODY is here"});
     }

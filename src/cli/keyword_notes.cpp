@@ -342,10 +342,10 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
        {{"EXPLICIT, SUBSPACE, ADIABATIC, NOHAF, STABILIZE and the other explicit or "
          "stabilization parameters",
          "not implemented"},
-        {"the mass of a rigid body's solid, shell, membrane, beam, truss or planar elements "
-         "other than C3D4, C3D8, S3, S4 and their variants",
-         "clinch computes it from the density and volume of those types only; give it as MASS "
-         "and ROTARYI elements on the body's nodes"}}},
+        {"the mass of a rigid body's beams, pyramids (C3D5) and axisymmetric elements",
+         "clinch computes it from the density and volume of solids, shells, membranes, plane "
+         "stress and plane strain elements and trusses only; give it as MASS and ROTARYI "
+         "elements on the body's nodes"}}},
       {"ENERGY OUTPUT",
        "Whole-model energies as history columns: ALLKE, ALLIE, ALLFD, ALLVD, ALLSD, ALLWK, "
        "ETOTAL (docs/dynamics.md; ALLSD: docs/stabilization.md).",
@@ -367,10 +367,10 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
        {{"RESIDUAL MODES", "not implemented"},
         {"*BOUNDARY, *CLOAD, *CONNECTOR MOTION and *CONNECTOR LOAD in the step",
          "the step keeps the conditions of its base state"},
-        {"the mass of a rigid body's solid, shell, membrane, beam, truss or planar elements "
-         "other than C3D4, C3D8, S3, S4 and their variants",
-         "clinch computes it from the density and volume of those types only; give it as MASS "
-         "and ROTARYI elements on the body's nodes"}},
+        {"the mass of a rigid body's beams, pyramids (C3D5) and axisymmetric elements",
+         "clinch computes it from the density and volume of solids, shells, membranes, plane "
+         "stress and plane strain elements and trusses only; give it as MASS and ROTARYI "
+         "elements on the body's nodes"}},
        {{"ACOUSTIC COUPLING, DAMPING PROJECTION, SIM, BIAS, NUMBER INTERVAL, PROPERTY "
          "EVALUATION, STORAGE, SOLVER",
          "clinch has no acoustics, frequency-dependent properties or solver options to set"},

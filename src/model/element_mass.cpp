@@ -1,9 +1,8 @@
 #include "src/model/element_mass.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
-#include <algorithm>
-#include <span>
 
 #include "src/model/element_library.hpp"
 #include "src/model/model.hpp"
@@ -11,35 +10,258 @@
 namespace clinch {
 namespace {
 
-// One quadrature point of an element: its shape functions and their natural derivatives.
-struct ShapePoint {
-  std::array<double, 8> n{};
-  std::array<std::array<double, 2>, 8> dn2{};  // shells: d/dξ, d/dη
-  std::array<std::array<double, 3>, 8> dn3{};  // solids: d/dξ, d/dη, d/dζ
+// A value with its derivatives along the (up to three) natural coordinates: the shape functions
+// are polynomials, so their derivatives come out exact from sums and products.
+struct Dual {
+  double v = 0.0;
+  std::array<double, 3> d{};
+};
+Dual operator+(Dual a, const Dual& b) {
+  a.v += b.v;
+  for (int k = 0; k < 3; ++k) a.d[k] += b.d[k];
+  return a;
+}
+Dual operator-(Dual a, const Dual& b) {
+  a.v -= b.v;
+  for (int k = 0; k < 3; ++k) a.d[k] -= b.d[k];
+  return a;
+}
+Dual operator*(const Dual& a, const Dual& b) {
+  Dual r{a.v * b.v, {}};
+  for (int k = 0; k < 3; ++k) r.d[k] = a.d[k] * b.v + a.v * b.d[k];
+  return r;
+}
+Dual operator*(double s, Dual a) {
+  a.v *= s;
+  for (int k = 0; k < 3; ++k) a.d[k] *= s;
+  return a;
+}
+Dual operator+(double s, Dual a) {
+  a.v += s;
+  return a;
+}
+Dual operator-(double s, const Dual& a) { return s + (-1.0) * a; }
+Dual operator+(const Dual& a, double s) { return s + a; }
+Dual operator-(const Dual& a, double s) { return (-s) + a; }
+Dual coordinate(double value, int k) {
+  Dual c{value, {}};
+  c.d[static_cast<std::size_t>(k)] = 1.0;
+  return c;
+}
+
+constexpr int kMaxNodes = 20;
+using Shapes = std::array<Dual, kMaxNodes>;
+
+// One-dimensional quadratic Lagrange functions at −1, 0, 1.
+std::array<Dual, 3> quadratic(const Dual& s) {
+  return {0.5 * (s * (s - 1.0)), 1.0 - s * s, 0.5 * (s * (s + 1.0))};
+}
+
+// Corners of the quadrilateral and the hexahedron (Abaqus order).
+constexpr int kQuadCorner[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+constexpr int kHexCorner[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                                  {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+// Midside nodes of the quadratic elements: the corners (0-based) each lies between.
+constexpr int kTriEdge[3][2] = {{0, 1}, {1, 2}, {2, 0}};
+constexpr int kTetEdge[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
+constexpr int kHexEdge[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
+                                 {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+
+// The shape functions at natural coordinates ξ (the reference domains: [−1, 1] per direction
+// for lines, quadrilaterals and hexahedra and for the wedge's ζ; the unit simplex for
+// triangles, tetrahedra and the wedge's ξ, η).
+Shapes shape_functions(ElementShape shape, const std::array<Dual, 3>& xi) {
+  Shapes n{};
+  const Dual &a = xi[0], &b = xi[1], &c = xi[2];
+  switch (shape) {
+    case ElementShape::Line2:
+      n[0] = 0.5 * (1.0 - a);
+      n[1] = 0.5 * (1.0 + a);
+      break;
+    case ElementShape::Line3: {
+      const auto l = quadratic(a);
+      n[0] = l[0];
+      n[1] = l[1];
+      n[2] = l[2];
+      break;
+    }
+    case ElementShape::Tri3:
+    case ElementShape::Tri6: {
+      const std::array<Dual, 3> l{1.0 - a - b, a, b};
+      if (shape == ElementShape::Tri3) {
+        for (int i = 0; i < 3; ++i) n[i] = l[i];
+        break;
+      }
+      for (int i = 0; i < 3; ++i) n[i] = l[i] * (2.0 * l[i] - 1.0);
+      for (int e = 0; e < 3; ++e) n[3 + e] = 4.0 * (l[kTriEdge[e][0]] * l[kTriEdge[e][1]]);
+      break;
+    }
+    case ElementShape::Quad4:
+      for (int i = 0; i < 4; ++i) {
+        n[i] = 0.25 * ((1.0 + kQuadCorner[i][0] * a) * (1.0 + kQuadCorner[i][1] * b));
+      }
+      break;
+    case ElementShape::Quad8:
+      for (int i = 0; i < 4; ++i) {
+        const double p = kQuadCorner[i][0], q = kQuadCorner[i][1];
+        n[i] = 0.25 * ((1.0 + p * a) * (1.0 + q * b) * (p * a + q * b - 1.0));
+      }
+      n[4] = 0.5 * ((1.0 - a * a) * (1.0 - b));
+      n[5] = 0.5 * ((1.0 + a) * (1.0 - b * b));
+      n[6] = 0.5 * ((1.0 - a * a) * (1.0 + b));
+      n[7] = 0.5 * ((1.0 - a) * (1.0 - b * b));
+      break;
+    case ElementShape::Quad9: {
+      const auto la = quadratic(a), lb = quadratic(b);
+      // Corner k at index 0 or 2 of each direction, midsides and centre at 1.
+      constexpr int at[9][2] = {{0, 0}, {2, 0}, {2, 2}, {0, 2}, {1, 0},
+                                {2, 1}, {1, 2}, {0, 1}, {1, 1}};
+      for (int i = 0; i < 9; ++i) n[i] = la[at[i][0]] * lb[at[i][1]];
+      break;
+    }
+    case ElementShape::Tet4:
+    case ElementShape::Tet10: {
+      const std::array<Dual, 4> l{1.0 - a - b - c, a, b, c};
+      if (shape == ElementShape::Tet4) {
+        for (int i = 0; i < 4; ++i) n[i] = l[i];
+        break;
+      }
+      for (int i = 0; i < 4; ++i) n[i] = l[i] * (2.0 * l[i] - 1.0);
+      for (int e = 0; e < 6; ++e) n[4 + e] = 4.0 * (l[kTetEdge[e][0]] * l[kTetEdge[e][1]]);
+      break;
+    }
+    case ElementShape::Wedge6:
+    case ElementShape::Wedge15: {
+      const std::array<Dual, 3> l{1.0 - a - b, a, b};
+      if (shape == ElementShape::Wedge6) {
+        for (int i = 0; i < 3; ++i) {
+          n[i] = 0.5 * (l[i] * (1.0 - c));
+          n[3 + i] = 0.5 * (l[i] * (1.0 + c));
+        }
+        break;
+      }
+      const Dual bubble = 1.0 - c * c;
+      for (int i = 0; i < 6; ++i) {
+        const double s = i < 3 ? -1.0 : 1.0;
+        const Dual& li = l[i % 3];
+        n[i] = 0.5 * (li * ((2.0 * li - 1.0) * (1.0 + s * c) - bubble));
+      }
+      for (int e = 0; e < 6; ++e) {
+        const double s = e < 3 ? -1.0 : 1.0;
+        n[6 + e] = 2.0 * (l[kTriEdge[e % 3][0]] * l[kTriEdge[e % 3][1]] * (1.0 + s * c));
+      }
+      for (int i = 0; i < 3; ++i) n[12 + i] = l[i] * bubble;
+      break;
+    }
+    case ElementShape::Hex8:
+    case ElementShape::Hex20:
+      for (int i = 0; i < 8; ++i) {
+        const double p = kHexCorner[i][0], q = kHexCorner[i][1], r = kHexCorner[i][2];
+        n[i] = 0.125 * ((1.0 + p * a) * (1.0 + q * b) * (1.0 + r * c));
+        if (shape == ElementShape::Hex20) {
+          n[i] = n[i] * (p * a + q * b + r * c - 2.0);
+        }
+      }
+      if (shape == ElementShape::Hex8) break;
+      for (int e = 0; e < 12; ++e) {
+        // The edge's middle: the coordinate along it is 0, the others those of its corners.
+        const int* p = kHexCorner[kHexEdge[e][0]];
+        const int* q = kHexCorner[kHexEdge[e][1]];
+        Dual f{0.25, {}};
+        for (int k = 0; k < 3; ++k) {
+          f = f * (p[k] == q[k] ? 1.0 + p[k] * xi[static_cast<std::size_t>(k)]
+                                : 1.0 - xi[static_cast<std::size_t>(k)] *
+                                            xi[static_cast<std::size_t>(k)]);
+        }
+        n[8 + e] = f;
+      }
+      break;
+  }
+  return n;
+}
+
+int node_count(ElementShape shape) {
+  constexpr int counts[] = {2, 3, 3, 6, 4, 8, 9, 4, 10, 6, 15, 8, 20};
+  return counts[static_cast<int>(shape)];
+}
+
+int dimension(ElementShape shape) {
+  if (shape <= ElementShape::Line3) return 1;
+  return shape <= ElementShape::Quad9 ? 2 : 3;
+}
+
+bool quadratic_shape(ElementShape shape) {
+  switch (shape) {
+    case ElementShape::Line3: case ElementShape::Tri6: case ElementShape::Quad8:
+    case ElementShape::Quad9: case ElementShape::Tet10: case ElementShape::Wedge15:
+    case ElementShape::Hex20:
+      return true;
+    default:
+      return false;
+  }
+}
+
+// Gauss–Legendre points and weights on [−1, 1]: 3 points are exact to degree 5, enough for the
+// second moment of the linear shapes (degree 4 per direction with the simplices' collapse); 5
+// points, exact to degree 9, for the quadratic ones.
+struct Rule1D {
+  std::vector<double> x, w;
+};
+const Rule1D& gauss(bool fine) {
+  static const Rule1D three{{-0.7745966692414834, 0.0, 0.7745966692414834},
+                            {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0}};
+  static const Rule1D five{
+      {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831, 0.9061798459386640},
+      {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
+       0.2369268850561891}};
+  return fine ? five : three;
+}
+
+// The quadrature points of a reference domain with their weights. Simplices are collapsed
+// squares and cubes (Duffy): ξ = u, η = v(1 − u), ζ = w(1 − u)(1 − v) with u, v, w ∈ [0, 1],
+// whose Jacobian (1 − u) or (1 − u)²(1 − v) joins the weight.
+struct QuadraturePoint {
+  std::array<double, 3> xi{};
   double weight = 0.0;
 };
-
-constexpr double kGauss3[3] = {-0.7745966692414834, 0.0, 0.7745966692414834};  // √(3/5)
-constexpr double kGaussWeight3[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
-
-// The trilinear hexahedron (C3D8 node order), 3×3×3 Gauss points: exact for ∫ρ x xᵀ dV, whose
-// integrand is of degree 4 in each natural coordinate.
-std::vector<ShapePoint> hexahedron_points() {
-  constexpr int corner[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
-                                {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
-  std::vector<ShapePoint> points;
-  for (int a = 0; a < 3; ++a) {
-    for (int b = 0; b < 3; ++b) {
-      for (int c = 0; c < 3; ++c) {
-        ShapePoint p;
-        const double xi[3] = {kGauss3[a], kGauss3[b], kGauss3[c]};
-        p.weight = kGaussWeight3[a] * kGaussWeight3[b] * kGaussWeight3[c];
-        for (int i = 0; i < 8; ++i) {
-          const double f[3] = {1 + corner[i][0] * xi[0], 1 + corner[i][1] * xi[1],
-                               1 + corner[i][2] * xi[2]};
-          p.n[i] = f[0] * f[1] * f[2] / 8;
-          p.dn3[i] = {corner[i][0] * f[1] * f[2] / 8, corner[i][1] * f[0] * f[2] / 8,
-                      corner[i][2] * f[0] * f[1] / 8};
+std::vector<QuadraturePoint> quadrature(ElementShape shape) {
+  const Rule1D& g = gauss(quadratic_shape(shape));
+  const std::size_t m = g.x.size();
+  std::vector<QuadraturePoint> points;
+  auto unit = [&](std::size_t i) { return 0.5 * (g.x[i] + 1.0); };  // on [0, 1], weight w/2
+  for (std::size_t i = 0; i < m; ++i) {
+    for (std::size_t j = 0; j < m; ++j) {
+      for (std::size_t k = 0; k < m; ++k) {
+        QuadraturePoint p;
+        switch (shape) {
+          case ElementShape::Line2: case ElementShape::Line3:
+            if (j || k) continue;
+            p = {{g.x[i], 0, 0}, g.w[i]};
+            break;
+          case ElementShape::Quad4: case ElementShape::Quad8: case ElementShape::Quad9:
+            if (k) continue;
+            p = {{g.x[i], g.x[j], 0}, g.w[i] * g.w[j]};
+            break;
+          case ElementShape::Hex8: case ElementShape::Hex20:
+            p = {{g.x[i], g.x[j], g.x[k]}, g.w[i] * g.w[j] * g.w[k]};
+            break;
+          case ElementShape::Tri3: case ElementShape::Tri6: {
+            if (k) continue;
+            const double u = unit(i), v = unit(j);
+            p = {{u, v * (1 - u), 0}, 0.25 * g.w[i] * g.w[j] * (1 - u)};
+            break;
+          }
+          case ElementShape::Wedge6: case ElementShape::Wedge15: {
+            const double u = unit(i), v = unit(j);
+            p = {{u, v * (1 - u), g.x[k]}, 0.25 * g.w[i] * g.w[j] * (1 - u) * g.w[k]};
+            break;
+          }
+          case ElementShape::Tet4: case ElementShape::Tet10: {
+            const double u = unit(i), v = unit(j), w = unit(k);
+            p = {{u, v * (1 - u), w * (1 - u) * (1 - v)},
+                 0.125 * g.w[i] * g.w[j] * g.w[k] * (1 - u) * (1 - u) * (1 - v)};
+            break;
+          }
         }
         points.push_back(p);
       }
@@ -48,122 +270,13 @@ std::vector<ShapePoint> hexahedron_points() {
   return points;
 }
 
-// The linear tetrahedron (C3D4), the 4-point rule exact to degree 2.
-std::vector<ShapePoint> tetrahedron_points() {
-  constexpr double a = 0.5854101966249685, b = 0.1381966011250105;
-  std::vector<ShapePoint> points;
-  for (int q = 0; q < 4; ++q) {
-    double xi[3] = {b, b, b};
-    if (q > 0) xi[q - 1] = a;
-    ShapePoint p;
-    p.weight = 1.0 / 24.0;
-    p.n[0] = 1 - xi[0] - xi[1] - xi[2];
-    p.dn3[0] = {-1, -1, -1};
-    for (int i = 1; i < 4; ++i) {
-      p.n[i] = xi[i - 1];
-      p.dn3[i] = {0, 0, 0};
-      p.dn3[i][static_cast<std::size_t>(i - 1)] = 1;
-    }
-    points.push_back(p);
-  }
-  return points;
-}
-
-// The bilinear quadrilateral (S4 node order), 3×3 Gauss points.
-std::vector<ShapePoint> quadrilateral_points() {
-  constexpr int corner[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
-  std::vector<ShapePoint> points;
-  for (int a = 0; a < 3; ++a) {
-    for (int b = 0; b < 3; ++b) {
-      ShapePoint p;
-      p.weight = kGaussWeight3[a] * kGaussWeight3[b];
-      for (int i = 0; i < 4; ++i) {
-        const double f[2] = {1 + corner[i][0] * kGauss3[a], 1 + corner[i][1] * kGauss3[b]};
-        p.n[i] = f[0] * f[1] / 4;
-        p.dn2[i] = {corner[i][0] * f[1] / 4, corner[i][1] * f[0] / 4};
-      }
-      points.push_back(p);
-    }
-  }
-  return points;
-}
-
-// The linear triangle (S3), the 3-point rule exact to degree 2.
-std::vector<ShapePoint> triangle_points() {
-  constexpr double at[3][2] = {{1.0 / 6, 1.0 / 6}, {2.0 / 3, 1.0 / 6}, {1.0 / 6, 2.0 / 3}};
-  std::vector<ShapePoint> points;
-  for (const auto& xi : at) {
-    ShapePoint p;
-    p.weight = 1.0 / 6.0;
-    p.n[0] = 1 - xi[0] - xi[1];
-    p.n[1] = xi[0];
-    p.n[2] = xi[1];
-    p.dn2[0] = {-1, -1};
-    p.dn2[1] = {1, 0};
-    p.dn2[2] = {0, 1};
-    points.push_back(p);
-  }
-  return points;
-}
-
-const std::vector<ShapePoint>* points_of(const ElementBlock& block) {
-  static const std::vector<ShapePoint> hexahedron = hexahedron_points();
-  static const std::vector<ShapePoint> tetrahedron = tetrahedron_points();
-  static const std::vector<ShapePoint> quadrilateral = quadrilateral_points();
-  static const std::vector<ShapePoint> triangle = triangle_points();
-  const auto family = static_cast<ElementFamily>(block.family);
-  if (family == ElementFamily::Solid && block.nodes_per_element == 8) return &hexahedron;
-  if (family == ElementFamily::Solid && block.nodes_per_element == 4) return &tetrahedron;
-  if (family == ElementFamily::Shell && block.nodes_per_element == 4) return &quadrilateral;
-  if (family == ElementFamily::Shell && block.nodes_per_element == 3) return &triangle;
-  return nullptr;
-}
-
-// The mass of one element, and its first and second moments ∫ρ y dV and ∫ρ y yᵀ dV, y = x − x₀
-// measured from its first node (no cancellation in the inertia of an element far from the
-// origin).
-struct Moments {
-  double mass = 0.0;
-  Vector3 first = Vector3::Zero();
-  Matrix3 second = Matrix3::Zero();
-};
-
-Moments integrate_element(const std::vector<ShapePoint>& points, bool shell,
-                          std::span<const Vector3> y, const ElementMassData& data) {
-  Moments out;
-  for (const ShapePoint& p : points) {
-    Vector3 at = Vector3::Zero();
-    for (std::size_t i = 0; i < y.size(); ++i) at += p.n[i] * y[i];
-    double measure = 0.0, density = data.density;
-    Vector3 normal = Vector3::Zero();
-    if (shell) {
-      Vector3 d_xi = Vector3::Zero(), d_eta = Vector3::Zero();
-      for (std::size_t i = 0; i < y.size(); ++i) {
-        d_xi += p.dn2[i][0] * y[i];
-        d_eta += p.dn2[i][1] * y[i];
-      }
-      const Vector3 cross = d_xi.cross(d_eta);
-      measure = cross.norm() * p.weight;
-      if (cross.norm() > 0) normal = cross.normalized();
-      density *= data.thickness;  // per unit area
-    } else {
-      Matrix3 jacobian = Matrix3::Zero();
-      for (std::size_t i = 0; i < y.size(); ++i) {
-        jacobian += y[i] * Vector3(p.dn3[i][0], p.dn3[i][1], p.dn3[i][2]).transpose();
-      }
-      measure = std::abs(jacobian.determinant()) * p.weight;
-    }
-    const double mass = density * measure;
-    out.mass += mass;
-    out.first += mass * at;
-    out.second += mass * at * at.transpose();
-    // Through the thickness t of a shell: ∫ζ² dζ over [−t/2, t/2] = t³/12.
-    if (shell) {
-      out.second += data.density * std::pow(data.thickness, 3) / 12 * measure * normal *
-                    normal.transpose();
-    }
-  }
-  return out;
+const std::vector<QuadraturePoint>& quadrature_of(ElementShape shape) {
+  static const auto all = [] {
+    std::array<std::vector<QuadraturePoint>, 13> rules;
+    for (int s = 0; s < 13; ++s) rules[static_cast<std::size_t>(s)] = quadrature(ElementShape(s));
+    return rules;
+  }();
+  return all[static_cast<std::size_t>(shape)];
 }
 
 Vector3 position(const Model& model, std::int32_t node) {
@@ -173,15 +286,103 @@ Vector3 position(const Model& model, std::int32_t node) {
 
 }  // namespace
 
-bool element_mass_computed(const ElementBlock& block) { return points_of(block) != nullptr; }
+std::optional<ElementShape> mass_shape(const ElementBlock& block) {
+  const std::string_view type = block.type;
+  const int n = block.nodes_per_element;
+  switch (static_cast<ElementFamily>(block.family)) {
+    case ElementFamily::Solid:
+      if (type.starts_with("C3D") || type.starts_with("SC")) {
+        switch (n) {
+          case 4: return ElementShape::Tet4;
+          case 10: return ElementShape::Tet10;
+          case 6: return ElementShape::Wedge6;
+          case 15: return ElementShape::Wedge15;
+          case 8: return ElementShape::Hex8;
+          case 20: return ElementShape::Hex20;
+          default: return std::nullopt;  // the pyramid C3D5
+        }
+      }
+      return std::nullopt;
+    case ElementFamily::Planar:
+      if (type.starts_with("CAX")) return std::nullopt;  // axisymmetric: mass per radian
+      [[fallthrough]];
+    case ElementFamily::Shell:
+    case ElementFamily::Membrane:
+      switch (n) {
+        case 3: return ElementShape::Tri3;
+        case 6: return ElementShape::Tri6;
+        case 4: return ElementShape::Quad4;
+        case 8: return ElementShape::Quad8;
+        case 9: return ElementShape::Quad9;
+        default: return std::nullopt;
+      }
+    case ElementFamily::Truss:
+      if (n == 2) return ElementShape::Line2;
+      return n == 3 ? std::optional(ElementShape::Line3) : std::nullopt;
+    default:
+      return std::nullopt;
+  }
+}
+
+ElementMassProperties element_mass_properties(ElementShape shape, std::span<const Vector3> x,
+                                              double density, double section) {
+  // Moments about the first node, y = x − x₀: no cancellation in the inertia of an element far
+  // from the origin.
+  const auto count = static_cast<std::size_t>(node_count(shape));
+  const int dim = dimension(shape);
+  const double per_measure = dim == 3 ? density : density * section;
+  double mass = 0.0;
+  Vector3 first = Vector3::Zero();
+  Matrix3 second = Matrix3::Zero();
+  for (const QuadraturePoint& q : quadrature_of(shape)) {
+    const Shapes n = shape_functions(
+        shape, {coordinate(q.xi[0], 0), coordinate(q.xi[1], 1), coordinate(q.xi[2], 2)});
+    Vector3 at = Vector3::Zero();
+    Matrix3 jacobian = Matrix3::Zero();  // columns ∂y/∂ξ_k
+    for (std::size_t i = 0; i < count; ++i) {
+      const Vector3 y = x[i] - x[0];
+      at += n[i].v * y;
+      for (int k = 0; k < dim; ++k) jacobian.col(k) += n[i].d[static_cast<std::size_t>(k)] * y;
+    }
+    double measure = 0.0;
+    Vector3 normal = Vector3::Zero();
+    if (dim == 3) {
+      measure = std::abs(jacobian.determinant());
+    } else if (dim == 2) {
+      const Vector3 cross = jacobian.col(0).cross(jacobian.col(1));
+      measure = cross.norm();
+      if (measure > 0) normal = cross / measure;
+    } else {
+      measure = jacobian.col(0).norm();
+    }
+    const double m = per_measure * measure * q.weight;
+    mass += m;
+    first += m * at;
+    second += m * at * at.transpose();
+    // Through the thickness t of a surface: ∫ζ² dζ over [−t/2, t/2] = t³/12.
+    if (dim == 2) {
+      second += density * std::pow(section, 3) / 12 * measure * q.weight * normal *
+                normal.transpose();
+    }
+  }
+  ElementMassProperties out;
+  out.mass = mass;
+  if (mass <= 0) return out;
+  const Vector3 offset = first / mass;
+  out.centre = x[0] + offset;
+  // About the centre: S = ∫ρ y yᵀ − m c cᵀ; the inertia tensor I = tr(S) 1 − S.
+  const Matrix3 spread = second - mass * offset * offset.transpose();
+  out.rotary = spread.trace() * Matrix3::Identity() - spread;
+  return out;
+}
 
 std::vector<std::optional<ElementMassData>> element_mass_data(const Model& model) {
   std::vector<std::optional<ElementMassData>> data(model.elements.size());
   for (const ElementSection& section : model.structure.sections) {
-    const bool shell = section.kind == ElementSection::Kind::Shell;
-    if ((!shell && section.kind != ElementSection::Kind::Solid) || section.material_index < 0) {
-      continue;
-    }
+    const bool known = section.kind == ElementSection::Kind::Solid ||
+                       section.kind == ElementSection::Kind::Shell ||
+                       section.kind == ElementSection::Kind::Membrane;
+    if (!known || section.material_index < 0) continue;
     const Material& material =
         model.structure.materials[static_cast<std::size_t>(section.material_index)];
     std::optional<double> density;
@@ -193,10 +394,9 @@ std::vector<std::optional<ElementMassData>> element_mass_data(const Model& model
     if (!density) continue;
     ElementMassData d;
     d.density = *density;
-    // *SHELL SECTION: the thickness is the first field of its first data line (default 1).
-    d.thickness = 1.0;
-    if (shell && !section.rows.empty() && !section.rows[0].values.empty()) {
-      d.thickness = section.rows[0].values[0];
+    // The first field of the first data line: thickness or area (default 1).
+    if (!section.rows.empty() && !section.rows[0].values.empty() && section.rows[0].given[0]) {
+      d.section = section.rows[0].values[0];
     }
     for (const std::int32_t e : section.elements) data[static_cast<std::size_t>(e)] = d;
   }
@@ -216,7 +416,8 @@ std::vector<ElementMass> rigid_body_element_masses(const Model& model) {
     const Instance& instance = model.instances[i];
     if (i == 0 && instance.part != 0) continue;
     for (const ElementBlock& block : model.parts[instance.part].element_blocks) {
-      if (!element_mass_computed(block)) continue;
+      const std::optional<ElementShape> shape = mass_shape(block);
+      if (!shape || block.nodes_per_element != node_count(*shape)) continue;
       for (std::int32_t k = 0; k < block.count; ++k) {
         const auto e = static_cast<std::size_t>(block.first_element + k + instance.element_offset);
         if (e < where.size()) where[e] = {&block, k, instance.node_offset};
@@ -242,27 +443,18 @@ std::vector<ElementMass> rigid_body_element_masses(const Model& model) {
       if (!w.block || !d || d->density == 0) continue;
       const std::span<const std::int32_t> local = w.block->element_nodes(w.k);
       if (std::find(local.begin(), local.end(), kGround) != local.end()) continue;
-      const Vector3 origin = position(model, local[0] + w.node_offset);
-      std::array<Vector3, 8> y;
+      std::array<Vector3, kMaxNodes> x;
       for (std::size_t i = 0; i < local.size(); ++i) {
-        y[i] = position(model, local[i] + w.node_offset) - origin;
+        x[i] = position(model, local[i] + w.node_offset);
       }
-      const bool shell = static_cast<ElementFamily>(w.block->family) == ElementFamily::Shell;
-      const Moments m =
-          integrate_element(*points_of(*w.block), shell, std::span(y.data(), local.size()), *d);
-      if (m.mass <= 0) continue;
       ElementMass element;
+      static_cast<ElementMassProperties&>(element) = element_mass_properties(
+          *mass_shape(*w.block), std::span(x.data(), local.size()), d->density, d->section);
+      if (element.mass <= 0) continue;
       element.element = e;
       element.body = static_cast<std::int32_t>(b);
       element.reference =
           body.part == 0 ? body.reference : body.reference - last_offset + w.node_offset;
-      element.mass = m.mass;
-      const Vector3 offset = m.first / m.mass;
-      element.centre = origin + offset;
-      // About the centre: S = ∫ρ y yᵀ dV − m c cᵀ (c the centre from the first node); the
-      // inertia tensor I = tr(S) 1 − S.
-      const Matrix3 spread = m.second - m.mass * offset * offset.transpose();
-      element.rotary = spread.trace() * Matrix3::Identity() - spread;
       out.push_back(element);
     }
   }

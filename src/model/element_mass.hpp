@@ -1,15 +1,18 @@
-// The mass of the solid and shell elements that a rigid body carries, from their density and
-// volume (docs/dynamics.md "Inertia on constrained nodes"). Abaqus computes a rigid body's mass
-// and inertia from its elements; clinch integrates each element's mass, centre of mass and
-// inertia about that centre exactly (Gauss rules of sufficient degree). The resolve stage puts
-// the mass at a node of its own at the centre and the inertia on the body's reference node
-// (ElementMassPoint): lumping the mass on the element's corner nodes instead would keep the
-// mass and centre but overstate the inertia, with a rest that is not positive. A shell's mass
-// is ρ t per unit area, its inertia with the thickness term ρ t³/12 n nᵀ.
+// The mass of the continuum, structural and truss elements that a rigid body carries, from their
+// density and volume (docs/dynamics.md "Element mass of a rigid body"). Abaqus computes a rigid
+// body's mass and inertia from its elements; clinch integrates each element's mass, centre of
+// mass and inertia about that centre exactly over its isoparametric geometry (Gauss rules of
+// sufficient degree). The resolve stage puts the mass at a node of its own at the centre and the
+// inertia on the body's reference node (ElementMassPoint): lumping the mass on the element's
+// corner nodes instead would keep the mass and centre but overstate the inertia, with a rest
+// that is not positive. A surface (shell, membrane, planar element) has ρ t per unit area and
+// the thickness term ρ t³/12 n nᵀ in its second moment; a truss ρ A per unit length, its
+// cross-section adding no inertia (a thin rod).
 #pragma once
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "base/small_types.hpp"
@@ -19,31 +22,52 @@ namespace clinch {
 struct Model;
 struct ElementBlock;
 
-// One element's mass, its centre of mass and its inertia tensor about that centre (global
-// axes), and the reference node of the rigid body that carries it.
-struct ElementMass {
-  std::int32_t element = 0, reference = 0;  // global indices
-  std::int32_t body = 0;                     // into ConstraintModel::rigid_bodies
+// The isoparametric geometries whose mass clinch integrates, in Abaqus node order.
+enum class ElementShape : std::uint8_t {
+  Line2, Line3,                       // trusses (Line3: the middle node second)
+  Tri3, Tri6, Quad4, Quad8, Quad9,    // shells, membranes, planar continua
+  Tet4, Tet10, Wedge6, Wedge15, Hex8, Hex20  // solids
+};
+
+// The shape of the elements of `block` whose mass clinch computes from their density: solids
+// (C3D4, C3D6, C3D8, C3D10, C3D15, C3D20 and their variants, SC6R, SC8R), shells and membranes
+// of 3, 4, 6, 8 or 9 nodes, plane stress and plane strain elements (CPS, CPE) and trusses.
+// None for beams, pyramids and axisymmetric elements (refused: src/check/dynamic_step_checks.cpp).
+std::optional<ElementShape> mass_shape(const ElementBlock& block);
+inline bool element_mass_computed(const ElementBlock& block) {
+  return mass_shape(block).has_value();
+}
+
+// One element's mass, its centre of mass and its inertia tensor about that centre (global axes).
+struct ElementMassProperties {
   double mass = 0.0;
   Vector3 centre = Vector3::Zero();
   Matrix3 rotary = Matrix3::Zero();  // positive semi-definite
 };
 
-// Whether clinch computes the mass of the elements of `block`: the linear tetrahedra and
-// hexahedra (C3D4, C3D8 and their variants) and the linear shells (S3, S4 and theirs).
-bool element_mass_computed(const ElementBlock& block);
+// Those of an element of `shape` with nodes at `x`, density ρ (per unit volume) and `section`:
+// the thickness of a surface, the cross-section area of a line (unused for solids).
+ElementMassProperties element_mass_properties(ElementShape shape, std::span<const Vector3> x,
+                                              double density, double section);
 
-// The density of the material of each element's section, and a shell's thickness (its first
-// data line), by global element index: none when the element has no solid or shell section or
-// its material no *DENSITY.
+// The density of the material of each element's section, and its section factor (the first
+// field of its first data line: a shell's or membrane's thickness, a planar element's
+// thickness, a truss's area; 1 when blank), by global element index: none when the element has
+// no solid, shell or membrane section or its material no *DENSITY.
 struct ElementMassData {
   double density = 0.0;
-  double thickness = 0.0;  // shells
+  double section = 1.0;
 };
 std::vector<std::optional<ElementMassData>> element_mass_data(const Model& model);
 
-// The mass of every rigid body's solid and shell elements of the computed types that have a
-// density (the others are refused or warned about: src/check/dynamic_step_checks.cpp).
+// One element of a rigid body with its mass, and the body's reference node that carries it.
+struct ElementMass : ElementMassProperties {
+  std::int32_t element = 0, reference = 0;  // global indices
+  std::int32_t body = 0;                     // into ConstraintModel::rigid_bodies
+};
+
+// The mass of every rigid body's elements of the computed shapes that have a density (the
+// others are refused or warned about: src/check/dynamic_step_checks.cpp).
 std::vector<ElementMass> rigid_body_element_masses(const Model& model);
 
 }  // namespace clinch
