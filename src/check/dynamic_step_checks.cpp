@@ -57,7 +57,21 @@ void check_rigid_body_element_mass(const Model& model, DiagnosticSink& sink) {
         continue;
       }
       if (element_mass_computed(block)) {
-        if (mass_data[static_cast<std::size_t>(e)] || !reported.insert(&block).second) continue;
+        const auto& data = mass_data[static_cast<std::size_t>(e)];
+        if ((data && data->unsupported_profile.empty()) || !reported.insert(&block).second) {
+          continue;
+        }
+        if (data) {
+          Diagnostic& d = sink.report(
+              DiagCode::unsupported_option, block.type_loc,
+              fmt::format("the mass of the beam elements of type {} in a rigid body is not "
+                          "supported by clinch for SECTION={} in a *DYNAMIC or *FREQUENCY step "
+                          "(it is for RECT, CIRC, PIPE and THICK PIPE); give the body's mass as "
+                          "MASS and ROTARYI elements on its nodes, and remove these elements",
+                          block.type, data->unsupported_profile));
+          if (body.keyword_loc.valid()) d.notes.push_back({body.keyword_loc, "*RIGID BODY is here"});
+          continue;
+        }
         sink.report(DiagCode::parameter_ignored, block.type_loc,
                     fmt::format("the {} elements of type {} in a rigid body carry no mass: they "
                                 "have no section with a material that gives *DENSITY",
@@ -70,7 +84,7 @@ void check_rigid_body_element_mass(const Model& model, DiagnosticSink& sink) {
           fmt::format("the mass of the {} elements of type {} in a rigid body (from their density "
                       "and volume) is not supported by clinch in a *DYNAMIC or *FREQUENCY step: "
                       "it computes it for solids, shells, membranes, plane stress and plane strain "
-                      "elements and trusses, not for beams, pyramids or axisymmetric elements; "
+                      "elements, trusses and beams, not for pyramids or axisymmetric elements; "
                       "give the body's mass as MASS and ROTARYI elements on its nodes, and remove "
                       "these elements",
                       element_family_name(family), block.type));

@@ -90,16 +90,25 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
        {{"any parameter other than NAME, ELEMENT DELETION, MAX DEGRADATION and VISCOSITY",
          "they control elements clinch does not have"}}},
       {"SOLID SECTION",
-       "Gives the solid (or planar) elements of ELSET= their material; read and kept.",
-       "Optional: the thickness of planar elements."},
-      {"SHELL SECTION", "Gives the shell elements of ELSET= their material; read and kept.",
+       "Gives the solid, planar or truss elements of ELSET= their material; read and kept, and "
+       "in a rigid body their mass with the material's *DENSITY (docs/dynamics.md).",
+       "Optional: the thickness of planar elements, the area of trusses."},
+      {"SHELL SECTION",
+       "Gives the shell elements of ELSET= their material; read and kept, and in a rigid body "
+       "their mass with the material's *DENSITY (docs/dynamics.md).",
        "`thickness[, integration points]`."},
       {"MEMBRANE SECTION",
-       "Gives the membrane elements of ELSET= their material; read and kept.", "`thickness`."},
+       "Gives the membrane elements of ELSET= their material; read and kept, and in a rigid body "
+       "their mass with the material's *DENSITY (docs/dynamics.md).",
+       "`thickness`."},
       {"BEAM SECTION",
-       "Gives the beam elements of ELSET= their profile (SECTION=) and material; read and kept.",
+       "Gives the beam elements of ELSET= their profile (SECTION=) and material; read and kept, "
+       "and in a rigid body their mass with the material's *DENSITY for the profiles RECT, "
+       "CIRC, PIPE and THICK PIPE (docs/dynamics.md).",
        "Line 1: the profile dimensions; line 2: the direction of the n1 axis."},
-      {"TRUSS SECTION", "Gives the truss elements of ELSET= their material; read and kept.",
+      {"TRUSS SECTION",
+       "Gives the truss elements of ELSET= their material; read and kept, and in a rigid body "
+       "their mass with the material's *DENSITY (docs/dynamics.md).",
        "`cross-sectional area`."},
       {"MASS",
        "The mass of the MASS elements of ELSET=: a point mass in each translation, the inertia "
@@ -342,10 +351,11 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
        {{"EXPLICIT, SUBSPACE, ADIABATIC, NOHAF, STABILIZE and the other explicit or "
          "stabilization parameters",
          "not implemented"},
-        {"the mass of a rigid body's beams, pyramids (C3D5) and axisymmetric elements",
+        {"the mass of a rigid body's beams of profiles other than RECT, CIRC, PIPE and THICK "
+         "PIPE, pyramids (C3D5) and axisymmetric elements",
          "clinch computes it from the density and volume of solids, shells, membranes, plane "
-         "stress and plane strain elements and trusses only; give it as MASS and ROTARYI "
-         "elements on the body's nodes"}}},
+         "stress and plane strain elements, trusses and those beams only; give it as MASS and "
+         "ROTARYI elements on the body's nodes"}}},
       {"ENERGY OUTPUT",
        "Whole-model energies as history columns: ALLKE, ALLIE, ALLFD, ALLVD, ALLSD, ALLWK, "
        "ETOTAL (docs/dynamics.md; ALLSD: docs/stabilization.md).",
@@ -367,10 +377,11 @@ const std::vector<KeywordNotes>& all_keyword_notes() {
        {{"RESIDUAL MODES", "not implemented"},
         {"*BOUNDARY, *CLOAD, *CONNECTOR MOTION and *CONNECTOR LOAD in the step",
          "the step keeps the conditions of its base state"},
-        {"the mass of a rigid body's beams, pyramids (C3D5) and axisymmetric elements",
+        {"the mass of a rigid body's beams of profiles other than RECT, CIRC, PIPE and THICK "
+         "PIPE, pyramids (C3D5) and axisymmetric elements",
          "clinch computes it from the density and volume of solids, shells, membranes, plane "
-         "stress and plane strain elements and trusses only; give it as MASS and ROTARYI "
-         "elements on the body's nodes"}},
+         "stress and plane strain elements, trusses and those beams only; give it as MASS and "
+         "ROTARYI elements on the body's nodes"}},
        {{"ACOUSTIC COUPLING, DAMPING PROJECTION, SIM, BIAS, NUMBER INTERVAL, PROPERTY "
          "EVALUATION, STORAGE, SOLVER",
          "clinch has no acoustics, frequency-dependent properties or solver options to set"},

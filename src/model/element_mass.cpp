@@ -317,6 +317,7 @@ std::optional<ElementShape> mass_shape(const ElementBlock& block) {
         default: return std::nullopt;
       }
     case ElementFamily::Truss:
+    case ElementFamily::Beam:
       if (n == 2) return ElementShape::Line2;
       return n == 3 ? std::optional(ElementShape::Line3) : std::nullopt;
     default:
@@ -324,13 +325,36 @@ std::optional<ElementShape> mass_shape(const ElementBlock& block) {
   }
 }
 
+std::optional<BeamProfile> beam_profile(std::string_view section, std::span<const double> sizes) {
+  auto size = [&](std::size_t i) { return i < sizes.size() ? sizes[i] : 0.0; };
+  BeamProfile p;
+  if (section == "RECT") {  // width a along n1, height b along n2
+    const double a = size(0), b = size(1);
+    p.area = a * b;
+    p.along_n1 = b * a * a * a / 12;
+    p.along_n2 = a * b * b * b / 12;
+    return p;
+  }
+  if (section == "CIRC" || section == "PIPE" || section == "THICK PIPE") {
+    // Outside radius r; a pipe's wall thickness t (the annulus's exact moments).
+    const double r = size(0), inner = section == "CIRC" ? 0.0 : r - size(1);
+    constexpr double pi = 3.14159265358979323846;
+    p.area = pi * (r * r - inner * inner);
+    p.along_n1 = p.along_n2 = pi * (std::pow(r, 4) - std::pow(inner, 4)) / 4;
+    return p;
+  }
+  return std::nullopt;
+}
+
 ElementMassProperties element_mass_properties(ElementShape shape, std::span<const Vector3> x,
-                                              double density, double section) {
+                                              double density, double section,
+                                              const BeamProfile* profile) {
   // Moments about the first node, y = x − x₀: no cancellation in the inertia of an element far
   // from the origin.
   const auto count = static_cast<std::size_t>(node_count(shape));
   const int dim = dimension(shape);
-  const double per_measure = dim == 3 ? density : density * section;
+  const double per_measure =
+      dim == 3 ? density : density * (profile ? profile->area : section);
   double mass = 0.0;
   Vector3 first = Vector3::Zero();
   Matrix3 second = Matrix3::Zero();
@@ -364,6 +388,16 @@ ElementMassProperties element_mass_properties(ElementShape shape, std::span<cons
       second += density * std::pow(section, 3) / 12 * measure * q.weight * normal *
                 normal.transpose();
     }
+    // A beam's cross-section, across its tangent t: ρ(∫x₁² dA n1 n1ᵀ + ∫x₂² dA n2 n2ᵀ).
+    if (profile && measure > 0) {
+      const Vector3 t = jacobian.col(0) / measure;
+      Vector3 n1 = profile->n1 - profile->n1.dot(t) * t;
+      if (n1.norm() < 1e-8 * profile->n1.norm()) n1 = t.unitOrthogonal();
+      n1.normalize();
+      const Vector3 n2 = t.cross(n1);
+      second += density * measure * q.weight *
+                (profile->along_n1 * n1 * n1.transpose() + profile->along_n2 * n2 * n2.transpose());
+    }
   }
   ElementMassProperties out;
   out.mass = mass;
@@ -381,7 +415,9 @@ std::vector<std::optional<ElementMassData>> element_mass_data(const Model& model
   for (const ElementSection& section : model.structure.sections) {
     const bool known = section.kind == ElementSection::Kind::Solid ||
                        section.kind == ElementSection::Kind::Shell ||
-                       section.kind == ElementSection::Kind::Membrane;
+                       section.kind == ElementSection::Kind::Membrane ||
+                       section.kind == ElementSection::Kind::Truss ||
+                       section.kind == ElementSection::Kind::Beam;
     if (!known || section.material_index < 0) continue;
     const Material& material =
         model.structure.materials[static_cast<std::size_t>(section.material_index)];
@@ -397,6 +433,21 @@ std::vector<std::optional<ElementMassData>> element_mass_data(const Model& model
     // The first field of the first data line: thickness or area (default 1).
     if (!section.rows.empty() && !section.rows[0].values.empty() && section.rows[0].given[0]) {
       d.section = section.rows[0].values[0];
+    }
+    if (section.kind == ElementSection::Kind::Beam) {
+      // *BEAM SECTION: SECTION= and the sizes on line 1, the n1 axis on line 2.
+      std::string profile;
+      for (const KeptParameter& p : section.parameters) {
+        if (p.name == "SECTION") profile = p.value;
+      }
+      const std::vector<double> none;
+      d.beam = beam_profile(profile, section.rows.empty() ? none : section.rows[0].values);
+      if (!d.beam) {
+        d.unsupported_profile = profile;
+      } else if (section.rows.size() > 1 && section.rows[1].values.size() >= 3) {
+        const std::vector<double>& n = section.rows[1].values;
+        if (Vector3(n[0], n[1], n[2]).norm() > 0) d.beam->n1 = Vector3(n[0], n[1], n[2]);
+      }
     }
     for (const std::int32_t e : section.elements) data[static_cast<std::size_t>(e)] = d;
   }
@@ -440,7 +491,7 @@ std::vector<ElementMass> rigid_body_element_masses(const Model& model) {
     for (const std::int32_t e : body.elements) {
       const Where& w = where[static_cast<std::size_t>(e)];
       const auto& d = data[static_cast<std::size_t>(e)];
-      if (!w.block || !d || d->density == 0) continue;
+      if (!w.block || !d || d->density == 0 || !d->unsupported_profile.empty()) continue;
       const std::span<const std::int32_t> local = w.block->element_nodes(w.k);
       if (std::find(local.begin(), local.end(), kGround) != local.end()) continue;
       std::array<Vector3, kMaxNodes> x;
@@ -448,8 +499,9 @@ std::vector<ElementMass> rigid_body_element_masses(const Model& model) {
         x[i] = position(model, local[i] + w.node_offset);
       }
       ElementMass element;
-      static_cast<ElementMassProperties&>(element) = element_mass_properties(
-          *mass_shape(*w.block), std::span(x.data(), local.size()), d->density, d->section);
+      static_cast<ElementMassProperties&>(element) =
+          element_mass_properties(*mass_shape(*w.block), std::span(x.data(), local.size()),
+                                  d->density, d->section, d->beam ? &*d->beam : nullptr);
       if (element.mass <= 0) continue;
       element.element = e;
       element.body = static_cast<std::int32_t>(b);

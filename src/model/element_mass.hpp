@@ -7,12 +7,15 @@
 // corner nodes instead would keep the mass and centre but overstate the inertia, with a rest
 // that is not positive. A surface (shell, membrane, planar element) has ρ t per unit area and
 // the thickness term ρ t³/12 n nᵀ in its second moment; a truss ρ A per unit length, its
-// cross-section adding no inertia (a thin rod).
+// cross-section adding no inertia (a thin rod); a beam ρ A per unit length and the
+// cross-section's second moments ρ ∫x₁² dA, ρ ∫x₂² dA along its local axes n1, n2.
 #pragma once
 
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "base/small_types.hpp"
@@ -24,15 +27,15 @@ struct ElementBlock;
 
 // The isoparametric geometries whose mass clinch integrates, in Abaqus node order.
 enum class ElementShape : std::uint8_t {
-  Line2, Line3,                       // trusses (Line3: the middle node second)
+  Line2, Line3,                       // trusses and beams (Line3: the middle node second)
   Tri3, Tri6, Quad4, Quad8, Quad9,    // shells, membranes, planar continua
   Tet4, Tet10, Wedge6, Wedge15, Hex8, Hex20  // solids
 };
 
 // The shape of the elements of `block` whose mass clinch computes from their density: solids
 // (C3D4, C3D6, C3D8, C3D10, C3D15, C3D20 and their variants, SC6R, SC8R), shells and membranes
-// of 3, 4, 6, 8 or 9 nodes, plane stress and plane strain elements (CPS, CPE) and trusses.
-// None for beams, pyramids and axisymmetric elements (refused: src/check/dynamic_step_checks.cpp).
+// of 3, 4, 6, 8 or 9 nodes, plane stress and plane strain elements (CPS, CPE), trusses and
+// beams. None for pyramids and axisymmetric elements (refused: src/check/dynamic_step_checks.cpp).
 std::optional<ElementShape> mass_shape(const ElementBlock& block);
 inline bool element_mass_computed(const ElementBlock& block) {
   return mass_shape(block).has_value();
@@ -45,18 +48,36 @@ struct ElementMassProperties {
   Matrix3 rotary = Matrix3::Zero();  // positive semi-definite
 };
 
+// A beam's cross-section (*BEAM SECTION, SECTION=RECT, CIRC, PIPE or THICK PIPE): its area, its
+// second moments ∫x₁² dA and ∫x₂² dA about its centroid along the local axes, and the
+// approximate n1 axis of the section's second data line ((0, 0, −1) when not given), which
+// the beam's tangent t makes exact (n1 ⟂ t, n2 = t × n1).
+struct BeamProfile {
+  double area = 0.0;
+  double along_n1 = 0.0, along_n2 = 0.0;
+  Vector3 n1 = Vector3(0, 0, -1);
+};
+// The profile of a *BEAM SECTION: SECTION= and its first data line; none for the other
+// profiles (their mass is refused).
+std::optional<BeamProfile> beam_profile(std::string_view section, std::span<const double> sizes);
+
 // Those of an element of `shape` with nodes at `x`, density ρ (per unit volume) and `section`:
-// the thickness of a surface, the cross-section area of a line (unused for solids).
+// the thickness of a surface, the cross-section area of a truss (unused for solids); a beam
+// gives its `profile` instead.
 ElementMassProperties element_mass_properties(ElementShape shape, std::span<const Vector3> x,
-                                              double density, double section);
+                                              double density, double section,
+                                              const BeamProfile* profile = nullptr);
 
 // The density of the material of each element's section, and its section factor (the first
 // field of its first data line: a shell's or membrane's thickness, a planar element's
-// thickness, a truss's area; 1 when blank), by global element index: none when the element has
-// no solid, shell or membrane section or its material no *DENSITY.
+// thickness, a truss's area; 1 when blank) or a beam's profile, by global element index: none
+// when the element has no solid, shell, membrane, truss or beam section or its material no
+// *DENSITY. A beam section of another profile names it in `unsupported_profile`.
 struct ElementMassData {
   double density = 0.0;
   double section = 1.0;
+  std::optional<BeamProfile> beam;
+  std::string unsupported_profile;
 };
 std::vector<std::optional<ElementMassData>> element_mass_data(const Model& model);
 

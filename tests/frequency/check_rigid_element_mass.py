@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The natural frequencies of tests/frequency/rigid_element_mass.inp against closed-form mass
-properties of its three rigid bodies (docs/dynamics.md "Inertia on constrained nodes"): each body
+properties of its four rigid bodies (docs/dynamics.md "Inertia on constrained nodes"): each body
 moves in one translation u and the rotation theta about z at its reference node, on two grounded
 springs k and kr. A point r of the body moves by u e + theta e_z x r, so the kinetic energy is
 (m u'^2 + 2 s u' theta' + I theta'^2) / 2 with m the mass, s the first moment that couples them
@@ -12,7 +12,10 @@ Mass properties, integrated by hand:
 - plate a x c in the x-z plane (normal y), thickness t: m = rho t a c; along y, s = m a / 2;
   I = m a^2 / 3 + m t^2 / 12 (the thickness spreads the mass in y);
 - corner tetrahedron with edges a, b, c: m = rho a b c / 6; along x, s = -m b / 4;
-  I = m (a^2 + b^2) / 10 (integral x^2 dV = V a^2 / 10).
+  I = m (a^2 + b^2) / 10 (integral x^2 dV = V a^2 / 10);
+- beam of length L along x with a RECT profile w (along y, its n1) x h, a box: m = rho w h L;
+  along y, s = m L / 2; I = m L^2 / 3 + m w^2 / 12 (the profile's width across z; with n1
+  misread as the default (0, 0, -1) it would be m h^2 / 12).
 The tolerance 1e-11 relative: the quadrature is exact for these polynomials; only rounding is
 left.
 
@@ -54,6 +57,10 @@ def main():
     a, b, c, rho = 1.5, 1.0, 2.0, 2.0  # tetrahedron
     m = rho * a * b * c / 6
     expected += eigenvalues(m, -m * b / 4, m * (a * a + b * b) / 10, 600.0, 200.0)
+    length, w, h, rho = 2.0, 0.3, 0.1, 4.0  # beam
+    m = rho * w * h * length
+    expected += eigenvalues(m, m * length / 2, m * length * length / 3 + m * w * w / 12, 400.0,
+                            100.0)
     expected.sort()
 
     if len(got) != len(expected):

@@ -3,7 +3,8 @@
 // (m = ρabc, I = m/12 diag(b² + c², a² + c², a² + b²)) filled by each solid shape; a
 // parallelepiped (an affine cube) and a distorted tetrahedron against the exact moments of a
 // tetrahedron, ∫ x xᵀ dV = V/20 (Σ xᵢxᵢᵀ + s sᵀ), s = Σ xᵢ; a rectangular plate in a rotated
-// plane filled by each surface shape (with the thickness term); a rod for the lines. The
+// plane filled by each surface shape (with the thickness term); a rod for the trusses, and for
+// the beams a box, a cylinder and a tube (their profile's inertia across the axis). The
 // quadrature is exact for these straight-edged elements, so the tolerance is round-off: 1e-12
 // of each quantity's scale. The bodies sit away from the origin so that the moments about the
 // centre are not the difference of two large numbers.
@@ -11,6 +12,9 @@
 
 #include <array>
 #include <cmath>
+#include <numbers>
+#include <optional>
+#include <tuple>
 #include <vector>
 
 #include "src/model/element_mass.hpp"
@@ -218,6 +222,55 @@ TEST(ElementMass, LinesAreThinRods) {
   expect_props(combine({of(ElementShape::Line2, {kOrigin, end}, density, area)}), want, "T3D2");
   expect_props(combine({of(ElementShape::Line3, {kOrigin, want.centre, end}, density, area)}),
                want, "T3D3");
+}
+
+// Beams: a RECT profile a × b is a box of sides L (along d), a (along n1), b (along n2),
+// I = m/12 [(a² + b²) d dᵀ + (L² + b²) n1 n1ᵀ + (L² + a²) n2 n2ᵀ]; a CIRC of radius r a cylinder,
+// I = m r²/2 d dᵀ + m (3r² + L²)/12 (1 − d dᵀ); a PIPE of outside radius r and wall t a tube,
+// r² above replaced by r² + rᵢ², rᵢ = r − t. The n1 the section gives, (0, 0, −1), is not
+// across the axis: the beam makes it so.
+TEST(ElementMass, BeamsCarryTheirProfile) {
+  const double length = 1.3, density = 7.8;
+  const Vector3 d = Vector3(2, -1, 2).normalized();
+  const Vector3 end = kOrigin + length * d;
+  const Vector3 n1 = (Vector3(0, 0, -1) - Vector3(0, 0, -1).dot(d) * d).normalized();
+  const Vector3 n2 = d.cross(n1);
+  const Matrix3 axial = d * d.transpose(), across = Matrix3::Identity() - axial;
+  const std::vector<Vector3> line2{kOrigin, end}, line3{kOrigin, mid(kOrigin, end), end};
+
+  const double a = 0.12, b = 0.05;
+  const std::array<double, 2> rect_sizes{a, b};
+  const std::optional<BeamProfile> rect = beam_profile("RECT", rect_sizes);
+  ASSERT_TRUE(rect);
+  Props box;
+  box.mass = density * a * b * length;
+  box.centre = mid(kOrigin, end);
+  box.inertia = box.mass / 12 *
+                ((a * a + b * b) * axial + (length * length + b * b) * n1 * n1.transpose() +
+                 (length * length + a * a) * n2 * n2.transpose());
+  expect_props(combine({element_mass_properties(ElementShape::Line2, line2, density, 1, &*rect)}),
+               box, "B31 RECT");
+  expect_props(combine({element_mass_properties(ElementShape::Line3, line3, density, 1, &*rect)}),
+               box, "B32 RECT");
+
+  const double r = 0.04, t = 0.01, ri = r - t;
+  const std::array<double, 1> circ_sizes{r};
+  const std::array<double, 2> pipe_sizes{r, t};
+  const std::optional<BeamProfile> circ = beam_profile("CIRC", circ_sizes);
+  const std::optional<BeamProfile> pipe = beam_profile("PIPE", pipe_sizes);
+  ASSERT_TRUE(circ && pipe);
+  for (const auto& [profile, inner, what] :
+       {std::tuple{&*circ, 0.0, "B31 CIRC"}, std::tuple{&*pipe, ri, "B31 PIPE"}}) {
+    const double r2 = r * r + inner * inner;
+    Props tube;
+    tube.mass = density * std::numbers::pi * (r * r - inner * inner) * length;
+    tube.centre = mid(kOrigin, end);
+    tube.inertia = tube.mass * (r2 / 2 * axial + (3 * r2 + length * length) / 12 * across);
+    expect_props(combine({element_mass_properties(ElementShape::Line2, line2, density, 1,
+                                                  profile)}),
+                 tube, what);
+  }
+  EXPECT_FALSE(beam_profile("I", rect_sizes));
 }
 
 }  // namespace
