@@ -6,7 +6,7 @@ With theta its rotation about z, the masses are at R(theta) X_i and the exact eq
   I_O theta'' = -g sum m_i (X_i cos theta - Y_i sin theta),   I_O = sum m_i (X_i^2 + Y_i^2),
 
 integrated here by the classical fourth-order Runge-Kutta method with h = 1e-4 (its error, checked
-below against h = 2e-4, is below 1e-11). U1, U2, V1, V2 are those of node 4 (X = 1, Y = 0.2),
+by golden_lib.rigid_swing_rows against h = 2e-4, is below 1e-10). U1, U2, V1, V2 are those of node 4 (X = 1, Y = 0.2),
 UR3 = theta and VR3 = theta' of the reference node, ALLKE = I_O theta'^2 / 2 and ALLWK = the work
 of gravity, g sum m_i (the height each mass has fallen).
 """
@@ -31,34 +31,14 @@ def angular_acceleration(theta):
                        for (x, y), m in MASSES) / I_O
 
 
-def integrate(times, h):
-    """(theta, theta') at each of `times` from rest at theta = 0."""
-    return g.integrate_second_order(angular_acceleration, 0.0, 0.0, times, h)
-
-
 def fallen(theta):
     """sum m_i g (Y_i - y_i(theta)): the work of gravity."""
     return GRAV * sum(m * (y - (x * math.sin(theta) + y * math.cos(theta)))
                       for (x, y), m in MASSES)
 
 
-states = integrate(TIMES, 1e-4)
-# Self-checks (of the integration, not of clinch): halving the step changes nothing beyond 1e-11,
-# and the energy I_O theta'^2 / 2 - work of gravity stays zero.
-coarse = integrate(TIMES, 2e-4)
-g.assert_close([s[0] for s in coarse], [s[0] for s in states], 1e-10, "RK4 h = 2e-4 against 1e-4")
-for theta, rate in states:
-    g.assert_close([0.5 * I_O * rate * rate], [fallen(theta)], 1e-9, "energy conservation")
-
 names = ["U1@4", "U2@4", "V1@4", "V2@4", "UR3@2", "VR3@2", "ALLKE", "ALLWK"]
-rows = [(1, 0, 0.0, 0.0, [0.0] * len(names))]
-x, y = TRACKED
-for i, (t, (theta, rate)) in enumerate(zip(TIMES, states), start=1):
-    c, s = math.cos(theta), math.sin(theta)
-    u1, u2 = x * c - y * s - x, x * s + y * c - y
-    v1, v2 = -(x * s + y * c) * rate, (x * c - y * s) * rate
-    rows.append((1, i, t, t, [u1, u2, v1, v2, theta, rate, 0.5 * I_O * rate * rate,
-                              fallen(theta)]))
+rows = g.rigid_swing_rows(angular_acceleration, I_O, fallen, TRACKED, TIMES)
 
 g.write_golden(__file__, [
     "rigid_compound_pendulum: rigid body of point masses 1 at (0.5, 0) and 2 at (1, 0.2) about",

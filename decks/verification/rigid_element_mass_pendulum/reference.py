@@ -10,8 +10,8 @@ z). With theta the rotation about z, the exact equation of motion (moment of mom
   I_O = sum (I_i + m_i (X_i^2 + Y_i^2)),
 
 (X_i, Y_i) the parts' centres, integrated by the classical fourth-order Runge-Kutta method with
-h = 1e-4 (checked below against h = 2e-4 and against the energy integral). U1, U2, V1, V2 are
-those of node 33 (X = 1.2, Y = 0.6), UR3 = theta and VR3 = theta' of the reference node,
+h = 1e-4 (golden_lib.rigid_swing_rows checks it against h = 2e-4 and the energy integral).
+U1, U2, V1, V2 are those of node 33 (X = 1.2, Y = 0.6), UR3 = theta and VR3 = theta' of the reference node,
 ALLKE = I_O theta'^2 / 2 and ALLWK = the work of gravity.
 """
 import math
@@ -44,34 +44,14 @@ def angular_acceleration(theta):
                        for m, (x, y), _ in PARTS) / I_O
 
 
-def integrate(times, h):
-    """(theta, theta') at each of `times` from rest at theta = 0."""
-    return g.integrate_second_order(angular_acceleration, 0.0, 0.0, times, h)
-
-
 def fallen(theta):
     """sum m_i g (Y_i - y_i(theta)): the work of gravity."""
     return GRAV * sum(m * (y - (x * math.sin(theta) + y * math.cos(theta)))
                       for m, (x, y), _ in PARTS)
 
 
-states = integrate(TIMES, 1e-4)
-# Self-checks (of the integration, not of clinch): halving the step changes nothing beyond 1e-10,
-# and the energy I_O theta'^2 / 2 - work of gravity stays zero.
-coarse = integrate(TIMES, 2e-4)
-g.assert_close([s[0] for s in coarse], [s[0] for s in states], 1e-10, "RK4 h = 2e-4 against 1e-4")
-for theta, rate in states:
-    g.assert_close([0.5 * I_O * rate * rate], [fallen(theta)], 1e-9, "energy conservation")
-
 names = ["U1@33", "U2@33", "V1@33", "V2@33", "UR3@2", "VR3@2", "ALLKE", "ALLWK"]
-rows = [(1, 0, 0.0, 0.0, [0.0] * len(names))]
-x, y = TRACKED
-for i, (t, (theta, rate)) in enumerate(zip(TIMES, states), start=1):
-    c, s = math.cos(theta), math.sin(theta)
-    u1, u2 = x * c - y * s - x, x * s + y * c - y
-    v1, v2 = -(x * s + y * c) * rate, (x * c - y * s) * rate
-    rows.append((1, i, t, t, [u1, u2, v1, v2, theta, rate, 0.5 * I_O * rate * rate,
-                              fallen(theta)]))
+rows = g.rigid_swing_rows(angular_acceleration, I_O, fallen, TRACKED, TIMES)
 
 g.write_golden(__file__, [
     "rigid_element_mass_pendulum: rigid body of a C3D8R brick (density 50) and an S4R plate",
