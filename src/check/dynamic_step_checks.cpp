@@ -58,17 +58,16 @@ void check_rigid_body_element_mass(const Model& model, DiagnosticSink& sink) {
       }
       if (element_mass_computed(block)) {
         const auto& data = mass_data[static_cast<std::size_t>(e)];
-        if ((data && data->unsupported_profile.empty()) || !reported.insert(&block).second) {
-          continue;
-        }
+        if ((data && data->unsupported.empty()) || !reported.insert(&block).second) continue;
         if (data) {
           Diagnostic& d = sink.report(
               DiagCode::unsupported_option, block.type_loc,
-              fmt::format("the mass of the beam elements of type {} in a rigid body is not "
-                          "supported by clinch for SECTION={} in a *DYNAMIC or *FREQUENCY step "
-                          "(it is for RECT, CIRC, PIPE and THICK PIPE); give the body's mass as "
-                          "MASS and ROTARYI elements on its nodes, and remove these elements",
-                          block.type, data->unsupported_profile));
+              fmt::format("the mass of the {} elements of type {} in a rigid body is not "
+                          "supported by clinch with {} on their section in a *DYNAMIC or "
+                          "*FREQUENCY step or under gravity (beams: the profiles RECT, CIRC, PIPE and THICK PIPE; "
+                          "shells: a single material and thickness); give the body's mass as MASS "
+                          "and ROTARYI elements on its nodes, and remove these elements",
+                          element_family_name(family), block.type, data->unsupported));
           if (body.keyword_loc.valid()) d.notes.push_back({body.keyword_loc, "*RIGID BODY is here"});
           continue;
         }
@@ -82,7 +81,8 @@ void check_rigid_body_element_mass(const Model& model, DiagnosticSink& sink) {
       Diagnostic& d = sink.report(
           DiagCode::unsupported_option, block.type_loc,
           fmt::format("the mass of the {} elements of type {} in a rigid body (from their density "
-                      "and volume) is not supported by clinch in a *DYNAMIC or *FREQUENCY step: "
+                      "and volume) is not supported by clinch in a *DYNAMIC or *FREQUENCY step or "
+                      "under gravity: "
                       "it computes it for solids, shells, membranes, plane stress and plane strain "
                       "elements, trusses and beams, not for pyramids or axisymmetric elements; "
                       "give the body's mass as MASS and ROTARYI elements on its nodes, and remove "
@@ -192,7 +192,13 @@ bool has_dynamic_step(const Model& model) {
 }
 
 void check_dynamic_steps(const Model& model, DiagnosticSink& sink) {
-  if (!has_dynamic_step(model)) return;
+  // Gravity loads a rigid body's element mass in any step (docs/dynamics.md "Gravity").
+  const bool gravity = std::any_of(model.history.steps.begin(), model.history.steps.end(),
+                                   [](const Step& s) { return !s.gravity.empty(); });
+  if (!has_dynamic_step(model)) {
+    if (gravity) check_rigid_body_element_mass(model, sink);
+    return;
+  }
   for (const Step& step : model.history.steps) {
     if (step.dynamic) check_step(model, step, sink);
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 
 #include "src/model/element_library.hpp"
 #include "src/model/model.hpp"
@@ -347,14 +348,16 @@ std::optional<BeamProfile> beam_profile(std::string_view section, std::span<cons
 }
 
 ElementMassProperties element_mass_properties(ElementShape shape, std::span<const Vector3> x,
-                                              double density, double section,
-                                              const BeamProfile* profile) {
+                                              const ElementMassData& data) {
+  const double density = data.density, section = data.section;
+  const BeamProfile* profile = data.beam ? &*data.beam : nullptr;
   // Moments about the first node, y = x − x₀: no cancellation in the inertia of an element far
   // from the origin.
   const auto count = static_cast<std::size_t>(node_count(shape));
   const int dim = dimension(shape);
-  const double per_measure =
-      dim == 3 ? density : density * (profile ? profile->area : section);
+  const double per_measure = dim == 3   ? density
+                             : dim == 2 ? density * section + data.added_per_area
+                                        : density * (profile ? profile->area : section);
   double mass = 0.0;
   Vector3 first = Vector3::Zero();
   Matrix3 second = Matrix3::Zero();
@@ -376,6 +379,7 @@ ElementMassProperties element_mass_properties(ElementShape shape, std::span<cons
       const Vector3 cross = jacobian.col(0).cross(jacobian.col(1));
       measure = cross.norm();
       if (measure > 0) normal = cross / measure;
+      at -= data.offset * section * normal;  // the midsurface, from the nodes' surface
     } else {
       measure = jacobian.col(0).norm();
     }
@@ -410,6 +414,56 @@ ElementMassProperties element_mass_properties(ElementShape shape, std::span<cons
   return out;
 }
 
+namespace {
+
+// A parameter's number, or none when it is not one.
+std::optional<double> number(const std::string& text) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (end == text.c_str() || *end != '\0') return std::nullopt;
+  return value;
+}
+
+std::optional<double> material_density(const Model& model, const ElementSection& section) {
+  if (section.material_index < 0) return std::nullopt;
+  const Material& material =
+      model.structure.materials[static_cast<std::size_t>(section.material_index)];
+  std::optional<double> density;
+  for (const MaterialOption& option : material.options) {
+    if (option.keyword == "DENSITY" && !option.rows.empty() && !option.rows[0].values.empty()) {
+      density = option.rows[0].values[0];
+    }
+  }
+  return density;
+}
+
+// The parameters of a section that change its mass (docs/dynamics.md "Element mass of a rigid
+// body"): a surface's OFFSET and DENSITY=, a beam's SECTION=; COMPOSITE and NODAL THICKNESS
+// (thicknesses clinch does not read) are named as unsupported.
+void read_mass_parameters(const ElementSection& section, ElementMassData& d, std::string& profile) {
+  const bool surface = section.kind == ElementSection::Kind::Shell ||
+                       section.kind == ElementSection::Kind::Membrane;
+  for (const KeptParameter& p : section.parameters) {
+    if (p.name == "SECTION") profile = p.value;
+    if (!surface) continue;
+    if (p.name == "COMPOSITE" || p.name == "NODAL THICKNESS") d.unsupported = p.name;
+    if (p.name == "OFFSET") {
+      const std::optional<double> value = p.value == "SPOS"   ? 0.5
+                                          : p.value == "SNEG" ? -0.5
+                                                              : number(p.value);
+      if (value) d.offset = *value;
+      else d.unsupported = "OFFSET=" + p.value;
+    }
+    if (p.name == "DENSITY") {
+      const std::optional<double> value = number(p.value);
+      if (value) d.added_per_area = *value;
+      else d.unsupported = "DENSITY=" + p.value;
+    }
+  }
+}
+
+}  // namespace
+
 std::vector<std::optional<ElementMassData>> element_mass_data(const Model& model) {
   std::vector<std::optional<ElementMassData>> data(model.elements.size());
   for (const ElementSection& section : model.structure.sections) {
@@ -418,32 +472,23 @@ std::vector<std::optional<ElementMassData>> element_mass_data(const Model& model
                        section.kind == ElementSection::Kind::Membrane ||
                        section.kind == ElementSection::Kind::Truss ||
                        section.kind == ElementSection::Kind::Beam;
-    if (!known || section.material_index < 0) continue;
-    const Material& material =
-        model.structure.materials[static_cast<std::size_t>(section.material_index)];
-    std::optional<double> density;
-    for (const MaterialOption& option : material.options) {
-      if (option.keyword == "DENSITY" && !option.rows.empty() && !option.rows[0].values.empty()) {
-        density = option.rows[0].values[0];
-      }
-    }
-    if (!density) continue;
+    if (!known) continue;
     ElementMassData d;
-    d.density = *density;
+    std::string profile;
+    read_mass_parameters(section, d, profile);
+    const std::optional<double> density = material_density(model, section);
+    if (!density && d.added_per_area == 0 && d.unsupported.empty()) continue;
+    d.density = density.value_or(0.0);
     // The first field of the first data line: thickness or area (default 1).
     if (!section.rows.empty() && !section.rows[0].values.empty() && section.rows[0].given[0]) {
       d.section = section.rows[0].values[0];
     }
     if (section.kind == ElementSection::Kind::Beam) {
       // *BEAM SECTION: SECTION= and the sizes on line 1, the n1 axis on line 2.
-      std::string profile;
-      for (const KeptParameter& p : section.parameters) {
-        if (p.name == "SECTION") profile = p.value;
-      }
       const std::vector<double> none;
       d.beam = beam_profile(profile, section.rows.empty() ? none : section.rows[0].values);
       if (!d.beam) {
-        d.unsupported_profile = profile;
+        d.unsupported = "SECTION=" + profile;
       } else if (section.rows.size() > 1 && section.rows[1].values.size() >= 3) {
         const std::vector<double>& n = section.rows[1].values;
         if (Vector3(n[0], n[1], n[2]).norm() > 0) d.beam->n1 = Vector3(n[0], n[1], n[2]);
@@ -491,7 +536,7 @@ std::vector<ElementMass> rigid_body_element_masses(const Model& model) {
     for (const std::int32_t e : body.elements) {
       const Where& w = where[static_cast<std::size_t>(e)];
       const auto& d = data[static_cast<std::size_t>(e)];
-      if (!w.block || !d || d->density == 0 || !d->unsupported_profile.empty()) continue;
+      if (!w.block || !d || !d->unsupported.empty()) continue;
       const std::span<const std::int32_t> local = w.block->element_nodes(w.k);
       if (std::find(local.begin(), local.end(), kGround) != local.end()) continue;
       std::array<Vector3, kMaxNodes> x;
@@ -500,8 +545,7 @@ std::vector<ElementMass> rigid_body_element_masses(const Model& model) {
       }
       ElementMass element;
       static_cast<ElementMassProperties&>(element) =
-          element_mass_properties(*mass_shape(*w.block), std::span(x.data(), local.size()),
-                                  d->density, d->section, d->beam ? &*d->beam : nullptr);
+          element_mass_properties(*mass_shape(*w.block), std::span(x.data(), local.size()), *d);
       if (element.mass <= 0) continue;
       element.element = e;
       element.body = static_cast<std::int32_t>(b);

@@ -61,24 +61,30 @@ struct BeamProfile {
 // profiles (their mass is refused).
 std::optional<BeamProfile> beam_profile(std::string_view section, std::span<const double> sizes);
 
-// Those of an element of `shape` with nodes at `x`, density ρ (per unit volume) and `section`:
-// the thickness of a surface, the cross-section area of a truss (unused for solids); a beam
-// gives its `profile` instead.
-ElementMassProperties element_mass_properties(ElementShape shape, std::span<const Vector3> x,
-                                              double density, double section,
-                                              const BeamProfile* profile = nullptr);
-
-// The density of the material of each element's section, and its section factor (the first
-// field of its first data line: a shell's or membrane's thickness, a planar element's
-// thickness, a truss's area; 1 when blank) or a beam's profile, by global element index: none
-// when the element has no solid, shell, membrane, truss or beam section or its material no
-// *DENSITY. A beam section of another profile names it in `unsupported_profile`.
+// What an element's section gives its mass: the density ρ of its material (per unit volume,
+// 0 without *DENSITY), the section factor (the first field of the section's first data line: a
+// shell's, membrane's or planar element's thickness, a truss's area; 1 when blank) or a beam's
+// profile, and for shells and membranes the OFFSET of the midsurface from the nodes (a fraction
+// of the thickness along the normal: SPOS 0.5, SNEG −0.5; the midsurface lies at −offset·t·n
+// from the reference surface) and the DENSITY= mass per unit area added to the material's. A
+// section clinch cannot take names the parameter in `unsupported` (COMPOSITE, NODAL THICKNESS,
+// SECTION=I, ...).
 struct ElementMassData {
   double density = 0.0;
   double section = 1.0;
   std::optional<BeamProfile> beam;
-  std::string unsupported_profile;
+  double offset = 0.0;
+  double added_per_area = 0.0;
+  std::string unsupported;
 };
+
+// The mass properties of an element of `shape` with nodes at `x` and section `data`.
+ElementMassProperties element_mass_properties(ElementShape shape, std::span<const Vector3> x,
+                                              const ElementMassData& data);
+
+// The ElementMassData of each element, by global element index: none when the element has no
+// solid, shell, membrane, truss or beam section, or neither its material's *DENSITY nor a
+// section DENSITY= gives it mass and its section is one clinch takes.
 std::vector<std::optional<ElementMassData>> element_mass_data(const Model& model);
 
 // One element of a rigid body with its mass, and the body's reference node that carries it.

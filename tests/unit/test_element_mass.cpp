@@ -52,8 +52,12 @@ void expect_props(const Props& got, const Props& want, const char* what) {
 }
 
 ElementMassProperties of(ElementShape shape, const std::vector<Vector3>& x, double density,
-                         double section = 1.0) {
-  return element_mass_properties(shape, x, density, section);
+                         double section = 1.0, std::optional<BeamProfile> profile = {}) {
+  ElementMassData data;
+  data.density = density;
+  data.section = section;
+  data.beam = profile;
+  return element_mass_properties(shape, x, data);
 }
 
 // Inertia about the centre from a second moment about the origin.
@@ -210,6 +214,35 @@ TEST(ElementMass, SurfacesFillARotatedPlate) {
                want, "STRI65");
 }
 
+// OFFSET=SPOS puts the nodes on the top surface: the midsurface, and the centre, lie t/2 below
+// them along the normal; DENSITY=μ on the section adds μ per unit area at the midsurface (no
+// spread through the thickness).
+TEST(ElementMass, ShellOffsetAndAddedMass) {
+  const double a = 0.6, b = 0.4, t = 0.02, density = 2.7, added = 0.3;
+  const Vector3 e1 = Vector3(1, 2, 2).normalized();
+  const Vector3 e2 = Vector3(2, 1, -2).normalized();
+  const Vector3 n = e1.cross(e2);
+  auto at = [&](double u, double v) { return Vector3(kOrigin + u * a * e1 + v * b * e2); };
+  const double material = density * t * a * b, surface = added * a * b;
+  Props want;
+  want.mass = material + surface;
+  want.centre = at(0.5, 0.5) - 0.5 * t * n;
+  want.inertia = material / 12 *
+                     ((b * b + t * t) * e1 * e1.transpose() + (a * a + t * t) * e2 * e2.transpose() +
+                      (a * a + b * b) * n * n.transpose()) +
+                 surface / 12 *
+                     (b * b * e1 * e1.transpose() + a * a * e2 * e2.transpose() +
+                      (a * a + b * b) * n * n.transpose());
+  ElementMassData data;
+  data.density = density;
+  data.section = t;
+  data.offset = 0.5;
+  data.added_per_area = added;
+  const std::vector<Vector3> quad{at(0, 0), at(1, 0), at(1, 1), at(0, 1)};
+  expect_props(combine({element_mass_properties(ElementShape::Quad4, quad, data)}), want,
+               "S4, OFFSET=SPOS, DENSITY=");
+}
+
 // A thin rod of length L and area A along d: m = ρAL, I = m L²/12 (1 − d dᵀ).
 TEST(ElementMass, LinesAreThinRods) {
   const double length = 1.3, area = 0.01, density = 7.8;
@@ -248,9 +281,9 @@ TEST(ElementMass, BeamsCarryTheirProfile) {
   box.inertia = box.mass / 12 *
                 ((a * a + b * b) * axial + (length * length + b * b) * n1 * n1.transpose() +
                  (length * length + a * a) * n2 * n2.transpose());
-  expect_props(combine({element_mass_properties(ElementShape::Line2, line2, density, 1, &*rect)}),
+  expect_props(combine({of(ElementShape::Line2, line2, density, 1, rect)}),
                box, "B31 RECT");
-  expect_props(combine({element_mass_properties(ElementShape::Line3, line3, density, 1, &*rect)}),
+  expect_props(combine({of(ElementShape::Line3, line3, density, 1, rect)}),
                box, "B32 RECT");
 
   const double r = 0.04, t = 0.01, ri = r - t;
@@ -260,15 +293,13 @@ TEST(ElementMass, BeamsCarryTheirProfile) {
   const std::optional<BeamProfile> pipe = beam_profile("PIPE", pipe_sizes);
   ASSERT_TRUE(circ && pipe);
   for (const auto& [profile, inner, what] :
-       {std::tuple{&*circ, 0.0, "B31 CIRC"}, std::tuple{&*pipe, ri, "B31 PIPE"}}) {
+       {std::tuple{&circ, 0.0, "B31 CIRC"}, std::tuple{&pipe, ri, "B31 PIPE"}}) {
     const double r2 = r * r + inner * inner;
     Props tube;
     tube.mass = density * std::numbers::pi * (r * r - inner * inner) * length;
     tube.centre = mid(kOrigin, end);
     tube.inertia = tube.mass * (r2 / 2 * axial + (3 * r2 + length * length) / 12 * across);
-    expect_props(combine({element_mass_properties(ElementShape::Line2, line2, density, 1,
-                                                  profile)}),
-                 tube, what);
+    expect_props(combine({of(ElementShape::Line2, line2, density, 1, *profile)}), tube, what);
   }
   EXPECT_FALSE(beam_profile("I", rect_sizes));
 }
