@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace clinch {
 
@@ -31,6 +32,7 @@ void ArcLengthProblem::commit() {
   delta_lpf_ = 0.0;
   delta_q_.setZero();
   has_previous_ = true;
+  failed_attempts_ = 0;
 }
 
 double ArcLengthProblem::scaled_dot(const Eigen::VectorXd& x, const Eigen::VectorXd& y) const {
@@ -84,6 +86,11 @@ void ArcLengthProblem::measure(const Eigen::VectorXd& residual, const Eigen::Vec
     norms.constraint_violation =
         std::max(norms.constraint_violation, std::abs(residual[n]) / (1e-6 * arc_ * arc_));
   }
+  // Only a point ahead of the last converged one in the displacements continues the path: one
+  // behind it lies on the elastic unloading branch of a softened law (docs/riks.md).
+  if (has_previous_ && scaled_dot(delta_q_, previous_q_) <= 0) {
+    norms.constraint_violation = std::numeric_limits<double>::infinity();
+  }
 }
 
 bool ArcLengthProblem::correction(const Eigen::VectorXd& rhs, const Eigen::VectorXd& a,
@@ -109,6 +116,7 @@ bool ArcLengthProblem::correction(const Eigen::VectorXd& rhs, const Eigen::Vecto
         const double scale = arc_ / previous;
         out.head(n) = a + scale * previous_q_;
         out[n] = scale * previous_lpf_;
+        if (reversing()) out[n] = -out[n];
         return true;
       }
     }

@@ -34,6 +34,15 @@ class ArcLengthProblem final : public NonlinearProblem {
   void begin_increment(double arc);
   // The converged increment becomes the start of the next one.
   void commit();
+  // An attempt from the converged state failed (before the next one is begun).
+  void attempt_failed() { ++failed_attempts_; }
+  // After an odd number of failed attempts from a converged state, the predictor keeps the last
+  // increment's Δq and reverses its Δλ: past a limit point on a kink of a law (damage starting
+  // at its peak with a steep softening) the path goes on in the displacements with the load
+  // falling, and the secant predictor, which keeps the load rising, finds no equilibrium. Only
+  // after a converged increment (the first one has no direction to keep).
+  bool reversing() const { return has_previous_ && failed_attempts_ % 2 == 1; }
+  bool can_reverse() const { return has_previous_; }
   double load_factor() const { return converged_lpf_ + delta_lpf_; }
   // Before the increment's first correction: the next one is the predictor.
   bool predicting() const { return predicting_; }
@@ -75,6 +84,7 @@ class ArcLengthProblem final : public NonlinearProblem {
   double scale_squared_ = 0.0;  // ū², 0 until the first predictor sets it
   bool predicting_ = false;
   bool has_previous_ = false;
+  int failed_attempts_ = 0;  // from the current converged state
 };
 
 }  // namespace clinch

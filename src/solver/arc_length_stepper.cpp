@@ -39,12 +39,27 @@ TimeProposal ArcLengthStepper::first() {
   if (settings_.resolved_node >= 0) {
     monitored_ = step_.nodal_value(settings_.resolved_node, settings_.dof);
   }
-  return arc_.first();
+  const TimeProposal proposal = arc_.first();
+  last_arc_ = proposal.dt;
+  return proposal;
 }
 
 TimeProposal ArcLengthStepper::next(const AttemptOutcome& outcome) {
+  const bool failed = outcome.kind == AttemptOutcome::Kind::NotConverged ||
+                      outcome.kind == AttemptOutcome::Kind::Diverged ||
+                      outcome.kind == AttemptOutcome::Kind::EvaluationFailed;
+  // A failed arc length is tried again with the load falling before it is cut back
+  // (ArcLengthProblem::reversing): the path may turn at a limit point on a law's kink.
+  if (failed && path_.can_reverse() && !path_.reversing()) {
+    path_.attempt_failed();
+    return {TimeProposal::Kind::Attempt, last_arc_, true, {}};
+  }
   TimeProposal proposal = arc_.next(outcome);
-  if (outcome.kind != AttemptOutcome::Kind::Converged) return proposal;
+  last_arc_ = proposal.dt;
+  if (outcome.kind != AttemptOutcome::Kind::Converged) {
+    if (failed) path_.attempt_failed();
+    return proposal;
+  }
   path_.commit();
   ended_ = stopping_criterion();
   if (!ended_.empty()) return {TimeProposal::Kind::Done, 0.0, false, {}};

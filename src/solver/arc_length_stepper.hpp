@@ -37,6 +37,7 @@ class ArcLengthStepper final : public TimeStepper {
   ArcLengthProblem& path_;
   const StepProblem& step_;
   double monitored_ = 0.0;  // the monitored DOF's value at the last converged increment
+  double last_arc_ = 0.0;   // of the last attempt proposed
   std::string ended_;
 };
 

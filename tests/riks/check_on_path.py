@@ -1,7 +1,7 @@
 """Every converged point of a Riks run lies on the equilibrium path, computed here independently,
 the path passes its limit point, and the step ends where its data line says (docs/riks.md).
 
-Usage: check_on_path.py series|weld|spotweld|truss HISTORY.csv STATUS.sta
+Usage: check_on_path.py series|weld|spotweld|truss|kink HISTORY.csv STATUS.sta
 
 series (series_snap_back.inp): two AXIAL connectors in series pulled by 100 LPF at node 3. The
   first follows its table (F = 100 u exp(1 - u) at u = 0, 0.1, ..., 8, interpolated linearly),
@@ -22,6 +22,11 @@ truss (truss_snap_through.inp): the von Mises truss, two SPRINGA (k = 1000) from
   apex at (0, 0.5), pushed down by 100 LPF under NLGEOM: at the apex's descent w the bars have
   length L = sqrt(1 + (0.5 - w)^2) and P = 2k(L0 - L)(0.5 - w)/L. The path passes the limit
   point, snaps through (P < 0) and inverts; the step ends where u2 crosses -1.2.
+kink (parallel_kink.inp): two AXIAL connectors in parallel pulled by 15 LPF: the first elastic
+  (100) with FORCE damage initiation at 10 and linear motion softening over 0.02
+  (damage_lib.ElasticDamage), the second linear (20). Its limit point sits on the kink of the
+  first's law, where the path turns by more than a right angle; the first is deleted at
+  u = 0.12 and the second carries the load on. The step ends where u crosses 0.6.
 
 Tolerance: 1e-8 of each quantity's scale (the largest load on the path). The runs' *CONTROLS ask
 for residuals of 1e-10 of the force flux, which leaves errors near 1e-10 of these scales.
@@ -82,6 +87,17 @@ def spot_weld_errors(rows):
     return out, [float(r["U3@2"]) for r in rows]
 
 
+def kink_errors(rows):
+    soft = damage_lib.ElasticDamage(100.0, 10.0, ("LINEAR", 0.02))
+    out = []
+    for r in rows:
+        lpf, u, force, spring = (float(r[k]) for k in ("LPF", "U1@2", "CTF1@1", "CTF1@2"))
+        out.append([("softening connector = reference", force - soft.update(u)[0]),
+                    ("spring = 20 u", spring - 20.0 * u),
+                    ("connectors = load", force + spring - 15.0 * lpf)])
+    return out, [float(r["U1@2"]) for r in rows]
+
+
 def truss_errors(rows):
     out = []
     length0 = math.sqrt(1.25)
@@ -96,7 +112,8 @@ def truss_errors(rows):
 CASES = {"series": (series_errors, 100.0, 7.0, "DOF 1 of the monitored node crossed 7"),
          "weld": (weld_errors, 800.0, 0.025, "DOF 1 of the monitored node crossed 0.025"),
          "spotweld": (spot_weld_errors, 800.0, 0.1, "DOF 3 of the monitored node crossed 0.1"),
-         "truss": (truss_errors, 100.0, -1.2, "DOF 2 of the monitored node crossed -1.2")}
+         "truss": (truss_errors, 100.0, -1.2, "DOF 2 of the monitored node crossed -1.2"),
+         "kink": (kink_errors, 12.0, 0.6, "DOF 1 of the monitored node crossed 0.6")}
 
 
 def main(case, history, status):

@@ -50,7 +50,9 @@ run stops cleanly; the report counts the decks that hold such a path apart).
 --riks: each load-driven deck is run again as a *STATIC, RIKS step (docs/riks.md) with each
 path's largest load as its reference and the LPF up to 1, past the limit points a load-driven
 run stops at; checks 1-4 hold with the applied load LPF times the reference.
---min-riks-completed: the least fraction of those rerun paths whose deck completes.
+--min-riks-completed: the least fraction of those rerun paths whose deck completes: its step
+ends at the maximum LPF 1 (a run that ends at INC short of it, having followed another
+equilibrium path, is counted apart and not as complete).
 """
 
 import argparse
@@ -368,7 +370,9 @@ def main():
     total_increments = total_iterations = 0
     snap_decks = [0, 0]  # decks holding a path that may snap back, and those that completed
     smooth = [0, 0]  # displacement-driven paths in the other decks, and those that completed
-    riks = [0, 0]  # load-driven paths rerun with *STATIC, RIKS, and those whose deck completed
+    # Load-driven paths rerun with *STATIC, RIKS; those whose deck reached LPF 1; those whose deck
+    # ended at INC short of it.
+    riks = [0, 0, 0]
     done = 0
     deck_index = 0
     while done < args.paths:
@@ -412,8 +416,13 @@ def main():
                                 f"{stderr[-2000:]}")
             for p in paths:
                 problems += [f"{riks_deck}: {x}" for x in check_path(p, rows, args.rtol)[0][:3]]
+            # Complete: the step ended at its maximum LPF 1. A run that ends at INC below it
+            # followed another equilibrium path (the elastic unloading branch behind a limit
+            # point, into compression) and counts apart.
+            reached = status == 0 and bool(rows) and rows[-1].get("LPF", 0.0) >= 1.0 - 1e-9
             riks[0] += count
-            riks[1] += count * (status == 0)
+            riks[1] += count * reached
+            riks[2] += count * (status == 0 and not reached)
         done += count
         deck_index += 1
     print(f"{args.paths} damage paths in {deck_index} decks (seed {args.seed}), work dir {work}")
@@ -434,8 +443,9 @@ def main():
               f"({smooth[1] / smooth[0]:.3f}); decks with one: {snap_decks[1]} of "
               f"{snap_decks[0]} completed")
     if riks[0]:
-        print(f"load-driven paths rerun with *STATIC, RIKS whose deck completed: "
-              f"{riks[1]}/{riks[0]} ({riks[1] / riks[0]:.3f})")
+        print(f"load-driven paths rerun with *STATIC, RIKS whose deck reached LPF 1: "
+              f"{riks[1]}/{riks[0]} ({riks[1] / riks[0]:.3f}); ended at INC short of it: "
+              f"{riks[2]}")
     for x in problems[:20]:
         print("FAIL:", x)
     if problems:
