@@ -21,6 +21,7 @@ void ConnectorStepProblem::begin_step(std::size_t step, bool nlgeom) {
   // A perturbation step's time is the scale of its perturbation (docs/perturbation.md).
   period_ = s.procedure && !s.is_perturbation() ? s.procedure->period : 1.0;
   load_factor_ = 1.0;
+  riks_ = s.procedure && s.procedure->riks && !s.dynamic && !s.frequency;
   const bool stabilized = s.procedure && s.procedure->stabilize && !s.dynamic && !s.frequency;
   system_.begin_stabilization(stabilized ? &*s.procedure->stabilize : nullptr, period_);
   const std::vector<NodeInertia>& inertia = system_.plan().inertia;

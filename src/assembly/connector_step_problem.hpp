@@ -53,8 +53,9 @@ class ConnectorStepProblem final : public StepProblem {
   std::string describe_failure(const NewtonReport& report) const override;
   // Newton names a solved equation (connector_system.hpp).
   std::string failure_note(int failed_equation) const override {
-    return system_.failure_note(failed_equation < 0 ? failed_equation
-                                                    : system_.equation_of_solved(failed_equation));
+    return system_.failure_note(
+        failed_equation < 0 ? failed_equation : system_.equation_of_solved(failed_equation),
+        riks_);
   }
 
  private:
@@ -63,6 +64,7 @@ class ConnectorStepProblem final : public StepProblem {
   StepConditions conditions_;
   bool dynamic_step_started_ = false;  // this step's start state has been taken
   bool finite_rotary_inertia_ = false;  // the step is dynamic, under NLGEOM, with such a node
+  bool riks_ = false;                   // the step is *STATIC, RIKS
   double period_ = 1.0;      // of the step's ramps
   double total_time_ = 0.0;  // at the end of the increment
   double load_factor_ = 1.0;  // τ where the step's conditions end (1 but in a Riks step)

@@ -820,7 +820,7 @@ std::vector<std::string> ConnectorSystem::step_summary() const {
 // behaviors.md §7.4: a node that a deleted connector leaves without stiffness makes the system
 // singular there; under load control no equilibrium exists past a softening peak, and Newton
 // fails: the element whose damage grows most in the failed trial state is named.
-std::string ConnectorSystem::failure_note(int failed_equation) const {
+std::string ConnectorSystem::failure_note(int failed_equation, bool riks) const {
   const std::int32_t node = failed_equation >= 0 && failed_equation < plan_.dofs.equations()
                                 ? plan_.dofs.node_of(failed_equation)
                                 : -1;
@@ -864,6 +864,17 @@ std::string ConnectorSystem::failure_note(int failed_equation) const {
   if (!loaded) {
     return fmt::format("connector element {} softening (d={:.3g})", elements_.label(softening),
                        largest);
+  }
+  // docs/riks.md "Limits": a Riks path stalls where it turns too sharply to follow, at a limit
+  // point on a kink of a softening law.
+  if (riks) {
+    return fmt::format(
+        "connector element {} softening (d={:.3g}) at LPF {:.4g}: the path turns too sharply "
+        "there to follow (a limit point on a kink of the law, docs/riks.md \"Limits\"); sample "
+        "its table more finely, regularise the damage (*SECTION CONTROLS, VISCOSITY), or "
+        "drive the softening connector's own motion (*BOUNDARY, *CONNECTOR MOTION) instead of "
+        "the load",
+        elements_.label(softening), largest, load_factor_);
   }
   // docs/riks.md: past a softening peak no larger load has an equilibrium; say where and what
   // the deck can do about it.

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string_view>
 
 namespace clinch {
 namespace {
@@ -56,6 +57,11 @@ TimeProposal ArcLengthStepper::next(const AttemptOutcome& outcome) {
   }
   TimeProposal proposal = arc_.next(outcome);
   last_arc_ = proposal.dt;
+  // The static stepper's "time increment" is this step's arc length.
+  constexpr std::string_view kTime = "time increment ";
+  if (proposal.kind == TimeProposal::Kind::Stop && proposal.reason.starts_with(kTime)) {
+    proposal.reason.replace(0, kTime.size(), "arc length ");
+  }
   if (outcome.kind != AttemptOutcome::Kind::Converged) {
     if (failed) path_.attempt_failed();
     return proposal;
