@@ -56,19 +56,28 @@ void check_rigid_body_element_mass(const Model& model, DiagnosticSink& sink) {
           family == ElementFamily::Analysed) {
         continue;
       }
+      // The body's mass would be short without a word: refused once per block.
+      const auto refuse = [&](const std::string& what) {
+        Diagnostic& d = sink.report(
+            DiagCode::unsupported_option, block.type_loc,
+            fmt::format("the mass of the {} elements of type {} in a rigid body {} is not "
+                        "supported by clinch in a *DYNAMIC or *FREQUENCY step or under gravity: "
+                        "{}; give the body's mass as MASS and ROTARYI elements on its nodes, and "
+                        "remove these elements",
+                        element_family_name(family), block.type,
+                        what.empty() ? "(from their density and volume)" : "with " + what,
+                        what.empty() ? "it computes it for solids, shells, membranes, plane "
+                                       "stress and plane strain elements, trusses and beams, not "
+                                       "for pyramids or axisymmetric elements"
+                                     : "beams take the profiles RECT, CIRC, PIPE and THICK PIPE, "
+                                       "shells a single material and thickness"));
+        if (body.keyword_loc.valid()) d.notes.push_back({body.keyword_loc, "*RIGID BODY is here"});
+      };
       if (element_mass_computed(block)) {
         const auto& data = mass_data[static_cast<std::size_t>(e)];
         if ((data && data->unsupported.empty()) || !reported.insert(&block).second) continue;
         if (data) {
-          Diagnostic& d = sink.report(
-              DiagCode::unsupported_option, block.type_loc,
-              fmt::format("the mass of the {} elements of type {} in a rigid body is not "
-                          "supported by clinch with {} on their section in a *DYNAMIC or "
-                          "*FREQUENCY step or under gravity (beams: the profiles RECT, CIRC, PIPE and THICK PIPE; "
-                          "shells: a single material and thickness); give the body's mass as MASS "
-                          "and ROTARYI elements on its nodes, and remove these elements",
-                          element_family_name(family), block.type, data->unsupported));
-          if (body.keyword_loc.valid()) d.notes.push_back({body.keyword_loc, "*RIGID BODY is here"});
+          refuse(data->unsupported + " on their section");
           continue;
         }
         sink.report(DiagCode::parameter_ignored, block.type_loc,
@@ -77,18 +86,7 @@ void check_rigid_body_element_mass(const Model& model, DiagnosticSink& sink) {
                                 element_family_name(family), block.type));
         continue;
       }
-      if (!reported.insert(&block).second) continue;
-      Diagnostic& d = sink.report(
-          DiagCode::unsupported_option, block.type_loc,
-          fmt::format("the mass of the {} elements of type {} in a rigid body (from their density "
-                      "and volume) is not supported by clinch in a *DYNAMIC or *FREQUENCY step or "
-                      "under gravity: "
-                      "it computes it for solids, shells, membranes, plane stress and plane strain "
-                      "elements, trusses and beams, not for pyramids or axisymmetric elements; "
-                      "give the body's mass as MASS and ROTARYI elements on its nodes, and remove "
-                      "these elements",
-                      element_family_name(family), block.type));
-      if (body.keyword_loc.valid()) d.notes.push_back({body.keyword_loc, "*RIGID BODY is here"});
+      if (reported.insert(&block).second) refuse("");
     }
   }
 }
