@@ -887,6 +887,25 @@ std::string ConnectorSystem::failure_note(int failed_equation, bool riks) const 
       elements_.label(softening), largest, load_factor_);
 }
 
+NonlinearProblem::DamageChange ConnectorSystem::damage_change() const {
+  DamageChange change;
+  for (std::size_t c = owned_connectors_.begin; c < owned_connectors_.end; ++c) {
+    for (const LawSlot& slot : plan_.connectors[c].laws) {
+      const double now = slot.law->damage(slot.history_in(state_.history));
+      change.damaged = change.damaged || now > 0.0;
+      change.growing =
+          change.growing || now > slot.law->damage(slot.history_in(state_.history_n));
+    }
+  }
+  // Each rank evaluates its own connectors; the decision is taken together.
+  if (communicator_) {
+    std::array<std::uint8_t, 2> flags{change.damaged, change.growing};
+    communicator_->max(flags);
+    change = {flags[0] != 0, flags[1] != 0};
+  }
+  return change;
+}
+
 double ConnectorSystem::nodal_value(std::int32_t node, int dof) const {
   const int eq = plan_.dofs.equation(node, dof);
   return eq >= 0 ? state_.x[eq] : 0.0;

@@ -117,6 +117,7 @@ class ConnectorSystem final : public NonlinearProblem {
   void end_increment();
   std::vector<std::string> take_events() { return std::move(events_); }
   std::string failure_note(int failed_equation, bool riks = false) const;
+  DamageChange damage_change() const override;
   std::vector<std::string> step_summary() const;
   std::vector<std::string> release_failed_components();
   StepRequest step_request() const { return state_.request; }

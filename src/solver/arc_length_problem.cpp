@@ -91,6 +91,15 @@ void ArcLengthProblem::measure(const Eigen::VectorXd& residual, const Eigen::Vec
   if (has_previous_ && scaled_dot(delta_q_, previous_q_) <= 0) {
     norms.constraint_violation = std::numeric_limits<double>::infinity();
   }
+  // Nor does a point where the load falls while a damaged model only unloads: past a softening
+  // limit point the load falls because damage grows; without growth the whole model is going
+  // back along its elastic unloading branch.
+  if (has_previous_ && delta_lpf_ < 0) {
+    const DamageChange change = problem_.damage_change();
+    if (change.damaged && !change.growing) {
+      norms.constraint_violation = std::numeric_limits<double>::infinity();
+    }
+  }
 }
 
 bool ArcLengthProblem::correction(const Eigen::VectorXd& rhs, const Eigen::VectorXd& a,

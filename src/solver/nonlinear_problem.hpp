@@ -95,6 +95,13 @@ class NonlinearProblem {
   // How much a change of each equation counts as motion in the arc length of a Riks step
   // (docs/riks.md): 1 for every equation unless the problem knows its fields.
   virtual void path_weights(Eigen::VectorXd& weights) const { weights.setOnes(size()); }
+  // The damage of the laws at the current state against the converged one: whether any law is
+  // damaged, and whether any damage grows (a Riks step tells the softening branch from the
+  // elastic unloading one by it: docs/riks.md).
+  struct DamageChange {
+    bool damaged = false, growing = false;
+  };
+  virtual DamageChange damage_change() const { return {}; }
 };
 
 }  // namespace clinch
