@@ -178,10 +178,16 @@ int run_deck(const RunCommandOptions& options) {
     return kExitDeckErrors;
   }
   const int node_equations = plan->dofs.node_equations();
-  log.info(fmt::format("{}: {} nodes, {} connectors, {} springs; {} active DOFs ({:.3g} per node), "
-                       "{} multipliers",
-                       deck_name, model.nodes.size(), plan->connectors.size(),
-                       plan->springs.size(), node_equations,
+  // The nodes clinch adds at the centres of mass of rigid bodies' elements are not the deck's.
+  const std::size_t centres = model.constraints.element_masses.size();
+  log.info(fmt::format("{}: {} nodes{}, {} connectors, {} springs; {} active DOFs ({:.3g} per "
+                       "node), {} multipliers",
+                       deck_name, model.nodes.size() - centres,
+                       centres == 0 ? std::string()
+                                    : fmt::format(" (and {} at the centres of mass of rigid "
+                                                  "bodies' elements)",
+                                                  centres),
+                       plan->connectors.size(), plan->springs.size(), node_equations,
                        model.nodes.empty() ? 0.0 : double(node_equations) / model.nodes.size(),
                        plan->dofs.equations() - node_equations));
   if (!plan->dependents.empty()) {
