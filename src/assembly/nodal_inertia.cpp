@@ -1,5 +1,6 @@
 #include "src/assembly/nodal_inertia.hpp"
 
+#include <array>
 #include <map>
 
 #include "base/fold_name.hpp"
@@ -26,6 +27,13 @@ Vector3 section_mass(const ElementSection& section) {
   return anisotropic(section)
              ? Vector3(row_value(section, 0), row_value(section, 1), row_value(section, 2))
              : Vector3::Constant(row_value(section, 0));
+}
+
+// I11, I22, I33, I12, I13, I23 (the order of *ROTARY INERTIA) as a symmetric tensor.
+Matrix3 inertia_tensor(const std::array<double, 6>& i) {
+  Matrix3 j;
+  j << i[0], i[3], i[4], i[3], i[1], i[5], i[4], i[5], i[2];
+  return j;
 }
 
 }  // namespace
@@ -59,10 +67,8 @@ std::vector<NodeInertia> nodal_inertia(const Model& model, const DofMap& dofs) {
     if (mass) {
       m = section_mass(section);
     } else {
-      j.diagonal() << row_value(section, 0), row_value(section, 1), row_value(section, 2);
-      j(0, 1) = j(1, 0) = row_value(section, 3);
-      j(0, 2) = j(2, 0) = row_value(section, 4);
-      j(1, 2) = j(2, 1) = row_value(section, 5);
+      j = inertia_tensor({row_value(section, 0), row_value(section, 1), row_value(section, 2),
+                          row_value(section, 3), row_value(section, 4), row_value(section, 5)});
     }
     for (std::int32_t e : section.elements) {
       const std::int32_t node = node_of[static_cast<std::size_t>(e)];
@@ -73,7 +79,7 @@ std::vector<NodeInertia> nodal_inertia(const Model& model, const DofMap& dofs) {
       n.rotary += j;
     }
   }
-  // The mass of rigid bodies' solid and shell elements: at the node added at each one's centre,
+  // The mass of rigid bodies' elements from their density: at the node added at each one's centre,
   // its inertia about that centre on the body's reference node (ElementMassPoint).
   for (const ElementMassPoint& p : model.constraints.element_masses) {
     if (dofs.active(p.node) != 0) {
@@ -81,11 +87,8 @@ std::vector<NodeInertia> nodal_inertia(const Model& model, const DofMap& dofs) {
       by_node[p.node].mass += Vector3::Constant(p.mass);
     }
     if (dofs.active(p.reference) != 0) {
-      Matrix3 j;
-      j << p.rotary[0], p.rotary[3], p.rotary[4], p.rotary[3], p.rotary[1], p.rotary[5],
-          p.rotary[4], p.rotary[5], p.rotary[2];
       by_node[p.reference].node = p.reference;
-      by_node[p.reference].rotary += j;
+      by_node[p.reference].rotary += inertia_tensor(p.rotary);
     }
   }
   std::vector<NodeInertia> inertia;

@@ -32,9 +32,10 @@ namespace {
 // Abaqus computes a rigid body's mass from the density and volume of the solid, shell, membrane,
 // beam, truss and planar elements it carries (Abaqus Analysis User's Guide, "Rigid body
 // definition": "the mass and inertia of a rigid body can be calculated based on contributions
-// from its elements"). clinch computes it for the shapes of element_mass.hpp; a body that carries other elements is refused once per *ELEMENT block,
-// since its inertia would be silently short, and elements of those types whose material has no
-// *DENSITY are noted to carry no mass, as in Abaqus. Rigid elements (R3D4, ...) carry no mass in
+// from its elements"). clinch computes it for the shapes of element_mass.hpp; a body that carries
+// other elements, or sections clinch cannot weigh, is refused once per *ELEMENT block, since its
+// inertia would be silently short, and elements whose material has no *DENSITY are noted to carry
+// no mass, as in Abaqus. Rigid elements (R3D4, ...) carry no mass in
 // Abaqus/Standard; MASS and ROTARYI are read.
 void check_rigid_body_element_mass(const Model& model, DiagnosticSink& sink) {
   std::map<std::pair<std::uint32_t, std::uint32_t>, const ElementBlock*> block_at;

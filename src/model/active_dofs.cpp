@@ -127,7 +127,7 @@ std::vector<DofMask> named_dofs(const Model& model) {
       if (node >= 0) named[static_cast<std::size_t>(node)] |= mask;
     }
   }
-  // The mass of rigid bodies' solid and shell elements: the translations of the node at each
+  // The mass of rigid bodies' elements from their density: the translations of the node at each
   // one's centre, the rotations of the reference node that carries its inertia (ElementMassPoint).
   for (const ElementMassPoint& p : model.constraints.element_masses) {
     named[static_cast<std::size_t>(p.node)] |= two_d ? kTranslations2D : kTranslations3D;

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdlib>
+#include <initializer_list>
 
 #include "src/model/element_library.hpp"
 #include "src/model/model.hpp"
@@ -68,6 +69,19 @@ constexpr int kTetEdge[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
 constexpr int kHexEdge[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
                                  {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
 
+// A simplex's functions from its area or volume coordinates l: l itself (linear), or the
+// corners' l(2l − 1) and the midsides' 4 lᵢlⱼ on `edges` (quadratic).
+template <std::size_t Corners, std::size_t Edges>
+void simplex_functions(const std::array<Dual, Corners>& l, const int (&edges)[Edges][2],
+                       bool quadratic, Shapes& n) {
+  for (std::size_t i = 0; i < Corners; ++i) n[i] = quadratic ? l[i] * (2.0 * l[i] - 1.0) : l[i];
+  if (!quadratic) return;
+  for (std::size_t e = 0; e < Edges; ++e) {
+    n[Corners + e] =
+        4.0 * (l[static_cast<std::size_t>(edges[e][0])] * l[static_cast<std::size_t>(edges[e][1])]);
+  }
+}
+
 // The shape functions at natural coordinates ξ (the reference domains: [−1, 1] per direction
 // for lines, quadrilaterals and hexahedra and for the wedge's ζ; the unit simplex for
 // triangles, tetrahedra and the wedge's ξ, η).
@@ -89,12 +103,7 @@ Shapes shape_functions(ElementShape shape, const std::array<Dual, 3>& xi) {
     case ElementShape::Tri3:
     case ElementShape::Tri6: {
       const std::array<Dual, 3> l{1.0 - a - b, a, b};
-      if (shape == ElementShape::Tri3) {
-        for (int i = 0; i < 3; ++i) n[i] = l[i];
-        break;
-      }
-      for (int i = 0; i < 3; ++i) n[i] = l[i] * (2.0 * l[i] - 1.0);
-      for (int e = 0; e < 3; ++e) n[3 + e] = 4.0 * (l[kTriEdge[e][0]] * l[kTriEdge[e][1]]);
+      simplex_functions(l, kTriEdge, shape == ElementShape::Tri6, n);
       break;
     }
     case ElementShape::Quad4:
@@ -123,12 +132,7 @@ Shapes shape_functions(ElementShape shape, const std::array<Dual, 3>& xi) {
     case ElementShape::Tet4:
     case ElementShape::Tet10: {
       const std::array<Dual, 4> l{1.0 - a - b - c, a, b, c};
-      if (shape == ElementShape::Tet4) {
-        for (int i = 0; i < 4; ++i) n[i] = l[i];
-        break;
-      }
-      for (int i = 0; i < 4; ++i) n[i] = l[i] * (2.0 * l[i] - 1.0);
-      for (int e = 0; e < 6; ++e) n[4 + e] = 4.0 * (l[kTetEdge[e][0]] * l[kTetEdge[e][1]]);
+      simplex_functions(l, kTetEdge, shape == ElementShape::Tet10, n);
       break;
     }
     case ElementShape::Wedge6:
@@ -170,9 +174,9 @@ Shapes shape_functions(ElementShape shape, const std::array<Dual, 3>& xi) {
         const int* q = kHexCorner[kHexEdge[e][1]];
         Dual f{0.25, {}};
         for (int k = 0; k < 3; ++k) {
-          f = f * (p[k] == q[k] ? 1.0 + p[k] * xi[static_cast<std::size_t>(k)]
-                                : 1.0 - xi[static_cast<std::size_t>(k)] *
-                                            xi[static_cast<std::size_t>(k)]);
+          f = f * (p[k] == q[k]
+                       ? 1.0 + p[k] * xi[static_cast<std::size_t>(k)]
+                       : 1.0 - xi[static_cast<std::size_t>(k)] * xi[static_cast<std::size_t>(k)]);
         }
         n[8 + e] = f;
       }
@@ -193,8 +197,12 @@ int dimension(ElementShape shape) {
 
 bool quadratic_shape(ElementShape shape) {
   switch (shape) {
-    case ElementShape::Line3: case ElementShape::Tri6: case ElementShape::Quad8:
-    case ElementShape::Quad9: case ElementShape::Tet10: case ElementShape::Wedge15:
+    case ElementShape::Line3:
+    case ElementShape::Tri6:
+    case ElementShape::Quad8:
+    case ElementShape::Quad9:
+    case ElementShape::Tet10:
+    case ElementShape::Wedge15:
     case ElementShape::Hex20:
       return true;
     default:
@@ -235,29 +243,36 @@ std::vector<QuadraturePoint> quadrature(ElementShape shape) {
       for (std::size_t k = 0; k < m; ++k) {
         QuadraturePoint p;
         switch (shape) {
-          case ElementShape::Line2: case ElementShape::Line3:
+          case ElementShape::Line2:
+          case ElementShape::Line3:
             if (j || k) continue;
             p = {{g.x[i], 0, 0}, g.w[i]};
             break;
-          case ElementShape::Quad4: case ElementShape::Quad8: case ElementShape::Quad9:
+          case ElementShape::Quad4:
+          case ElementShape::Quad8:
+          case ElementShape::Quad9:
             if (k) continue;
             p = {{g.x[i], g.x[j], 0}, g.w[i] * g.w[j]};
             break;
-          case ElementShape::Hex8: case ElementShape::Hex20:
+          case ElementShape::Hex8:
+          case ElementShape::Hex20:
             p = {{g.x[i], g.x[j], g.x[k]}, g.w[i] * g.w[j] * g.w[k]};
             break;
-          case ElementShape::Tri3: case ElementShape::Tri6: {
+          case ElementShape::Tri3:
+          case ElementShape::Tri6: {
             if (k) continue;
             const double u = unit(i), v = unit(j);
             p = {{u, v * (1 - u), 0}, 0.25 * g.w[i] * g.w[j] * (1 - u)};
             break;
           }
-          case ElementShape::Wedge6: case ElementShape::Wedge15: {
+          case ElementShape::Wedge6:
+          case ElementShape::Wedge15: {
             const double u = unit(i), v = unit(j);
             p = {{u, v * (1 - u), g.x[k]}, 0.25 * g.w[i] * g.w[j] * (1 - u) * g.w[k]};
             break;
           }
-          case ElementShape::Tet4: case ElementShape::Tet10: {
+          case ElementShape::Tet4:
+          case ElementShape::Tet10: {
             const double u = unit(i), v = unit(j), w = unit(k);
             p = {{u, v * (1 - u), w * (1 - u) * (1 - v)},
                  0.125 * g.w[i] * g.w[j] * g.w[k] * (1 - u) * (1 - u) * (1 - v)};
@@ -288,39 +303,28 @@ Vector3 position(const Model& model, std::int32_t node) {
 }  // namespace
 
 std::optional<ElementShape> mass_shape(const ElementBlock& block) {
+  using enum ElementShape;
   const std::string_view type = block.type;
-  const int n = block.nodes_per_element;
+  // The shape of a family with the block's node count.
+  const auto with_nodes = [&](std::initializer_list<ElementShape> shapes) {
+    for (const ElementShape s : shapes) {
+      if (node_count(s) == block.nodes_per_element) return std::optional(s);
+    }
+    return std::optional<ElementShape>();
+  };
   switch (static_cast<ElementFamily>(block.family)) {
-    case ElementFamily::Solid:
-      if (type.starts_with("C3D") || type.starts_with("SC")) {
-        switch (n) {
-          case 4: return ElementShape::Tet4;
-          case 10: return ElementShape::Tet10;
-          case 6: return ElementShape::Wedge6;
-          case 15: return ElementShape::Wedge15;
-          case 8: return ElementShape::Hex8;
-          case 20: return ElementShape::Hex20;
-          default: return std::nullopt;  // the pyramid C3D5
-        }
-      }
-      return std::nullopt;
+    case ElementFamily::Solid:  // not the pyramid C3D5
+      if (!type.starts_with("C3D") && !type.starts_with("SC")) return std::nullopt;
+      return with_nodes({Tet4, Tet10, Wedge6, Wedge15, Hex8, Hex20});
     case ElementFamily::Planar:
       if (type.starts_with("CAX")) return std::nullopt;  // axisymmetric: mass per radian
       [[fallthrough]];
     case ElementFamily::Shell:
     case ElementFamily::Membrane:
-      switch (n) {
-        case 3: return ElementShape::Tri3;
-        case 6: return ElementShape::Tri6;
-        case 4: return ElementShape::Quad4;
-        case 8: return ElementShape::Quad8;
-        case 9: return ElementShape::Quad9;
-        default: return std::nullopt;
-      }
+      return with_nodes({Tri3, Tri6, Quad4, Quad8, Quad9});
     case ElementFamily::Truss:
     case ElementFamily::Beam:
-      if (n == 2) return ElementShape::Line2;
-      return n == 3 ? std::optional(ElementShape::Line3) : std::nullopt;
+      return with_nodes({Line2, Line3});
     default:
       return std::nullopt;
   }
@@ -389,8 +393,8 @@ ElementMassProperties element_mass_properties(ElementShape shape, std::span<cons
     second += m * at * at.transpose();
     // Through the thickness t of a surface: ∫ζ² dζ over [−t/2, t/2] = t³/12.
     if (dim == 2) {
-      second += density * std::pow(section, 3) / 12 * measure * q.weight * normal *
-                normal.transpose();
+      second +=
+          density * std::pow(section, 3) / 12 * measure * q.weight * normal * normal.transpose();
     }
     // A beam's cross-section, across its tangent t: ρ(∫x₁² dA n1 n1ᵀ + ∫x₂² dA n2 n2ᵀ).
     if (profile && measure > 0) {
@@ -441,8 +445,8 @@ std::optional<double> material_density(const Model& model, const ElementSection&
 // body"): a surface's OFFSET and DENSITY=, a beam's SECTION=; COMPOSITE and NODAL THICKNESS
 // (thicknesses clinch does not read) are named as unsupported.
 void read_mass_parameters(const ElementSection& section, ElementMassData& d, std::string& profile) {
-  const bool surface = section.kind == ElementSection::Kind::Shell ||
-                       section.kind == ElementSection::Kind::Membrane;
+  const bool surface =
+      section.kind == ElementSection::Kind::Shell || section.kind == ElementSection::Kind::Membrane;
   for (const KeptParameter& p : section.parameters) {
     if (p.name == "SECTION") profile = p.value;
     if (!surface) continue;
@@ -451,13 +455,17 @@ void read_mass_parameters(const ElementSection& section, ElementMassData& d, std
       const std::optional<double> value = p.value == "SPOS"   ? 0.5
                                           : p.value == "SNEG" ? -0.5
                                                               : number(p.value);
-      if (value) d.offset = *value;
-      else d.unsupported = "OFFSET=" + p.value;
+      if (value)
+        d.offset = *value;
+      else
+        d.unsupported = "OFFSET=" + p.value;
     }
     if (p.name == "DENSITY") {
       const std::optional<double> value = number(p.value);
-      if (value) d.added_per_area = *value;
-      else d.unsupported = "DENSITY=" + p.value;
+      if (value)
+        d.added_per_area = *value;
+      else
+        d.unsupported = "DENSITY=" + p.value;
     }
   }
 }
@@ -529,9 +537,9 @@ std::vector<ElementMass> rigid_body_element_masses(const Model& model) {
     // in the assembly has one reference node for all its elements.
     const std::int32_t last_offset =
         body.part == 0 ? 0
-                       : model.instances[static_cast<std::size_t>(
-                                             model.nodes[static_cast<std::size_t>(body.reference)]
-                                                 .instance)]
+                       : model
+                             .instances[static_cast<std::size_t>(
+                                 model.nodes[static_cast<std::size_t>(body.reference)].instance)]
                              .node_offset;
     for (const std::int32_t e : body.elements) {
       const Where& w = where[static_cast<std::size_t>(e)];

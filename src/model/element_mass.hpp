@@ -27,9 +27,19 @@ struct ElementBlock;
 
 // The isoparametric geometries whose mass clinch integrates, in Abaqus node order.
 enum class ElementShape : std::uint8_t {
-  Line2, Line3,                       // trusses and beams (Line3: the middle node second)
-  Tri3, Tri6, Quad4, Quad8, Quad9,    // shells, membranes, planar continua
-  Tet4, Tet10, Wedge6, Wedge15, Hex8, Hex20  // solids
+  Line2,
+  Line3,  // trusses and beams (Line3: the middle node second)
+  Tri3,
+  Tri6,
+  Quad4,
+  Quad8,
+  Quad9,  // shells, membranes, planar continua
+  Tet4,
+  Tet10,
+  Wedge6,
+  Wedge15,
+  Hex8,
+  Hex20  // solids
 };
 
 // The shape of the elements of `block` whose mass clinch computes from their density: solids
@@ -90,7 +100,7 @@ std::vector<std::optional<ElementMassData>> element_mass_data(const Model& model
 // One element of a rigid body with its mass, and the body's reference node that carries it.
 struct ElementMass : ElementMassProperties {
   std::int32_t element = 0, reference = 0;  // global indices
-  std::int32_t body = 0;                     // into ConstraintModel::rigid_bodies
+  std::int32_t body = 0;                    // into ConstraintModel::rigid_bodies
 };
 
 // The mass of every rigid body's elements of the computed shapes that have a density (the

@@ -36,7 +36,7 @@ struct RigidBodyDefinition {
   std::vector<std::int32_t> tie_nodes, pin_nodes;  // sorted, disjoint, without the reference
 };
 
-// The mass of one of a rigid body's solid or shell elements from its density and volume
+// The mass of one of a rigid body's elements from its density and volume
 // (src/model/element_mass.hpp): a point mass at a node that the resolve stage adds at the
 // element's centre of mass and pins to the body's reference node, and the element's rotary
 // inertia about that centre on the reference node. Both are exact and positive, so the body's

@@ -24,7 +24,7 @@ void resolve_rigid_bodies(Model& model, DiagnosticSink& sink);
 // *MPC and *EQUATION into the followers, equations and links of constraint_model.hpp; before
 // resolve_history for the same reason (src/resolve/resolve_mpc_equations.cpp).
 void resolve_mpc_equations(Model& model, DiagnosticSink& sink);
-// The mass of rigid bodies' solid and shell elements: a node at each element's centre of mass,
+// The mass of rigid bodies' elements from their density: a node at each element's centre of mass,
 // pinned to the body's reference node (src/resolve/resolve_element_masses.cpp); after the
 // sections and the bodies, before anchor_rigid_bodies, which rewrites the followers.
 void resolve_rigid_body_element_masses(Model& model);

@@ -1,4 +1,4 @@
-// The mass of a rigid body's solid and shell elements from their density and volume
+// The mass of a rigid body's elements from their density and volume
 // (docs/dynamics.md "Inertia on constrained nodes"): each element's mass goes to a node of its
 // own at its centre of mass, pinned to the body's reference node like a PIN NSET node, and its
 // inertia about that centre to the reference node (ElementMassPoint). The added node is the one
@@ -23,8 +23,8 @@ void resolve_rigid_body_element_masses(Model& model) {
   const DofMask translations = model.dimension == 2 ? DofMask{0x03} : DofMask{0x07};
   std::map<std::int32_t, std::int32_t> source_of_body;
   for (const ElementMass& m : masses) {
-    auto [found, added] = source_of_body.try_emplace(
-        m.body, static_cast<std::int32_t>(constraints.sources.size()));
+    auto [found, added] =
+        source_of_body.try_emplace(m.body, static_cast<std::int32_t>(constraints.sources.size()));
     if (added) {
       constraints.sources.push_back(
           {"*RIGID BODY", constraints.rigid_bodies[static_cast<std::size_t>(m.body)].keyword_loc});

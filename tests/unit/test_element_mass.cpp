@@ -163,9 +163,8 @@ TEST(ElementMass, DistortedSolidsAgainstTetrahedra) {
   // A parallelepiped: the unit cube under an affine map with shear in every direction.
   Matrix3 a;
   a << 0.9, 0.3, -0.2, 0.1, 0.7, 0.25, -0.15, 0.2, 0.6;
-  const auto h = hex_corners([&](int u, int v, int w) {
-    return Vector3(kOrigin + a * Vector3(u, v, w));
-  });
+  const auto h =
+      hex_corners([&](int u, int v, int w) { return Vector3(kOrigin + a * Vector3(u, v, w)); });
   std::vector<std::array<Vector3, 4>> kuhn;
   for (const auto& t : kKuhn) kuhn.push_back({h[t[0]], h[t[1]], h[t[2]], h[t[3]]});
   const std::vector<Vector3> hex(h.begin(), h.end());
@@ -178,8 +177,7 @@ TEST(ElementMass, DistortedSolidsAgainstTetrahedra) {
                                  kOrigin + Vector3(0.3, 0.9, 0.2),
                                  kOrigin + Vector3(-0.2, 0.4, 0.8)};
   const std::vector<Vector3> x(t.begin(), t.end());
-  expect_props(combine({of(ElementShape::Tet4, x, kDensity)}), tetrahedra({t}, kDensity),
-               "C3D4");
+  expect_props(combine({of(ElementShape::Tet4, x, kDensity)}), tetrahedra({t}, kDensity), "C3D4");
   expect_props(combine({of(ElementShape::Tet10, with_midsides(x, kTetEdges), kDensity)}),
                tetrahedra({t}, kDensity), "C3D10");
 }
@@ -195,8 +193,9 @@ TEST(ElementMass, SurfacesFillARotatedPlate) {
   want.mass = density * t * a * b;
   want.centre = at(0.5, 0.5);
   const double m12 = want.mass / 12;
-  want.inertia = m12 * ((b * b + t * t) * e1 * e1.transpose() +
-                        (a * a + t * t) * e2 * e2.transpose() + (a * a + b * b) * n * n.transpose());
+  want.inertia =
+      m12 * ((b * b + t * t) * e1 * e1.transpose() + (a * a + t * t) * e2 * e2.transpose() +
+             (a * a + b * b) * n * n.transpose());
   const std::vector<Vector3> quad{at(0, 0), at(1, 0), at(1, 1), at(0, 1)};
   const std::vector<std::array<int, 2>> quad_edges{{0, 1}, {1, 2}, {2, 3}, {3, 0}};
   expect_props(combine({of(ElementShape::Quad4, quad, density, t)}), want, "S4");
@@ -205,7 +204,8 @@ TEST(ElementMass, SurfacesFillARotatedPlate) {
   quad8.push_back(at(0.5, 0.5));
   expect_props(combine({of(ElementShape::Quad9, quad8, density, t)}), want, "S9R5");
   const std::vector<std::array<int, 2>> tri_edges{{0, 1}, {1, 2}, {2, 0}};
-  const std::vector<Vector3> lower{at(0, 0), at(1, 0), at(1, 1)}, upper{at(0, 0), at(1, 1), at(0, 1)};
+  const std::vector<Vector3> lower{at(0, 0), at(1, 0), at(1, 1)},
+      upper{at(0, 0), at(1, 1), at(0, 1)};
   expect_props(combine({of(ElementShape::Tri3, lower, density, t),
                         of(ElementShape::Tri3, upper, density, t)}),
                want, "S3");
@@ -228,8 +228,8 @@ TEST(ElementMass, ShellOffsetAndAddedMass) {
   want.mass = material + surface;
   want.centre = at(0.5, 0.5) - 0.5 * t * n;
   want.inertia = material / 12 *
-                     ((b * b + t * t) * e1 * e1.transpose() + (a * a + t * t) * e2 * e2.transpose() +
-                      (a * a + b * b) * n * n.transpose()) +
+                     ((b * b + t * t) * e1 * e1.transpose() +
+                      (a * a + t * t) * e2 * e2.transpose() + (a * a + b * b) * n * n.transpose()) +
                  surface / 12 *
                      (b * b * e1 * e1.transpose() + a * a * e2 * e2.transpose() +
                       (a * a + b * b) * n * n.transpose());
@@ -253,8 +253,8 @@ TEST(ElementMass, LinesAreThinRods) {
   want.centre = mid(kOrigin, end);
   want.inertia = want.mass * length * length / 12 * (Matrix3::Identity() - d * d.transpose());
   expect_props(combine({of(ElementShape::Line2, {kOrigin, end}, density, area)}), want, "T3D2");
-  expect_props(combine({of(ElementShape::Line3, {kOrigin, want.centre, end}, density, area)}),
-               want, "T3D3");
+  expect_props(combine({of(ElementShape::Line3, {kOrigin, want.centre, end}, density, area)}), want,
+               "T3D3");
 }
 
 // Beams: a RECT profile a × b is a box of sides L (along d), a (along n1), b (along n2),
@@ -281,10 +281,8 @@ TEST(ElementMass, BeamsCarryTheirProfile) {
   box.inertia = box.mass / 12 *
                 ((a * a + b * b) * axial + (length * length + b * b) * n1 * n1.transpose() +
                  (length * length + a * a) * n2 * n2.transpose());
-  expect_props(combine({of(ElementShape::Line2, line2, density, 1, rect)}),
-               box, "B31 RECT");
-  expect_props(combine({of(ElementShape::Line3, line3, density, 1, rect)}),
-               box, "B32 RECT");
+  expect_props(combine({of(ElementShape::Line2, line2, density, 1, rect)}), box, "B31 RECT");
+  expect_props(combine({of(ElementShape::Line3, line3, density, 1, rect)}), box, "B32 RECT");
 
   const double r = 0.04, t = 0.01, ri = r - t;
   const std::array<double, 1> circ_sizes{r};
