@@ -59,6 +59,19 @@ constexpr std::pair<const char*, const char*> kBoomerAmgDefaults[] = {
     {"-pc_hypre_boomeramg_P_max", "4"},
 };
 
+// One forward sweep of hybrid Gauss–Seidel going down the V-cycle and one backward sweep coming
+// up keep the cycle symmetric, as CG needs, at half the fine-level work of PETSc's default (a
+// symmetric sweep each way): the fine level holds almost all of the operator (complexity 1.02
+// on the irregular lattices), and its sweeps are most of a cycle. On the irregular NLGEOM
+// lattice with N = 30 a cycle went from 67 ms to 37–42 ms for 19 % more CG iterations, the
+// whole run from 16.5 s to 12.5–14.1 s (docs/parallel.md). A relax_type_all given in
+// PETSC_OPTIONS replaces both.
+constexpr std::pair<const char*, const char*> kRelaxationDefaults[] = {
+    {"-pc_hypre_boomeramg_relax_type_down", "SOR/Jacobi"},
+    {"-pc_hypre_boomeramg_relax_type_up", "backward-SOR/Jacobi"},
+};
+constexpr const char* kRelaxAll = "-pc_hypre_boomeramg_relax_type_all";
+
 // For a matrix of node blocks (SparseMatrix::node_block > 1) PETSc hands the block size to
 // BoomerAMG as its number of functions, and nodal coarsening by the row-sum norm of each node's
 // block (HYPRE_BoomerAMGSetNodal 4) coarsens nodes rather than single equations, as elasticity
@@ -73,7 +86,9 @@ bool given_by_user(const char* name) {
   static std::vector<std::string> given = [] {
     std::vector<std::string> names;
     for (const auto& [option, value] : kBoomerAmgDefaults) names.emplace_back(option);
+    for (const auto& [option, value] : kRelaxationDefaults) names.emplace_back(option);
     names.emplace_back(kNodalCoarsening);
+    names.emplace_back(kRelaxAll);
     std::erase_if(names, [](const std::string& option) {
       PetscBool has = PETSC_FALSE;
       PetscOptionsHasName(nullptr, nullptr, option.c_str(), &has);
@@ -87,6 +102,11 @@ bool given_by_user(const char* name) {
 PetscErrorCode set_boomeramg_defaults(bool nodal) {
   for (const auto& [name, value] : kBoomerAmgDefaults) {
     if (!given_by_user(name)) PetscCall(PetscOptionsSetValue(nullptr, name, value));
+  }
+  for (const auto& [name, value] : kRelaxationDefaults) {
+    if (!given_by_user(name) && !given_by_user(kRelaxAll)) {
+      PetscCall(PetscOptionsSetValue(nullptr, name, value));
+    }
   }
   if (given_by_user(kNodalCoarsening)) return 0;
   if (nodal) {
@@ -152,7 +172,7 @@ LinearStatus PetscSolver::analyze(const SparseMatrix& pattern, std::string* mess
   input_nonzeros_ = pattern.nonzeros();
   node_block_ = pattern.node_block;
   diagonal_ = diagonal_positions(pattern);
-  line_is_nonzero_.assign(n, 0);
+  line_entries_.assign(n, 0);
   // Full pattern in compressed rows (AIJ's layout) and its gather map.
   FullPattern full = full_pattern(pattern, true);
   row_ptr_ = std::move(full.ptr);
@@ -289,17 +309,27 @@ LinearStatus PetscSolver::factorize(const SparseMatrix& k, std::string* message)
   }
   // An equation without any stiffness (an unrestrained dof, connection-types.md §1.1) is named
   // here, as the factorizing backends name its zero pivot.
-  std::fill(line_is_nonzero_.begin(), line_is_nonzero_.end(), 0);
+  std::fill(line_entries_.begin(), line_entries_.end(), 0);
   for (int j = 0; j < n_; ++j) {
     for (int p = k.col_ptr[j]; p < k.col_ptr[j + 1]; ++p) {
-      if (k.values[p] != 0.0) line_is_nonzero_[j] = line_is_nonzero_[k.row_idx[p]] = 1;
+      if (k.values[p] == 0.0) continue;
+      const int i = k.row_idx[p];
+      if (i == j) {
+        line_entries_[j] = std::max<char>(line_entries_[j], 1);
+      } else {
+        line_entries_[j] = line_entries_[i] = 2;
+      }
     }
   }
-  if (const auto zero = std::find(line_is_nonzero_.begin(), line_is_nonzero_.end(), 0);
-      zero != line_is_nonzero_.end()) {
-    failed_pivot_ = static_cast<int>(zero - line_is_nonzero_.begin());
+  if (const auto zero = std::find(line_entries_.begin(), line_entries_.end(), 0);
+      zero != line_entries_.end()) {
+    failed_pivot_ = static_cast<int>(zero - line_entries_.begin());
     set_message(message, pivot_message(LinearStatus::Singular, failed_pivot_, name()));
     return LinearStatus::Singular;
+  }
+  decoupled_lines_.clear();
+  for (int j = 0; j < n_; ++j) {
+    if (line_entries_[j] == 1) decoupled_lines_.emplace_back(j, k.values[diagonal_[j]]);
   }
   if (const PetscErrorCode code = copy_values(k); code != 0) {
     return petsc_failure(code, "matrix access", message);
@@ -483,6 +513,12 @@ LinearStatus PetscSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x,
   }
   reset();
   if (code != 0) return petsc_failure(code, "solve", message);
+  // A line coupled to no other (a prescribed DOF's row Δu = target − u, its column moved to the
+  // right-hand side) has its exact solution: an iterative solve leaves it within the tolerance
+  // only, and Newton would then never see a prescribed DOF on its target.
+  if (!direct_ && reason_ >= 0) {
+    for (const auto& [line, diagonal] : decoupled_lines_) x[line] = b[line] / diagonal;
+  }
   if (reason_ < 0) {
     PetscReal residual = 0.0;
     KSPGetResidualNorm(ksp_, &residual);

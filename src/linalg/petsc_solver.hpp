@@ -7,6 +7,7 @@
 // the same whole matrix and right-hand side and receives the whole solution (docs/parallel.md).
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "src/linalg/linear_solver.hpp"
@@ -93,7 +94,10 @@ class PetscSolver final : public LinearSolver {
   std::vector<int> row_ptr_, col_idx_;
   std::vector<int> source_;
   std::vector<int> diagonal_;
-  std::vector<char> line_is_nonzero_;
+  // Per line of the current values: 0 no nonzero entry, 1 its diagonal only, 2 coupled to
+  // another line; and the lines of the second kind with their diagonal value.
+  std::vector<char> line_entries_;
+  std::vector<std::pair<int, double>> decoupled_lines_;
   double rtol_ = 1e-10;
   bool factorized_ = false;
   int failed_pivot_ = -1;
