@@ -160,7 +160,7 @@ void PetscSolver::set_relative_tolerance(double rtol) {
   }
   rtol_ = rtol;
   if (ksp_ != nullptr && !direct_) {
-    KSPSetTolerances(ksp_, rtol_, kAbsoluteTolerance, PETSC_DEFAULT, kMaxIterations);
+    limit_iterations(kMaxIterations);
   }
 }
 
@@ -264,14 +264,14 @@ PetscErrorCode PetscSolver::configure_iterative() {
   // right.
   if (!symmetric_) PetscCall(KSPSetPCSide(ksp_, PC_RIGHT));
   PetscCall(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED));
-  PetscCall(KSPSetTolerances(ksp_, rtol_, kAbsoluteTolerance, PETSC_DEFAULT, kMaxIterations));
+  PetscCall(limit_iterations(kMaxIterations));
   PetscCall(KSPGetPC(ksp_, &pc));
   PetscCall(PCSetType(pc, PCHYPRE));
   PetscCall(PCHYPRESetType(pc, "boomeramg"));
   PetscCall(set_boomeramg_defaults(node_block_ > 1));
   // PETSC_OPTIONS can adjust the method (-ksp_monitor, other AMG settings) for measurements.
   PetscCall(KSPSetFromOptions(ksp_));
-  PetscCall(KSPSetTolerances(ksp_, rtol_, kAbsoluteTolerance, PETSC_DEFAULT, kMaxIterations));
+  PetscCall(limit_iterations(kMaxIterations));
   return 0;
 }
 
@@ -444,6 +444,10 @@ PetscErrorCode PetscSolver::set_up_preconditioner() {
   return 0;
 }
 
+PetscErrorCode PetscSolver::limit_iterations(int iterations) {
+  return KSPSetTolerances(ksp_, rtol_, kAbsoluteTolerance, PETSC_DEFAULT, iterations);
+}
+
 PetscErrorCode PetscSolver::run_solve() {
   PetscInt iterations = 0;
   PetscCall(KSPSolve(ksp_, rhs_, solution_));
@@ -488,12 +492,11 @@ LinearStatus PetscSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x,
   // sliders: 72 GMRES iterations).
   const bool capped = !direct_ && !preconditioner_is_fresh_ && baseline_iterations_ >= 0;
   if (capped) {
-    code = KSPSetTolerances(ksp_, rtol_, kAbsoluteTolerance, PETSC_DEFAULT,
-                            std::max(2 * baseline_iterations_ + kIterationSlack, kStaleCap));
+    code = limit_iterations(std::max(2 * baseline_iterations_ + kIterationSlack, kStaleCap));
   }
   if (code == 0) code = run_solve();
   if (capped && code == 0) {
-    code = KSPSetTolerances(ksp_, rtol_, kAbsoluteTolerance, PETSC_DEFAULT, kMaxIterations);
+    code = limit_iterations(kMaxIterations);
   }
   std::string iterative_failure;
   if (code == 0 && reason_ < 0 && !direct_ && !preconditioner_is_fresh_) {

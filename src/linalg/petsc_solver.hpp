@@ -71,6 +71,8 @@ class PetscSolver final : public LinearSolver {
   // `reason_`. These helpers return PETSc error codes (PetscErrorCode).
   int run_solve();
   int set_up_preconditioner();
+  // The KSP's tolerances: rtol_ and at most `iterations` iterations.
+  int limit_iterations(int iterations);
 
   bool symmetric_;
   bool direct_;
@@ -95,7 +97,7 @@ class PetscSolver final : public LinearSolver {
   std::vector<int> source_;
   std::vector<int> diagonal_;
   // Per line of the current values: 0 no nonzero entry, 1 its diagonal only, 2 coupled to
-  // another line; and the lines of the second kind with their diagonal value.
+  // another line; and the lines of kind 1 with their diagonal value.
   std::vector<char> line_entries_;
   std::vector<std::pair<int, double>> decoupled_lines_;
   double rtol_ = 1e-10;
