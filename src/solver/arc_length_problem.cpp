@@ -16,13 +16,49 @@ void ArcLengthProblem::begin_step() {
   previous_q_.setZero(problem_.size());
   scale_squared_ = 0.0;
   has_previous_ = false;
+  attempt_ = Attempt::Secant;
 }
 
 void ArcLengthProblem::begin_increment(double arc) {
   arc_ = arc;
   delta_lpf_ = 0.0;
   delta_q_.setZero(problem_.size());
+  farthest_.setZero(problem_.size());
+  largest_residual_ = -1;
   predicting_ = true;
+}
+
+bool ArcLengthProblem::attempt_failed() {
+  if (!has_previous_) return false;
+  switch (attempt_) {
+    case Attempt::Secant:
+      // No farther than the secant predictor takes that equation, nor than the arc length would
+      // take it alone.
+      held_ = largest_residual_;
+      held_value_ = 0.0;
+      if (held_ >= 0) {
+        double reach = std::sqrt(2.0 * scale_squared_ / weights_[held_]) * arc_;
+        if (previous_q_[held_] * farthest_[held_] > 0) {
+          reach = std::min(reach, std::abs(previous_q_[held_]) * arc_ / previous_length());
+        }
+        held_value_ = std::clamp(farthest_[held_], -reach, reach);
+      }
+      held_retries_ = 0;
+      attempt_ = Attempt::Reversed;
+      return true;
+    case Attempt::Reversed:
+      attempt_ = held_value_ != 0.0 ? Attempt::Held : Attempt::Secant;
+      return attempt_ == Attempt::Held;
+    case Attempt::Held:
+      // Equilibrium found too far along the path: held again proportionally nearer.
+      if (held_distance_ > kHeldReach * arc_ && ++held_retries_ <= 2) {
+        held_value_ *= arc_ / held_distance_;
+        return true;
+      }
+      attempt_ = Attempt::Secant;
+      return false;
+  }
+  return false;
 }
 
 void ArcLengthProblem::commit() {
@@ -32,15 +68,36 @@ void ArcLengthProblem::commit() {
   delta_lpf_ = 0.0;
   delta_q_.setZero();
   has_previous_ = true;
-  failed_attempts_ = 0;
+  attempt_ = Attempt::Secant;
 }
 
 double ArcLengthProblem::scaled_dot(const Eigen::VectorXd& x, const Eigen::VectorXd& y) const {
   return x.cwiseProduct(weights_).dot(y) / scale_squared_;
 }
 
+void ArcLengthProblem::track_attempt() {
+  if (predicting_) return;
+  double largest = 0.0;
+  for (int i = 0; i < problem_.size(); ++i) {
+    if (weights_[i] == 0.0) continue;
+    const double ahead = previous_q_[i] != 0.0 ? std::copysign(1.0, previous_q_[i]) : 0.0;
+    const bool farther = ahead != 0.0 ? ahead * delta_q_[i] > ahead * farthest_[i]
+                                      : std::abs(delta_q_[i]) > std::abs(farthest_[i]);
+    if (farther) farthest_[i] = delta_q_[i];
+    if (std::abs(residual_[i]) > largest) {
+      largest = std::abs(residual_[i]);
+      largest_residual_ = i;
+    }
+  }
+}
+
+double ArcLengthProblem::previous_length() const {
+  return std::sqrt(0.5 * (scaled_dot(previous_q_, previous_q_) + previous_lpf_ * previous_lpf_));
+}
+
 double ArcLengthProblem::constraint() const {
   if (scale_squared_ == 0.0) return 0.0;  // before the first predictor: nothing to measure
+  if (holding()) return delta_q_[held_] - held_value_;
   return 0.5 * (scaled_dot(delta_q_, delta_q_) + delta_lpf_ * delta_lpf_) - arc_ * arc_;
 }
 
@@ -55,6 +112,7 @@ EvalStatus ArcLengthProblem::evaluate(Eigen::VectorXd& residual, SparseMatrix* t
   if (!status.ok) return status;
   load_rate_ = shifted_residual_ - residual_;
   const int n = problem_.size();
+  track_attempt();
   residual.resize(n + 1);
   residual.head(n) = residual_;
   residual[n] = constraint();
@@ -82,14 +140,23 @@ void ArcLengthProblem::measure(const Eigen::VectorXd& residual, const Eigen::Vec
   }
   // The point may sit off the sphere by 1e-6 of its radius squared: every point that satisfies
   // equilibrium lies on the path, and the constraint only chooses which.
-  if (arc_ > 0) {
+  const double tolerance = holding() ? 1e-6 * std::abs(held_value_) : 1e-6 * arc_ * arc_;
+  if (tolerance > 0) {
     norms.constraint_violation =
-        std::max(norms.constraint_violation, std::abs(residual[n]) / (1e-6 * arc_ * arc_));
+        std::max(norms.constraint_violation, std::abs(residual[n]) / tolerance);
   }
   // Only a point ahead of the last converged one in the displacements continues the path: one
   // behind it lies on the elastic unloading branch of a softened law (docs/riks.md).
-  if (has_previous_ && scaled_dot(delta_q_, previous_q_) <= 0) {
+  if (has_previous_ && !holding() && scaled_dot(delta_q_, previous_q_) <= 0) {
     norms.constraint_violation = std::numeric_limits<double>::infinity();
+  }
+  // A held displacement does not bound the rest of the increment: a point far beyond the arc
+  // length on the sphere skips part of the path (a snap-back) and is tried again nearer.
+  if (holding()) {
+    held_distance_ = std::sqrt(0.5 * (scaled_dot(delta_q_, delta_q_) + delta_lpf_ * delta_lpf_));
+    if (held_distance_ > kHeldReach * arc_) {
+      norms.constraint_violation = std::numeric_limits<double>::infinity();
+    }
   }
   // Nor does a point where the load falls while a damaged model only unloads: past a softening
   // limit point the load falls because damage grows; without growth the whole model is going
@@ -118,9 +185,12 @@ bool ArcLengthProblem::correction(const Eigen::VectorXd& rhs, const Eigen::Vecto
     // from unloading, and the elastic unloading branch is an equilibrium path too. The first
     // increment of a step goes along the tangent (v, 1), with λ growing. Either is scaled to
     // the length Δl.
-    if (has_previous_) {
-      const double previous =
-          std::sqrt(0.5 * (scaled_dot(previous_q_, previous_q_) + previous_lpf_ * previous_lpf_));
+    if (holding()) {
+      // λ such that the linear response takes the held equation to its value.
+      if (!(std::abs(v[held_]) > 0)) return false;
+      dlpf = (held_value_ - a[held_]) / v[held_];
+    } else if (has_previous_) {
+      const double previous = previous_length();
       if (previous > 0) {
         const double scale = arc_ / previous;
         out.head(n) = a + scale * previous_q_;
@@ -131,13 +201,18 @@ bool ArcLengthProblem::correction(const Eigen::VectorXd& rhs, const Eigen::Vecto
     }
     dlpf = arc_ / std::sqrt(0.5 * (scaled_dot(v, v) + 1.0));
   } else {
-    // The linearised constraint: ∂g/∂q = W Δq / ū², ∂g/∂λ = Δλ.
-    const double along = scaled_dot(delta_q_, v) + delta_lpf_;
-    const double scale = std::abs(scaled_dot(delta_q_, delta_q_)) + delta_lpf_ * delta_lpf_;
-    if (!(std::abs(along) > 1e-12 * std::sqrt(scale) * std::sqrt(0.5 * (scaled_dot(v, v) + 1)))) {
-      return false;
+    if (holding()) {
+      if (!(std::abs(v[held_]) > 0)) return false;
+      dlpf = (rhs[n] - a[held_]) / v[held_];
+    } else {
+      // The linearised constraint: ∂g/∂q = W Δq / ū², ∂g/∂λ = Δλ.
+      const double along = scaled_dot(delta_q_, v) + delta_lpf_;
+      const double scale = std::abs(scaled_dot(delta_q_, delta_q_)) + delta_lpf_ * delta_lpf_;
+      if (!(std::abs(along) > 1e-12 * std::sqrt(scale) * std::sqrt(0.5 * (scaled_dot(v, v) + 1)))) {
+        return false;
+      }
+      dlpf = (rhs[n] - scaled_dot(delta_q_, a)) / along;
     }
-    dlpf = (rhs[n] - scaled_dot(delta_q_, a)) / along;
   }
   out.head(n) = a + dlpf * v;
   out[n] = dlpf;

@@ -34,15 +34,22 @@ class ArcLengthProblem final : public NonlinearProblem {
   void begin_increment(double arc);
   // The converged increment becomes the start of the next one.
   void commit();
-  // An attempt from the converged state failed (before the next one is begun).
-  void attempt_failed() { ++failed_attempts_; }
-  // After an odd number of failed attempts from a converged state, the predictor keeps the last
-  // increment's Δq and reverses its Δλ: past a limit point on a kink of a law (damage starting
-  // at its peak with a steep softening) the path goes on in the displacements with the load
-  // falling, and the secant predictor, which keeps the load rising, finds no equilibrium. Only
-  // after a converged increment (the first one has no direction to keep).
-  bool reversing() const { return has_previous_ && failed_attempts_ % 2 == 1; }
-  bool can_reverse() const { return has_previous_; }
+  // An attempt from the converged state failed (before the next one is begun); true when the
+  // same arc length is to be tried again. Each arc length from a converged state is tried up to
+  // three ways before it is cut back (docs/riks.md "At a kink"): the secant predictor on the
+  // sphere, then the same with Δλ reversed, then with one displacement held ahead. Only after a
+  // converged increment (the first one has no direction to keep).
+  bool attempt_failed();
+  // Reversed: the last increment's Δq with its Δλ reversed. Past a limit point on a kink of a
+  // law (damage starting at its peak with a steep softening) the path goes on in the
+  // displacements with the load falling, and the secant predictor, which keeps the load rising,
+  // finds no equilibrium.
+  bool reversing() const { return attempt_ == Attempt::Reversed; }
+  // Held: the equation whose residual was largest when the secant attempt stopped (the one whose
+  // law passed its peak) is held where that attempt took it farthest ahead, and λ follows from
+  // equilibrium. Under one λ, the connectors that unload while another passes its peak can
+  // outweigh it on the sphere, which then cuts the path only behind the last point.
+  bool holding() const { return attempt_ == Attempt::Held; }
   double load_factor() const { return converged_lpf_ + delta_lpf_; }
   // Before the increment's first correction: the next one is the predictor.
   bool predicting() const { return predicting_; }
@@ -59,8 +66,10 @@ class ArcLengthProblem final : public NonlinearProblem {
   // ---- the border, for BorderedSolver ----
   // ∂r/∂λ at the last evaluation (exact: r is linear in λ).
   const Eigen::VectorXd& load_rate() const { return load_rate_; }
-  // The border's last row ∂g/∂(q, λ): W Δq / ū² in the problem's columns, Δλ in the last.
+  // The border's last row ∂g/∂(q, λ): W Δq / ū² in the problem's columns, Δλ in the last
+  // (the sphere); 1 in the held equation's column, 0 elsewhere (a held displacement).
   double constraint_gradient(int column) const {
+    if (holding()) return column == held_ ? 1.0 : 0.0;
     return column < problem_.size() ? weights_[column] * delta_q_[column] / scale_squared_
                                     : delta_lpf_;
   }
@@ -73,6 +82,8 @@ class ArcLengthProblem final : public NonlinearProblem {
  private:
   double scaled_dot(const Eigen::VectorXd& x, const Eigen::VectorXd& y) const;
   double constraint() const;
+  double previous_length() const;  // the last converged increment's length on the sphere
+  void track_attempt();            // farthest_ and largest_residual_ after an evaluation
 
   NonlinearProblem& problem_;
   StepProblem& step_;
@@ -84,7 +95,19 @@ class ArcLengthProblem final : public NonlinearProblem {
   double scale_squared_ = 0.0;  // ū², 0 until the first predictor sets it
   bool predicting_ = false;
   bool has_previous_ = false;
-  int failed_attempts_ = 0;  // from the current converged state
+  enum class Attempt { Secant, Reversed, Held };
+  Attempt attempt_ = Attempt::Secant;
+  // For the held attempt: per equation, the Δq of this attempt's iterates farthest ahead (along
+  // the last increment's Δq, or in magnitude where that is 0); the equation of the largest
+  // residual at the last evaluation; the equation held and its Δq.
+  Eigen::VectorXd farthest_;
+  int largest_residual_ = -1;
+  int held_ = -1;
+  double held_value_ = 0.0;
+  // A held point counts up to this many arc lengths from the converged one on the sphere.
+  static constexpr double kHeldReach = 2.0;
+  mutable double held_distance_ = 0.0;  // of the last evaluation of a held attempt
+  int held_retries_ = 0;
 };
 
 }  // namespace clinch

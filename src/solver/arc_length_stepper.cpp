@@ -49,10 +49,10 @@ TimeProposal ArcLengthStepper::next(const AttemptOutcome& outcome) {
   const bool failed = outcome.kind == AttemptOutcome::Kind::NotConverged ||
                       outcome.kind == AttemptOutcome::Kind::Diverged ||
                       outcome.kind == AttemptOutcome::Kind::EvaluationFailed;
-  // A failed arc length is tried again with the load falling before it is cut back
-  // (ArcLengthProblem::reversing): the path may turn at a limit point on a law's kink.
-  if (failed && path_.can_reverse() && !path_.reversing()) {
-    path_.attempt_failed();
+  // A failed arc length is tried again with the load falling and with a displacement held before
+  // it is cut back (ArcLengthProblem::reversing, holding): the path may turn at a limit point on
+  // a law's kink.
+  if (failed && path_.attempt_failed()) {
     return {TimeProposal::Kind::Attempt, last_arc_, true, {}};
   }
   TimeProposal proposal = arc_.next(outcome);
@@ -62,10 +62,7 @@ TimeProposal ArcLengthStepper::next(const AttemptOutcome& outcome) {
   if (proposal.kind == TimeProposal::Kind::Stop && proposal.reason.starts_with(kTime)) {
     proposal.reason.replace(0, kTime.size(), "arc length ");
   }
-  if (outcome.kind != AttemptOutcome::Kind::Converged) {
-    if (failed) path_.attempt_failed();
-    return proposal;
-  }
+  if (outcome.kind != AttemptOutcome::Kind::Converged) return proposal;
   path_.commit();
   ended_ = stopping_criterion();
   if (!ended_.empty()) return {TimeProposal::Kind::Done, 0.0, false, {}};
@@ -88,9 +85,10 @@ std::string ArcLengthStepper::stopping_criterion() {
     }
   }
   if (arc_.increments() >= max_increments_) {
-    return fmt::format("the step reached its {} increments (INC) without a stopping criterion "
-                       "of its data line (LPF {:.6g})",
-                       max_increments_, lpf);
+    return fmt::format(
+        "the step reached its {} increments (INC) without a stopping criterion "
+        "of its data line (LPF {:.6g})",
+        max_increments_, lpf);
   }
   return {};
 }

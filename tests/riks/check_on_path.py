@@ -1,7 +1,7 @@
 """Every converged point of a Riks run lies on the equilibrium path, computed here independently,
 the path passes its limit point, and the step ends where its data line says (docs/riks.md).
 
-Usage: check_on_path.py series|weld|spotweld|truss|kink HISTORY.csv STATUS.sta
+Usage: check_on_path.py series|weld|spotweld|truss|kink|series_kink HISTORY.csv STATUS.sta
 
 series (series_snap_back.inp): two AXIAL connectors in series pulled by 100 LPF at node 3. The
   first follows its table (F = 100 u exp(1 - u) at u = 0, 0.1, ..., 8, interpolated linearly),
@@ -27,6 +27,10 @@ kink (parallel_kink.inp): two AXIAL connectors in parallel pulled by 15 LPF: the
   (damage_lib.ElasticDamage), the second linear (20). Its limit point sits on the kink of the
   first's law, where the path turns by more than a right angle; the first is deleted at
   u = 0.12 and the second carries the load on. The step ends where u crosses 0.6.
+series_kink (series_kink.inp): the first connector of kink, from node 1 to node 2, in series
+  with the linear one (20) from node 2 to node 3, pulled by 15 LPF at node 3: past the peak on
+  the law's kink node 3 snaps back by about 0.5 while node 2 moves on. The step ends where u2
+  crosses 0.118, at the complete failure of the first connector (u2 = 0.12, where the load is 0).
 
 Tolerance: 1e-8 of each quantity's scale (the largest load on the path). The runs' *CONTROLS ask
 for residuals of 1e-10 of the force flux, which leaves errors near 1e-10 of these scales.
@@ -98,6 +102,18 @@ def kink_errors(rows):
     return out, [float(r["U1@2"]) for r in rows]
 
 
+def series_kink_errors(rows):
+    soft = damage_lib.ElasticDamage(100.0, 10.0, ("LINEAR", 0.02))
+    out = []
+    for r in rows:
+        lpf, u2, u3, force, spring = (float(r[k]) for k in ("LPF", "U1@2", "U1@3", "CTF1@1",
+                                                            "CTF1@2"))
+        out.append([("softening connector = reference", force - soft.update(u2)[0]),
+                    ("spring = 20 (u3 - u2)", spring - 20.0 * (u3 - u2)),
+                    ("spring = load", spring - 15.0 * lpf)])
+    return out, [float(r["U1@2"]) for r in rows]
+
+
 def truss_errors(rows):
     out = []
     length0 = math.sqrt(1.25)
@@ -113,7 +129,9 @@ CASES = {"series": (series_errors, 100.0, 7.0, "DOF 1 of the monitored node cros
          "weld": (weld_errors, 800.0, 0.025, "DOF 1 of the monitored node crossed 0.025"),
          "spotweld": (spot_weld_errors, 800.0, 0.1, "DOF 3 of the monitored node crossed 0.1"),
          "truss": (truss_errors, 100.0, -1.2, "DOF 2 of the monitored node crossed -1.2"),
-         "kink": (kink_errors, 12.0, 0.6, "DOF 1 of the monitored node crossed 0.6")}
+         "kink": (kink_errors, 12.0, 0.6, "DOF 1 of the monitored node crossed 0.6"),
+         "series_kink": (series_kink_errors, 10.0, 0.118,
+                         "DOF 1 of the monitored node crossed 0.118")}
 
 
 def main(case, history, status):
@@ -132,9 +150,11 @@ def main(case, history, status):
     if peak is None:
         failures.append("the path does not pass its limit point")
         peak = 0
-    if case == "series" and not any(monitored[i + 1] < monitored[i]
-                                     for i in range(peak, len(monitored) - 1)):
-        failures.append("the path does not snap back (u3 never falls)")
+    snap_back = {"series": "U1@3", "series_kink": "U1@3"}
+    if case in snap_back:
+        u3 = [float(r[snap_back[case]]) for r in rows]
+        if not any(u3[i + 1] < u3[i] for i in range(peak, len(u3) - 1)):
+            failures.append("the path does not snap back (u3 never falls)")
     crossed = [(m - end) * (monitored[0] - end) <= 0 for m in monitored]
     if not (crossed[-1] and not any(crossed[:-1])):
         failures.append(f"the step does not end at the first crossing of {end}")

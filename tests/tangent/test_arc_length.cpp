@@ -130,8 +130,8 @@ TEST(ArcLength, NewtonConvergesQuadraticallyOntoThePath) {
     IterationNorms norms;
     path.measure(r.residual, nullptr, norms);
     if (iteration > 0) {
-      errors.push_back(std::max(norms.largest_residual[0] / 100.0,
-                                std::abs(r.residual[n]) / (arc * arc)));
+      errors.push_back(
+          std::max(norms.largest_residual[0] / 100.0, std::abs(r.residual[n]) / (arc * arc)));
       if (errors.back() < 1e-13) break;
     }
     r.correct();
@@ -146,6 +146,87 @@ TEST(ArcLength, NewtonConvergesQuadraticallyOntoThePath) {
   const ConnectorSystem& s = *r.analysis->system;
   const double w = -s.nodal_value(2, 2);
   EXPECT_GT(path.load_factor(), 0.1);  // it moved along the path
+  EXPECT_NEAR(100.0 * path.load_factor(), path_load(w), 1e-10 * 100.0);
+}
+
+// The held attempt (docs/riks.md "At a kink") after a converged increment of the truss and two
+// failed attempts from it: the only free equation (the apex) is held, the bordered Jacobian
+// with the held row matches central differences (as above), and Newton converges onto the path.
+TEST(ArcLength, HeldAttemptMatchesFiniteDifferencesAndMeetsThePath) {
+  const double arc = 0.1;
+  RiksSystem r = riks_truss(arc);
+  ArcLengthProblem& path = *r.path;
+  const int n = path.size() - 1;
+  const auto converge = [&] {
+    for (int iteration = 0; iteration < 12; ++iteration) {
+      r.evaluate();
+      IterationNorms norms;
+      path.measure(r.residual, nullptr, norms);
+      if (iteration > 0 && norms.largest_residual[0] < 1e-10 * 100.0 &&
+          norms.constraint_violation <= 1.0) {
+        return true;
+      }
+      r.correct();
+    }
+    return false;
+  };
+  ASSERT_TRUE(converge());
+  r.step->commit();
+  path.commit();
+  const auto restart = [&] {
+    r.step->revert();
+    path.begin_increment(arc);
+  };
+  path.begin_increment(arc);
+  for (int i = 0; i < 3; ++i) {  // a secant attempt stopped after its predictor and two corrections
+    r.evaluate();
+    r.correct();
+  }
+  ASSERT_TRUE(path.attempt_failed());  // tried again reversed
+  restart();
+  EXPECT_TRUE(path.reversing());
+  r.evaluate();
+  r.correct();
+  ASSERT_TRUE(path.attempt_failed());  // tried again held
+  restart();
+  ASSERT_TRUE(path.holding());
+  for (int i = 0; i < 2; ++i) {
+    r.evaluate();
+    r.correct();
+  }
+  const ConnectorSystem& s = *r.analysis->system;
+  Eigen::VectorXd move = 0.01 * random_state(path.size(), 5u, 1.0);
+  for (int j = 0; j < n; ++j) {
+    if (s.is_prescribed(s.equation_of_solved(j))) move[j] = 0.0;
+  }
+  path.apply_correction(move);
+  r.evaluate();
+  const Eigen::VectorXd rate = path.load_rate();
+  const auto analytic = [&](int row, int column) {
+    if (row < n) return column < n ? entry(r.k, row, column) : rate[row];
+    return path.constraint_gradient(column);
+  };
+  const auto perturbed = [&path](int column, double step, Eigen::VectorXd& value) {
+    Eigen::VectorXd move = Eigen::VectorXd::Zero(path.size());
+    move[column] = step;
+    path.apply_correction(move);
+    const bool ok = path.evaluate(value, nullptr).ok;
+    move[column] = -step;
+    path.apply_correction(move);
+    return ok;
+  };
+  Eigen::VectorXd steps = Eigen::VectorXd::Constant(path.size(), 1e-6);
+  for (int j = 0; j < n; ++j) {
+    if (s.is_prescribed(s.equation_of_solved(j))) steps[j] = 0.0;
+  }
+  JacobianCheckOptions options;
+  options.compare_row = [&](int i) { return i == n || steps[i] != 0; };
+  const JacobianReport report = check_jacobian(perturbed, path.size(), steps, analytic, options);
+  ASSERT_TRUE(report.evaluated()) << report;
+  EXPECT_LE(report.max_error, 1e-5 * report.largest_analytic) << report;
+  ASSERT_TRUE(converge());
+  const double w = -s.nodal_value(2, 2);
+  EXPECT_GT(w, 0.0);
   EXPECT_NEAR(100.0 * path.load_factor(), path_load(w), 1e-10 * 100.0);
 }
 
