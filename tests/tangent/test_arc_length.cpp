@@ -39,6 +39,13 @@ struct RiksSystem {
 
   // Evaluates the bordered residual and K at the current point.
   void evaluate() { ASSERT_TRUE(path->evaluate(residual, &k).ok); }
+  // `count` Newton iterations from the current point.
+  void iterate(int count) {
+    for (int i = 0; i < count; ++i) {
+      evaluate();
+      correct();
+    }
+  }
   // One Newton iteration from the point evaluate() last saw.
   void correct() {
     std::string message;
@@ -69,29 +76,27 @@ RiksSystem riks_truss(double arc) {
   return r;
 }
 
-// Off the path (a predictor and one correction of an increment of Δl = 0.3, then a random
-// move): the bordered Jacobian against central differences with h = 1e-6. Tolerance as for the
-// connector families (test_assembled_tangent.cpp): 1e-5 of the largest entry.
-TEST(ArcLength, BorderedJacobianMatchesFiniteDifferences) {
-  RiksSystem r = riks_truss(0.3);
+// From the point reached, a random move of the free DOFs and of λ of size `size` (the prescribed
+// ones stay on their targets, as in a run), then the bordered Jacobian there against central
+// differences with h = 1e-6. Tolerance as for the connector families
+// (test_assembled_tangent.cpp): 1e-5 of the largest entry.
+void expect_bordered_jacobian_matches(RiksSystem& r, double size, unsigned seed) {
   ArcLengthProblem& path = *r.path;
-  for (int i = 0; i < 2; ++i) {  // the predictor, then one corrector
-    r.evaluate();
-    r.correct();
-  }
-  // A move of the free DOFs and of λ (the prescribed ones stay on their targets, as in a run).
   const ConnectorSystem& s = *r.analysis->system;
   const int n = path.size() - 1;
-  Eigen::VectorXd move = 0.02 * random_state(path.size(), 3u, 1.0);
+  Eigen::VectorXd steps = Eigen::VectorXd::Constant(path.size(), 1e-6);
   for (int j = 0; j < n; ++j) {
-    if (s.is_prescribed(s.equation_of_solved(j))) move[j] = 0.0;
+    if (s.is_prescribed(s.equation_of_solved(j))) steps[j] = 0.0;
+  }
+  Eigen::VectorXd move = size * random_state(path.size(), seed, 1.0);
+  for (int j = 0; j < n; ++j) {
+    if (steps[j] == 0.0) move[j] = 0.0;
   }
   path.apply_correction(move);
   r.evaluate();
-  const SparseMatrix& k = r.k;
   const Eigen::VectorXd rate = path.load_rate();
   const auto analytic = [&](int row, int column) {
-    if (row < n) return column < n ? entry(k, row, column) : rate[row];
+    if (row < n) return column < n ? entry(r.k, row, column) : rate[row];
     return path.constraint_gradient(column);
   };
   const auto perturbed = [&path](int column, double step, Eigen::VectorXd& value) {
@@ -103,16 +108,20 @@ TEST(ArcLength, BorderedJacobianMatchesFiniteDifferences) {
     path.apply_correction(move);
     return ok;
   };
-  Eigen::VectorXd steps = Eigen::VectorXd::Constant(path.size(), 1e-6);
-  for (int j = 0; j < n; ++j) {
-    if (s.is_prescribed(s.equation_of_solved(j))) steps[j] = 0.0;
-  }
   JacobianCheckOptions options;
   options.compare_row = [&](int i) { return i == n || steps[i] != 0; };
   const JacobianReport report = check_jacobian(perturbed, path.size(), steps, analytic, options);
   ASSERT_TRUE(report.evaluated()) << report;
   EXPECT_LE(report.max_error, 1e-5 * report.largest_analytic) << report;
   EXPECT_GE(report.compared, 4);
+}
+
+// Off the path (a predictor and one correction of an increment of Δl = 0.3, then a random
+// move): the bordered Jacobian against central differences.
+TEST(ArcLength, BorderedJacobianMatchesFiniteDifferences) {
+  RiksSystem r = riks_truss(0.3);
+  r.iterate(2);  // the predictor, then one corrector
+  expect_bordered_jacobian_matches(r, 0.02, 3u);
 }
 
 // Newton on the bordered system from the predictor of an increment that starts at the unloaded
@@ -156,7 +165,6 @@ TEST(ArcLength, HeldAttemptMatchesFiniteDifferencesAndMeetsThePath) {
   const double arc = 0.1;
   RiksSystem r = riks_truss(arc);
   ArcLengthProblem& path = *r.path;
-  const int n = path.size() - 1;
   const auto converge = [&] {
     for (int iteration = 0; iteration < 12; ++iteration) {
       r.evaluate();
@@ -178,54 +186,18 @@ TEST(ArcLength, HeldAttemptMatchesFiniteDifferencesAndMeetsThePath) {
     path.begin_increment(arc);
   };
   path.begin_increment(arc);
-  for (int i = 0; i < 3; ++i) {  // a secant attempt stopped after its predictor and two corrections
-    r.evaluate();
-    r.correct();
-  }
+  r.iterate(3);  // a secant attempt stopped after its predictor and two corrections
   ASSERT_TRUE(path.attempt_failed());  // tried again reversed
   restart();
   EXPECT_TRUE(path.reversing());
-  r.evaluate();
-  r.correct();
+  r.iterate(1);
   ASSERT_TRUE(path.attempt_failed());  // tried again held
   restart();
   ASSERT_TRUE(path.holding());
-  for (int i = 0; i < 2; ++i) {
-    r.evaluate();
-    r.correct();
-  }
-  const ConnectorSystem& s = *r.analysis->system;
-  Eigen::VectorXd move = 0.01 * random_state(path.size(), 5u, 1.0);
-  for (int j = 0; j < n; ++j) {
-    if (s.is_prescribed(s.equation_of_solved(j))) move[j] = 0.0;
-  }
-  path.apply_correction(move);
-  r.evaluate();
-  const Eigen::VectorXd rate = path.load_rate();
-  const auto analytic = [&](int row, int column) {
-    if (row < n) return column < n ? entry(r.k, row, column) : rate[row];
-    return path.constraint_gradient(column);
-  };
-  const auto perturbed = [&path](int column, double step, Eigen::VectorXd& value) {
-    Eigen::VectorXd move = Eigen::VectorXd::Zero(path.size());
-    move[column] = step;
-    path.apply_correction(move);
-    const bool ok = path.evaluate(value, nullptr).ok;
-    move[column] = -step;
-    path.apply_correction(move);
-    return ok;
-  };
-  Eigen::VectorXd steps = Eigen::VectorXd::Constant(path.size(), 1e-6);
-  for (int j = 0; j < n; ++j) {
-    if (s.is_prescribed(s.equation_of_solved(j))) steps[j] = 0.0;
-  }
-  JacobianCheckOptions options;
-  options.compare_row = [&](int i) { return i == n || steps[i] != 0; };
-  const JacobianReport report = check_jacobian(perturbed, path.size(), steps, analytic, options);
-  ASSERT_TRUE(report.evaluated()) << report;
-  EXPECT_LE(report.max_error, 1e-5 * report.largest_analytic) << report;
+  r.iterate(2);
+  expect_bordered_jacobian_matches(r, 0.01, 5u);
   ASSERT_TRUE(converge());
-  const double w = -s.nodal_value(2, 2);
+  const double w = -r.analysis->system->nodal_value(2, 2);
   EXPECT_GT(w, 0.0);
   EXPECT_NEAR(100.0 * path.load_factor(), path_load(w), 1e-10 * 100.0);
 }
