@@ -42,13 +42,14 @@ void ConnectorStepProblem::begin_increment(double step_time, double total_time, 
   system_.set_integration(nullptr, dt);
   system_.set_time(total_time, dt);
   total_time_ = total_time;
+  step_time_ = step_time;
   system_.set_load_factor(step_time / period_);
   conditions_.apply(system_, step_time, total_time);
   system_.start_increment(extrapolate_scale);
 }
 
-void ConnectorStepProblem::begin_dynamic_increment(double step_time, double total_time,
-                                                   double dt, const DynamicProcedure& procedure) {
+void ConnectorStepProblem::begin_dynamic_increment(double step_time, double total_time, double dt,
+                                                   const DynamicProcedure& procedure) {
   if (!dynamic_step_started_) {
     // The conditions at the step's start (time 0 of the step: a load of AMPLITUDE=STEP acts
     // there already, a ramped one still has its value of the previous step).
@@ -64,8 +65,9 @@ void ConnectorStepProblem::begin_dynamic_increment(double step_time, double tota
   system_.start_increment(0.0);
 }
 
-StepProblem::HalfIncrementResidual ConnectorStepProblem::half_increment_residual(
-    double step_time, double total_time, double dt) {
+StepProblem::HalfIncrementResidual ConnectorStepProblem::half_increment_residual(double step_time,
+                                                                                 double total_time,
+                                                                                 double dt) {
   const ConnectorSystem::Snapshot before = system_.snapshot();
   const double half = 0.5 * dt;
   // The loads halfway; the half-increment state carries its own prescribed values.
@@ -91,6 +93,17 @@ void ConnectorStepProblem::set_load_factor(double lpf) {
   load_factor_ = lpf;
   system_.set_load_factor(lpf);
   conditions_.apply(system_, lpf * period_, total_time_);
+}
+
+void ConnectorStepProblem::set_increment_fraction(double from, double to, double fraction) {
+  system_.set_load_factor((from + fraction * (to - from)) / period_);
+  const double total = total_time_ - step_time_;  // the analysis time at the step's start
+  conditions_.apply_blended(system_, {from, total + from}, {to, total + to}, fraction);
+}
+
+bool ConnectorStepProblem::loads_change(double from, double to) const {
+  const double total = total_time_ - step_time_;
+  return conditions_.loads_change({from, total + from}, {to, total + to});
 }
 
 double ConnectorStepProblem::nodal_value(std::int32_t node, int dof) const {

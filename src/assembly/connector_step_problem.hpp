@@ -33,6 +33,8 @@ class ConnectorStepProblem final : public StepProblem {
   std::string check_tangent(int step, int increment) override;
 
   void set_load_factor(double lpf) override;
+  void set_increment_fraction(double from, double to, double fraction) override;
+  bool loads_change(double from, double to) const override;
   double nodal_value(std::int32_t node, int dof) const override;
 
   FrequencyModel frequency_model() const override;
@@ -67,6 +69,7 @@ class ConnectorStepProblem final : public StepProblem {
   bool riks_ = false;                   // the step is *STATIC, RIKS
   double period_ = 1.0;      // of the step's ramps
   double total_time_ = 0.0;  // at the end of the increment
+  double step_time_ = 0.0;   // the same in the step
   double load_factor_ = 1.0;  // τ where the step's conditions end (1 but in a Riks step)
 };
 

@@ -12,8 +12,10 @@ std::int64_t component_key(std::int32_t connector, int component) {
 StepConditions::StepConditions(const Model& model, const AnalysisPlan& plan)
     : model_(model), plan_(plan) {
   for (const Amplitude& a : model_.history.amplitudes) {
-    if (a.valid) amplitudes_.emplace_back(AmplitudeFunction(a));
-    else amplitudes_.emplace_back(std::nullopt);
+    if (a.valid)
+      amplitudes_.emplace_back(AmplitudeFunction(a));
+    else
+      amplitudes_.emplace_back(std::nullopt);
   }
   const auto& steps = model_.history.steps;
   if (std::any_of(steps.begin(), steps.end(), [](const Step& s) { return !s.gravity.empty(); })) {
@@ -35,7 +37,8 @@ double StepConditions::Condition::value(
     case Mode::Jump:
       return magnitude;
     case Mode::Amplitude:
-      return magnitude * amplitudes[static_cast<std::size_t>(amplitude)]->value(step_time, total_time);
+      return magnitude *
+             amplitudes[static_cast<std::size_t>(amplitude)]->value(step_time, total_time);
     case Mode::AmplitudeAbsolute:
       return amplitudes[static_cast<std::size_t>(amplitude)]->value(step_time, total_time);
     case Mode::Fixed:
@@ -163,9 +166,8 @@ void StepConditions::begin_step(std::size_t s, ConnectorSystem& system) {
         const int eq = plan_.dofs.equation(node, dof);
         if (eq < 0) continue;  // inactive DOF: W0803 at check time
         // A prescribed rate starts from the rate the DOF has (docs/dynamics.md).
-        const double start = block.rate_order > 0
-                                 ? system.converged_rate(eq, block.rate_order)
-                                 : system.converged_value(eq);
+        const double start = block.rate_order > 0 ? system.converged_rate(eq, block.rate_order)
+                                                  : system.converged_value(eq);
         boundaries_[eq] = define(block, step, bc.magnitude, start, true);
         released_loads_.erase(eq);
       }
@@ -223,8 +225,13 @@ void StepConditions::begin_step(std::size_t s, ConnectorSystem& system) {
 // state held for this step: their last reactions become loads that keep the base state in
 // equilibrium. OP=NEW on a load leaves the base loads as they are: they are not perturbations.
 void StepConditions::begin_perturbation(const Step& step, ConnectorSystem& system) {
-  base_ = Tables{boundaries_, loads_,          motions_,
-                 connector_loads_, gravity_, released_loads_, released_connector_loads_};
+  base_ = Tables{boundaries_,
+                 loads_,
+                 motions_,
+                 connector_loads_,
+                 gravity_,
+                 released_loads_,
+                 released_connector_loads_};
   period_ = 1.0;
   auto perturbed = [](double base, double delta) {
     return Condition{Mode::Ramp, base, base + delta, -1};
@@ -309,15 +316,44 @@ void StepConditions::end_perturbation() {
 
 void StepConditions::apply(ConnectorSystem& system, double step_time, double total_time) const {
   const double tau = period_ > 0 ? step_time / period_ : 1.0;
-  auto value = [&](const Condition& c) { return c.value(tau, step_time, total_time, amplitudes_); };
+  push(system,
+       [&](const Condition& c) { return c.value(tau, step_time, total_time, amplitudes_); });
+}
+
+void StepConditions::apply_blended(ConnectorSystem& system, std::pair<double, double> from,
+                                   std::pair<double, double> to, double fraction) const {
+  const auto at = [&](const Condition& c, std::pair<double, double> time) {
+    return c.value(period_ > 0 ? time.first / period_ : 1.0, time.first, time.second, amplitudes_);
+  };
+  push(system, [&](const Condition& c) {
+    const double start = at(c, from);
+    return start + fraction * (at(c, to) - start);
+  });
+}
+
+bool StepConditions::loads_change(std::pair<double, double> from,
+                                  std::pair<double, double> to) const {
+  const auto at = [&](const Condition& c, std::pair<double, double> time) {
+    return c.value(period_ > 0 ? time.first / period_ : 1.0, time.first, time.second, amplitudes_);
+  };
+  for (const Table* table :
+       {&loads_, &released_loads_, &gravity_, &connector_loads_, &released_connector_loads_}) {
+    for (const auto& [key, c] : *table) {
+      if (at(c, from) != at(c, to)) return true;
+    }
+  }
+  return false;
+}
+
+template <class Value>
+void StepConditions::push(ConnectorSystem& system, const Value& value) const {
   IncrementConditions& conditions = system.conditions();
   conditions.clear();
   for (const auto& [eq, c] : boundaries_) {
     const int equation = static_cast<int>(eq);
-    conditions.prescribe(equation, c.rate_order == 0
-                                       ? value(c)
-                                       : system.displacement_of_rate(equation, c.rate_order,
-                                                                     value(c)));
+    conditions.prescribe(equation, c.rate_order == 0 ? value(c)
+                                                     : system.displacement_of_rate(
+                                                           equation, c.rate_order, value(c)));
   }
   for (const auto& [eq, c] : loads_) conditions.add_load(static_cast<int>(eq), value(c));
   for (const auto& [eq, c] : released_loads_) conditions.add_load(static_cast<int>(eq), value(c));
@@ -330,16 +366,15 @@ void StepConditions::apply(ConnectorSystem& system, double step_time, double tot
   for (const auto& [key, c] : motions_) {
     const auto connector = static_cast<std::size_t>(key / 8);
     const int component = static_cast<int>(key % 8);
-    conditions.prescribe_motion(static_cast<int>(connector), component,
-                                c.rate_order == 0
-                                    ? value(c)
-                                    : system.component_value_of_rate(connector, component,
-                                                                     c.rate_order, value(c)));
+    conditions.prescribe_motion(
+        static_cast<int>(connector), component,
+        c.rate_order == 0
+            ? value(c)
+            : system.component_value_of_rate(connector, component, c.rate_order, value(c)));
   }
   for (const Table* table : {&connector_loads_, &released_connector_loads_}) {
     for (const auto& [key, c] : *table) {
-      conditions.add_connector_load(static_cast<int>(key / 8), static_cast<int>(key % 8),
-                                    value(c));
+      conditions.add_connector_load(static_cast<int>(key / 8), static_cast<int>(key % 8), value(c));
     }
   }
 }
@@ -349,7 +384,8 @@ void StepConditions::end_step(double period, double total_time, double tau) {
     for (auto& [key, c] : *table) {
       if (c.mode == Mode::Hold) continue;
       const bool follows_total_time =
-          c.amplitude >= 0 && model_.history.amplitudes[static_cast<std::size_t>(c.amplitude)].total_time;
+          c.amplitude >= 0 &&
+          model_.history.amplitudes[static_cast<std::size_t>(c.amplitude)].total_time;
       if (follows_total_time) continue;
       c = Condition{Mode::Hold, 0.0, c.value(tau, period, total_time, amplitudes_), -1,
                     c.rate_order};

@@ -7,7 +7,14 @@
 namespace clinch {
 
 ArcLengthProblem::ArcLengthProblem(NonlinearProblem& problem, StepProblem& step)
-    : problem_(problem), step_(step) {}
+    : ArcLengthProblem(problem, [&step](double lpf) { step.set_load_factor(lpf); }) {}
+
+ArcLengthProblem::ArcLengthProblem(NonlinearProblem& problem,
+                                   std::function<void(double)> set_load_factor,
+                                   bool prescribed_move)
+    : problem_(problem),
+      set_load_factor_(std::move(set_load_factor)),
+      prescribed_move_(prescribed_move) {}
 
 void ArcLengthProblem::begin_step() {
   problem_.path_weights(weights_);
@@ -29,7 +36,6 @@ void ArcLengthProblem::begin_increment(double arc) {
 }
 
 bool ArcLengthProblem::attempt_failed() {
-  if (!has_previous_) return false;
   switch (attempt_) {
     case Attempt::Secant:
       // No farther than the secant predictor takes that equation, nor than the arc length would
@@ -104,9 +110,11 @@ double ArcLengthProblem::constraint() const {
 EvalStatus ArcLengthProblem::evaluate(Eigen::VectorXd& residual, SparseMatrix* tangent) {
   // r is linear in λ (the step's values are ramps in λ), so its rate is the difference of two
   // residuals one unit apart at the same state; the second evaluation leaves the conditions at λ.
-  step_.set_load_factor(load_factor() + 1.0);
-  EvalStatus status = problem_.evaluate(shifted_residual_, nullptr);
-  step_.set_load_factor(load_factor());
+  set_load_factor_(load_factor() + 1.0);
+  if (prescribed_move_ && shifted_tangent_.n == 0) shifted_tangent_ = problem_.pattern();
+  EvalStatus status =
+      problem_.evaluate(shifted_residual_, prescribed_move_ ? &shifted_tangent_ : nullptr);
+  set_load_factor_(load_factor());
   if (!status.ok) return status;
   status = problem_.evaluate(residual_, tangent);
   if (!status.ok) return status;
@@ -160,10 +168,12 @@ void ArcLengthProblem::measure(const Eigen::VectorXd& residual, const Eigen::Vec
   }
   // Nor does a point where the load falls while a damaged model only unloads: past a softening
   // limit point the load falls because damage grows; without growth the whole model is going
-  // back along its elastic unloading branch.
-  if (has_previous_ && delta_lpf_ < 0) {
+  // back along its elastic unloading branch. In the first increment, which has no direction to
+  // keep, the load falls only where it is tried reversed, and only growing damage makes that
+  // the path (a path that starts at a softening peak).
+  if (delta_lpf_ < 0) {
     const DamageChange change = problem_.damage_change();
-    if (change.damaged && !change.growing) {
+    if (has_previous_ ? change.damaged && !change.growing : !change.growing) {
       norms.constraint_violation = std::numeric_limits<double>::infinity();
     }
   }
@@ -200,6 +210,7 @@ bool ArcLengthProblem::correction(const Eigen::VectorXd& rhs, const Eigen::Vecto
       }
     }
     dlpf = arc_ / std::sqrt(0.5 * (scaled_dot(v, v) + 1.0));
+    if (reversing()) dlpf = -dlpf;
   } else {
     if (holding()) {
       if (!(std::abs(v[held_]) > 0)) return false;

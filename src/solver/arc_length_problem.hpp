@@ -17,6 +17,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 
 #include "src/solver/nonlinear_problem.hpp"
 #include "src/solver/step_problem.hpp"
@@ -25,7 +26,15 @@ namespace clinch {
 
 class ArcLengthProblem final : public NonlinearProblem {
  public:
+  // λ scales the step's values (a Riks step: StepProblem::set_load_factor) ...
   ArcLengthProblem(NonlinearProblem& problem, StepProblem& step);
+  // ... or whatever `set_load_factor` applies at λ (increment_path.hpp: the step's values
+  // ramped inside an increment, prescribed ones too); r must be linear in λ for ∂r/∂λ to be
+  // exact. Where prescribed values move with λ, their columns reach the other equations through
+  // the problem's predictor (K_fp (target − u_p), which it adds when it assembles a tangent), so
+  // ∂r/∂λ is then taken between two residuals evaluated with tangents.
+  ArcLengthProblem(NonlinearProblem& problem, std::function<void(double)> set_load_factor,
+                   bool prescribed_move = false);
 
   // ---- the step and its increments ----
   // Starts the step at λ = 0 (the step's values at P₀).
@@ -37,8 +46,9 @@ class ArcLengthProblem final : public NonlinearProblem {
   // An attempt from the converged state failed (before the next one is begun); true when the
   // same arc length is to be tried again. Each arc length from a converged state is tried up to
   // three ways before it is cut back (docs/riks.md "At a kink"): the secant predictor on the
-  // sphere, then the same with Δλ reversed, then with one displacement held ahead. Only after a
-  // converged increment (the first one has no direction to keep).
+  // sphere, then the same with Δλ reversed, then with one displacement held ahead (in the first
+  // increment, which has no direction to keep: the tangent predictor, then the same with λ
+  // falling).
   bool attempt_failed();
   // Reversed: the last increment's Δq with its Δλ reversed. Past a limit point on a kink of a
   // law (damage starting at its peak with a steep softening) the path goes on in the
@@ -86,7 +96,9 @@ class ArcLengthProblem final : public NonlinearProblem {
   void track_attempt();            // farthest_ and largest_residual_ after an evaluation
 
   NonlinearProblem& problem_;
-  StepProblem& step_;
+  std::function<void(double)> set_load_factor_;
+  bool prescribed_move_ = false;
+  SparseMatrix shifted_tangent_;  // scratch for ∂r/∂λ when prescribed values move
   Eigen::VectorXd weights_;
   Eigen::VectorXd residual_, shifted_residual_, load_rate_;
   Eigen::VectorXd delta_q_, previous_q_;  // this increment's Δq; the last converged one's

@@ -7,8 +7,9 @@ LinearStatus BorderedSolver::factorize(const SparseMatrix& k, std::string* messa
   const LinearStatus status = solver_.factorize(k, message);
   if (status == LinearStatus::Singular || status == LinearStatus::NotPositiveDefinite) {
     // The predictor continues the last increment without solving anything; the corrections
-    // solve the whole bordered matrix, which the constraint makes regular.
-    if (path_.predicting()) {
+    // solve the whole bordered matrix, which the constraint makes regular, and so does a held
+    // predictor, whose constraint is linear.
+    if (path_.predicting() && !path_.holding()) {
       whole_ = true;
       return LinearStatus::Ok;
     }
@@ -59,7 +60,7 @@ LinearStatus BorderedSolver::factorize_whole(const SparseMatrix& k, std::string*
 
 LinearStatus BorderedSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x,
                                    std::string* message) {
-  if (whole_ && path_.predicting()) {
+  if (whole_ && path_.predicting() && !path_.holding()) {
     const Eigen::VectorXd none = Eigen::VectorXd::Zero(b.size() - 1);
     if (path_.correction(b, none, none, x)) return LinearStatus::Ok;
   } else if (whole_) {

@@ -11,7 +11,9 @@ StaticStepProcedure::StaticStepProcedure(const Step& step, const StaticProcedure
     : settings_(StaticTimeSettings::of(procedure, step.max_increments, step.controls.time,
                                        output_intervals)),
       rules_{procedure.direct && procedure.no_stop, procedure.direct},
-      extrapolation_(step.extrapolation) {}
+      extrapolation_(step.extrapolation) {
+  settings_.follow_path_on_stop = true;
+}
 
 std::unique_ptr<TimeStepper> StaticStepProcedure::time_stepper() const {
   return std::make_unique<StaticTimeStepper>(settings_);

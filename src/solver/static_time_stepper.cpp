@@ -41,6 +41,13 @@ StaticTimeStepper::StaticTimeStepper(const StaticTimeSettings& settings)
 TimeProposal StaticTimeStepper::first() { return propose(); }
 
 TimeProposal StaticTimeStepper::next(const AttemptOutcome& outcome) {
+  if (following_path_) {
+    // The path was followed to the end of the first increment tried here.
+    following_path_ = false;
+    attempt_ = first_attempt_;
+    attempt_end_ = first_end_;
+    attempt_stretched_ = first_stretched_;
+  }
   if (outcome.kind != AttemptOutcome::Kind::Converged) return cut_back(outcome);
   if (attempt_stretched_) {
     step_time_ = attempt_end_;
@@ -75,6 +82,11 @@ TimeProposal StaticTimeStepper::propose() {
     attempt_ = end - step_time_;
     attempt_end_ = end;
   }
+  if (cutbacks_in_a_row_ == 0) {
+    first_attempt_ = attempt_;
+    first_end_ = attempt_end_;
+    first_stretched_ = attempt_stretched_;
+  }
   return proposal(TimeProposal::Kind::Attempt, attempt_);
 }
 
@@ -91,9 +103,22 @@ TimeProposal StaticTimeStepper::stop(std::string reason) const {
   return proposal(TimeProposal::Kind::Stop, dt_, false, std::move(reason));
 }
 
-TimeProposal StaticTimeStepper::give_up(const AttemptOutcome& outcome, std::string why) const {
+TimeProposal StaticTimeStepper::give_up(const AttemptOutcome& outcome, std::string why) {
   std::string stated = outcome.reason_stands ? outcome.reason : std::move(why);
   if (!outcome.note.empty()) stated += "; " + outcome.note;
+  if (settings_.follow_path_on_stop && !outcome.reason_stands) {
+    // Under automatic incrementation the increments before the stop may have shrunk towards
+    // the minimum; the path is followed over at least the initial increment, so that its arc
+    // lengths measure the motion around the point rather than the last sliver of time.
+    following_path_ = true;
+    if (!settings_.direct && first_attempt_ < settings_.initial_increment) {
+      const double end = std::min(settings_.period, next_output_time());
+      first_end_ = std::min(end, step_time_ + settings_.initial_increment);
+      first_attempt_ = first_end_ - step_time_;
+      first_stretched_ = first_end_ == end;
+    }
+    return proposal(TimeProposal::Kind::FollowPath, first_attempt_, false, std::move(stated));
+  }
   return stop(std::move(stated));
 }
 

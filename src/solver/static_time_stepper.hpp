@@ -41,6 +41,10 @@ struct StaticTimeSettings {
   // increment that would pass a multiple of one ends there instead, and the next resumes at the
   // increment it was shortened from.
   std::vector<double> output_intervals;
+  // Where the step would stop because no increment at this point converges (too many cutbacks,
+  // below the minimum, DIRECT), it asks instead to follow the path inside the first increment
+  // tried at this point (docs/riks.md "Inside a *STATIC increment").
+  bool follow_path_on_stop = false;
 
   static StaticTimeSettings of(const StaticProcedure& procedure, int max_increments,
                                const TimeIncrementationControls& controls,
@@ -61,7 +65,7 @@ class StaticTimeStepper final : public TimeStepper {
  private:
   TimeProposal propose();
   TimeProposal stop(std::string reason) const;
-  TimeProposal give_up(const AttemptOutcome& outcome, std::string why) const;
+  TimeProposal give_up(const AttemptOutcome& outcome, std::string why);
   void grow(const AttemptOutcome& outcome);
   TimeProposal cut_back(const AttemptOutcome& outcome);
   double next_output_time() const;
@@ -70,6 +74,10 @@ class StaticTimeStepper final : public TimeStepper {
   double dt_ = 0.0, step_time_ = 0.0;
   double attempt_ = 0.0, attempt_end_ = 0.0;  // the increment proposed and the time it ends at
   bool attempt_stretched_ = false;            // it ends exactly at an output time or the period
+  // The first increment proposed at the current step time, before any cutback, and whether the
+  // last proposal asked to follow its path.
+  double first_attempt_ = 0.0, first_end_ = 0.0;
+  bool first_stretched_ = false, following_path_ = false;
   double carry_ = 0.0;                        // the rounding the step time's sum carries
   int increments_ = 0, cutbacks_ = 0, cutbacks_in_a_row_ = 0, easy_in_a_row_ = 0;
   int accurate_in_a_row_ = 0;  // increments with ε < D_H T since the last cutback

@@ -9,6 +9,7 @@
 
 #include "src/solver/convergence_criteria.hpp"
 #include "src/solver/frequency_step.hpp"
+#include "src/solver/increment_path.hpp"
 #include "src/solver/procedure.hpp"
 #include "src/solver/static_perturbation_step.hpp"
 
@@ -90,8 +91,11 @@ class Driver {
     return false;
   }
 
-  // One attempt: Newton, then the stop active set (behaviors.md §5.1), re-solved until it settles.
-  NewtonReport attempt(int step, int increment, int attempt_number, int& iterations, int& changes) {
+  // One attempt: Newton, then the stop active set (behaviors.md §5.1), re-solved until it settles;
+  // on the step's system, or on `problem` and `solver` (a point inside an increment:
+  // increment_path.hpp).
+  NewtonReport attempt(int step, int increment, int attempt_number, int& iterations, int& changes,
+                       NonlinearProblem* problem = nullptr, LinearSolver* solver = nullptr) {
     const TimeIncrementationControls& t = controls_->time;
     const NewtonOptions options{t.ic,
                                 t.i0,
@@ -103,7 +107,8 @@ class Driver {
     changes = 0;
     for (;;) {
       const auto start = std::chrono::steady_clock::now();
-      NewtonReport report = solve_increment(*newton_problem_, *newton_solver_, criteria_, options);
+      NewtonReport report = solve_increment(problem ? *problem : *newton_problem_,
+                                            solver ? *solver : *newton_solver_, criteria_, options);
       result_.newton_seconds +=
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       result_.linear_seconds += report.linear_seconds;
@@ -151,6 +156,16 @@ class Driver {
       const int increment = stepper.increments() + 1;
       if (proposal.kind == TimeProposal::Kind::Stop) {
         return fail(proposal.reason, step_number, increment);
+      }
+      if (proposal.kind == TimeProposal::Kind::FollowPath) {
+        ++attempt_number;
+        if (!follow_path(*procedure, step_number, increment, attempt_number, proposal, last)) {
+          return false;
+        }
+        proposal = stepper.next(last.outcome);
+        result_.cutbacks = cutbacks_before + stepper.cutbacks();
+        if (!accept_increment(step_number, stepper, last)) return false;
+        continue;
       }
       if (proposal.cut_back) {
         out_.cut_back(step_number, increment, last.outcome.reason, proposal.dt);
@@ -243,11 +258,10 @@ class Driver {
       out_.note(step_number, 0,
                 "linear perturbation about the base state: the tangent there, the step's loads "
                 "and prescribed values as perturbations");
-      const bool written = out_.perturbation_response(
-          step_number, total_time_, h, [&](double tau) {
-            return evaluate_perturbed_state(problem_, step_problem_, solution.response, tau,
-                                            total_time_, error);
-          });
+      const bool written = out_.perturbation_response(step_number, total_time_, h, [&](double tau) {
+        return evaluate_perturbed_state(problem_, step_problem_, solution.response, tau,
+                                        total_time_, error);
+      });
       if (!written && error.empty()) error = "the perturbation response could not be evaluated";
     } else if (solution.failed_equation >= 0) {
       NewtonReport report;
@@ -327,9 +341,9 @@ class Driver {
       if (converged && !smaller) {
         const IterationNorms& norms = report.iterations.back();
         const double force = criteria_.average_flux(norms, 0);
-        attempted.accuracy = procedure.check_increment(
-            step_problem_, {new_time, total_time_ + dt, dt, 0.0},
-            force > 0.0 ? force : criteria_.average_flux(norms, 1));
+        attempted.accuracy =
+            procedure.check_increment(step_problem_, {new_time, total_time_ + dt, dt, 0.0},
+                                      force > 0.0 ? force : criteria_.average_flux(norms, 1));
         if (attempted.accuracy.ratio < 1.0) {
           smaller = true;
           attempted.request.dt_ratio = attempted.accuracy.ratio;
@@ -350,6 +364,50 @@ class Driver {
       }
       return true;
     }
+  }
+
+  // No increment converges at this point: the path inside the first one tried here is followed
+  // to its end (increment_path.hpp), which becomes the increment. False when that fails too
+  // (the run stops for the stepper's reason) or the run must stop here.
+  bool follow_path(const Procedure& procedure, int step_number, int increment, int attempt_number,
+                   const TimeProposal& proposal, Attempted& attempted) {
+    if (interrupted(step_number, increment)) return false;
+    const double dt = proposal.dt;
+    if (step_problem_.loads_change(step_time_, step_time_ + dt)) {
+      return fail(proposal.reason, step_number, increment);
+    }
+    int iterations = 0;
+    const IncrementSolve solve = [&](NonlinearProblem& problem, LinearSolver& solver) {
+      int its = 0, changes = 0;
+      NewtonReport report =
+          attempt(step_number, increment, attempt_number, its, changes, &problem, &solver);
+      iterations += its;
+      return report;
+    };
+    const IncrementPathResult path = follow_increment_path(
+        problem_, step_problem_, *solver_, {step_time_, total_time_, dt, procedure.period()},
+        controls_->time, solve);
+    result_.iterations += iterations;
+    note_solver_hand_over(step_number, increment);
+    if (!path.converged) {
+      step_problem_.revert();
+      return fail(fmt::format("{}; following the path inside the increment did not reach its "
+                              "end either ({})",
+                              proposal.reason, path.reason),
+                  step_number, increment);
+    }
+    out_.note(step_number, increment,
+              fmt::format("no increment converged here ({}): the path inside an increment of {} "
+                          "was followed to its end through {} points, back to {:.3g} of it",
+                          proposal.reason, dt, path.points, path.lowest));
+    attempted.request = step_problem_.step_request();
+    attempted.status_line = {step_number, increment,        attempt_number,  false, iterations,
+                             iterations,  total_time_ + dt, step_time_ + dt, dt};
+    attempted.accuracy = {};
+    attempted.outcome = {};
+    attempted.outcome.iterations = iterations;
+    attempted.last_iteration = path.last.iterations.back();
+    return true;
   }
 
   // §5.3: a failure criterion met on the converged state releases its components; the same

@@ -75,6 +75,14 @@ class StepProblem {
   // Sets the step's conditions at the load proportionality factor `lpf` (its ramps at τ = lpf),
   // leaving the state as it is; end_step then records the conditions where the step ended.
   virtual void set_load_factor(double lpf) = 0;
+  // Following the path inside an increment (increment_path.hpp): each condition at its values
+  // at step times `from` and `to` blended by `fraction` (0 at `from`, 1 at `to`, linear beyond
+  // either), leaving the state as it is.
+  virtual void set_increment_fraction(double from, double to, double fraction) = 0;
+  // Whether a load of the step has another value at step time `to` than at `from` (the path
+  // inside an increment is followed only under prescribed motion: past a limit point under a
+  // load, the far equilibrium is reached by a jump, which a static step does not take).
+  virtual bool loads_change(double from, double to) const = 0;
   // The current value of DOF `dof` (1–6) of global node `node`; 0 when the node has no such DOF.
   virtual double nodal_value(std::int32_t node, int dof) const = 0;
 

@@ -40,6 +40,10 @@ struct TimeProposal {
     Attempt,  // try an increment of `dt` (after a cutback when `cut_back`)
     Done,     // the step has reached its period
     Stop,     // the step cannot go on, because of `reason`
+    // The increment of `dt` cannot be solved as one: follow the equilibrium path inside it
+    // (increment_path.hpp) and report the outcome to next(); if that fails too, stop for
+    // `reason`.
+    FollowPath,
   };
   Kind kind = Kind::Attempt;
   double dt = 0.0;

@@ -37,6 +37,8 @@ class IncrementRecorder final : public StepProblem {
   ProcedureNeeds procedure_needs() const override { return {}; }
   std::string check_tangent(int, int) override { return {}; }
   void set_load_factor(double) override {}
+  void set_increment_fraction(double, double, double) override {}
+  bool loads_change(double, double) const override { return false; }
   double nodal_value(std::int32_t, int) const override { return 0.0; }
   void commit() override {}
   void revert() override {}

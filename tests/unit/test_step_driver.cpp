@@ -1,16 +1,17 @@
 // The step driver honours what a law asks of the time step (behaviour contract,
 // src/behavior/behavior.hpp): an increment whose law suggests a ratio below 1 is abandoned and
-// retried that much smaller, under automatic incrementation; with DIRECT it cannot be, and the run
-// stops saying why; a law that suggests a ratio of 1, or reports Unreliable, keeps the increment
-// from growing. Each test runs the whole driver on a small deck and reads its outputs.
+// retried that much smaller, under automatic incrementation; with DIRECT it cannot be: under a
+// prescribed motion the path inside the increment is followed in smaller steps to its end, under
+// a load the run stops saying why; a law that suggests a ratio of 1, or reports Unreliable, keeps
+// the increment from growing. Each test runs the whole driver on a small deck and reads its
+// outputs.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-
-#include <fmt/format.h>
 
 #include "parser/deck_reader.hpp"
 #include "src/assembly/connector_step_problem.hpp"
@@ -27,12 +28,14 @@ constexpr double kLimit = 0.02;  // the law's largest motion increment
 
 // AXIAL between node 1 (held) and node 2, moved by 0.1 along the axis over a step of period 1
 // that starts with one increment of 1 (`procedure` is the *STATIC line and its data).
-std::string axial_deck(const std::string& procedure) {
+// `drive` moves it: by default the prescribed motion; a *CLOAD of 100 reaches the same 0.1 on
+// the law's stiffness of 1000.
+std::string axial_deck(const std::string& procedure,
+                       const std::string& drive = "*BOUNDARY\n2, 1, 1, 0.1") {
   return "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n*NSET, NSET=N2\n2\n"
          "*ELEMENT, TYPE=CONN3D2, ELSET=C\n1, 1, 2\n*CONNECTOR SECTION, ELSET=C\nAXIAL,\n"
          "*BOUNDARY\n1, 1, 3\n2, 2, 3\n*STEP\n" +
-         procedure +
-         "\n*BOUNDARY\n2, 1, 1, 0.1\n*OUTPUT, HISTORY\n*NODE OUTPUT, NSET=N2\nU1\n*END STEP\n";
+         procedure + "\n" + drive + "\n*OUTPUT, HISTORY\n*NODE OUTPUT, NSET=N2\nU1\n*END STEP\n";
 }
 
 struct DriverRun {
@@ -108,11 +111,24 @@ TEST(StepDriver, CutsBackWhenALawAsksForASmallerIncrement) {
   EXPECT_DOUBLE_EQ(run.u1.back(), 0.1);
 }
 
-// DIRECT: fixed increments cannot be cut back, so the run stops at the first increment and says
-// which law asked and why.
-TEST(StepDriver, DirectIncrementationStopsWhenALawAsksForASmallerIncrement) {
+// DIRECT under a prescribed motion: the increment cannot be cut back, so the path inside it is
+// followed (docs/riks.md "Inside a *STATIC increment") in steps the law accepts, to the
+// increment's end: one increment, ending at U1 = 0.1 exactly.
+TEST(StepDriver, DirectIncrementationFollowsThePathWhenALawAsksForASmallerIncrement) {
   const IncrementLimitedSpring law(1000.0, kLimit);
   const DriverRun run = run_with_law(axial_deck("*STATIC, DIRECT\n1., 1."), law, "direct");
+  ASSERT_TRUE(run.result.completed) << run.result.reason;
+  EXPECT_EQ(run.result.increments, 1);
+  ASSERT_EQ(run.u1.size(), 2u);
+  EXPECT_DOUBLE_EQ(run.u1.back(), 0.1);
+}
+
+// DIRECT under a load: the path is not followed (a static step does not jump past a limit point
+// under a load), so the run stops at the first increment and says which law asked and why.
+TEST(StepDriver, DirectIncrementationUnderALoadStopsWhenALawAsksForASmallerIncrement) {
+  const IncrementLimitedSpring law(1000.0, kLimit);
+  const DriverRun run =
+      run_with_law(axial_deck("*STATIC, DIRECT\n1., 1.", "*CLOAD\n2, 1, 100."), law, "direct-load");
   EXPECT_FALSE(run.result.completed);
   EXPECT_EQ(run.result.increment, 1);
   EXPECT_NE(run.result.reason.find("a law asks for a smaller increment"), std::string::npos)

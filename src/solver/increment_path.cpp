@@ -1,0 +1,92 @@
+#include "src/solver/increment_path.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "src/solver/arc_length_problem.hpp"
+#include "src/solver/arc_length_stepper.hpp"
+#include "src/solver/bordered_solver.hpp"
+
+namespace clinch {
+namespace {
+
+// The path's arc lengths in units of the increment (a linear response covers Δλ = Δl), and at
+// most this many points before the increment's end.
+constexpr double kInitialArc = 0.25, kMinArc = 1e-4, kMaxArc = 0.5;
+constexpr int kMaxPoints = 200;
+
+AttemptOutcome outcome_of(const NewtonReport& report, const StepRequest& request) {
+  AttemptOutcome outcome;
+  outcome.iterations = static_cast<int>(report.iterations.size());
+  if (!report.converged()) {
+    outcome.kind = report.outcome == NewtonOutcome::Diverged ? AttemptOutcome::Kind::Diverged
+                                                             : AttemptOutcome::Kind::NotConverged;
+    outcome.reason = report.message;
+  } else if (request.dt_ratio < 1.0) {
+    outcome.kind = AttemptOutcome::Kind::LawAsksSmaller;
+    outcome.dt_ratio = request.dt_ratio;
+    outcome.reason = request.message;
+  }
+  return outcome;
+}
+
+}  // namespace
+
+IncrementPathResult follow_increment_path(NonlinearProblem& problem, StepProblem& step,
+                                          LinearSolver& solver, const IncrementSpan& span,
+                                          const TimeIncrementationControls& controls,
+                                          const IncrementSolve& solve) {
+  const auto time_at = [&span](double lpf) { return span.step_time + lpf * span.dt; };
+  const double from = span.step_time, to = span.step_time + span.dt;
+  ArcLengthProblem path(
+      problem, [&](double lpf) { step.set_increment_fraction(from, to, lpf); }, true);
+  BorderedSolver bordered(solver, path);
+  path.begin_step();
+  StaticProcedure arcs;
+  arcs.riks = RiksSettings{};
+  arcs.riks->initial_arc = kInitialArc;
+  arcs.riks->min_arc = kMinArc;
+  arcs.riks->max_arc = kMaxArc;
+  ArcLengthStepper stepper(arcs, kMaxPoints, controls, path, step);
+  IncrementPathResult result;
+  for (TimeProposal proposal = stepper.first();;) {
+    if (proposal.kind != TimeProposal::Kind::Attempt) {
+      result.reason =
+          proposal.kind == TimeProposal::Kind::Stop
+              ? proposal.reason
+              : fmt::format("{} points without reaching the increment's end", kMaxPoints);
+      return result;
+    }
+    const double start = path.load_factor();
+    step.begin_increment(time_at(start), span.total_time + (time_at(start) - span.step_time),
+                         proposal.dt * span.dt, 0.0);
+    path.begin_increment(proposal.dt);
+    result.last = solve(path, bordered);
+    AttemptOutcome outcome = outcome_of(result.last, step.step_request());
+    if (outcome.kind == AttemptOutcome::Kind::Converged && path.load_factor() >= 1.0) {
+      // Past the end: the end itself, directly from the last point.
+      step.revert();
+      step.begin_increment(to, span.total_time + span.dt, (1.0 - start) * span.dt, 0.0);
+      result.last = solve(problem, solver);
+      outcome = outcome_of(result.last, step.step_request());
+      if (outcome.kind == AttemptOutcome::Kind::Converged) {
+        result.converged = true;
+        return result;
+      }
+      if (outcome.kind == AttemptOutcome::Kind::LawAsksSmaller) {
+        outcome.kind = AttemptOutcome::Kind::NotConverged;
+      }
+    }
+    proposal = stepper.next(outcome);
+    if (outcome.kind == AttemptOutcome::Kind::Converged) {
+      step.commit();
+      ++result.points;
+      result.lowest = std::min(result.lowest, path.load_factor());
+    } else {
+      step.revert();
+    }
+  }
+}
+
+}  // namespace clinch
