@@ -83,6 +83,9 @@ double ArcLengthProblem::scaled_dot(const Eigen::VectorXd& x, const Eigen::Vecto
 
 void ArcLengthProblem::track_attempt() {
   if (predicting_) return;
+  // The equation to hold is the one out of balance at the predicted point, before the
+  // corrections (which may diverge) move the imbalance elsewhere.
+  const bool first = largest_residual_ < 0;
   double largest = 0.0;
   for (int i = 0; i < problem_.size(); ++i) {
     if (weights_[i] == 0.0) continue;
@@ -90,7 +93,7 @@ void ArcLengthProblem::track_attempt() {
     const bool farther = ahead != 0.0 ? ahead * delta_q_[i] > ahead * farthest_[i]
                                       : std::abs(delta_q_[i]) > std::abs(farthest_[i]);
     if (farther) farthest_[i] = delta_q_[i];
-    if (std::abs(residual_[i]) > largest) {
+    if (first && std::abs(residual_[i]) > largest) {
       largest = std::abs(residual_[i]);
       largest_residual_ = i;
     }
@@ -131,6 +134,8 @@ void ArcLengthProblem::apply_correction(const Eigen::VectorXd& correction) {
   const int n = problem_.size();
   const Eigen::VectorXd dq = correction.head(n);
   problem_.apply_correction(dq);
+  // Ahead, in the first increment of a path, is where its tangent predictor went.
+  if (predicting_ && !has_previous_ && attempt_ == Attempt::Secant) previous_q_ = dq;
   delta_q_ += dq;
   delta_lpf_ += correction[n];
   predicting_ = false;
