@@ -44,6 +44,7 @@ TimeProposal StaticTimeStepper::next(const AttemptOutcome& outcome) {
   if (following_path_) {
     // The path was followed to the end of the first increment tried here.
     following_path_ = false;
+    dt_ = first_attempt_;  // the cutbacks before it do not hold the increments after it back
     attempt_ = first_attempt_;
     attempt_end_ = first_end_;
     attempt_stretched_ = first_stretched_;

@@ -398,7 +398,8 @@ class Driver {
     }
     out_.note(step_number, increment,
               fmt::format("no increment converged here ({}): the path inside an increment of {} "
-                          "was followed to its end through {} points, back to {:.3g} of it",
+                          "was followed to its end through {} points, its values going back as "
+                          "far as {:.3g} of it",
                           proposal.reason, dt, path.points, path.lowest));
     attempted.request = step_problem_.step_request();
     attempted.status_line = {step_number, increment,        attempt_number,  false, iterations,
