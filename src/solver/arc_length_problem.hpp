@@ -55,8 +55,8 @@ class ArcLengthProblem final : public NonlinearProblem {
   // displacements with the load falling, and the secant predictor, which keeps the load rising,
   // finds no equilibrium.
   bool reversing() const { return attempt_ == Attempt::Reversed; }
-  // Held: the equation whose residual was largest when the secant attempt stopped (the one whose
-  // law passed its peak) is held where that attempt took it farthest ahead, and λ follows from
+  // Held: the equation whose residual was largest at the secant attempt's predicted point (the
+  // one whose law passed its peak) is held where that attempt took it farthest ahead, and λ follows from
   // equilibrium. Under one λ, the connectors that unload while another passes its peak can
   // outweigh it on the sphere, which then cuts the path only behind the last point.
   bool holding() const { return attempt_ == Attempt::Held; }

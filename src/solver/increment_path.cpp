@@ -64,6 +64,16 @@ IncrementPathResult follow_increment_path(NonlinearProblem& problem, StepProblem
     path.begin_increment(proposal.dt);
     result.last = solve(path, bordered);
     AttemptOutcome outcome = outcome_of(result.last, step.step_request());
+    if (span.loads_change && outcome.kind == AttemptOutcome::Kind::Converged &&
+        path.load_factor() < start) {
+      // Under a load the path turned back: a limit point, past which the far equilibrium is
+      // reached only by a jump.
+      result.limit_point = true;
+      result.reason = "the load passes a limit point inside it";
+      result.note = step.failure_note(-1);
+      step.revert();
+      return result;
+    }
     if (outcome.kind == AttemptOutcome::Kind::Converged && path.load_factor() >= 1.0) {
       // Past the end: the end itself, directly from the last point.
       step.revert();

@@ -2,7 +2,8 @@
 // *STATIC increment"). Where no increment at a point of the step converges (a snap-back under
 // displacement control: past the peak of a softening connector in series with a softer spring,
 // the driven motion no longer determines the state, and the equilibrium at the increment's end
-// lies on a far branch that Newton cannot reach from the near one), the step's values are ramped
+// lies on a far branch that Newton cannot reach from the near one; or a model of several
+// connectors whose Newton fails together where each alone converges), the step's values are ramped
 // from the increment's start to its end by a parameter λ (time t₀ + λ Δt) and the path is
 // followed in λ by the arc-length method of a Riks step (arc_length_problem.hpp): λ may fall
 // and rise again through the snap-back. Once a point passes λ = 1, the increment's end is solved
@@ -22,20 +23,24 @@
 namespace clinch {
 
 // The increment: it starts at `step_time` of the step (`total_time` of the analysis) and is `dt`
-// long; the step's period, which scales StepProblem::set_load_factor.
+// long. Where a load changes in it, the path counts only while λ rises: a point where it falls
+// is past a limit point under that load, which a static step does not jump (the follower then
+// fails, saying so).
 struct IncrementSpan {
   double step_time = 0.0;
   double total_time = 0.0;
   double dt = 0.0;
-  double period = 1.0;
+  bool loads_change = false;
 };
 
 struct IncrementPathResult {
-  bool converged = false;  // the state at the increment's end, not committed
-  int points = 0;          // converged points on the way, committed
-  double lowest = 0.0;     // the least λ the path went back to
-  std::string reason;      // why it failed
-  NewtonReport last;       // the solve at the increment's end (or the last failed one)
+  bool converged = false;    // the state at the increment's end, not committed
+  int points = 0;            // converged points on the way, committed
+  double lowest = 0.0;       // the least λ the path went back to
+  std::string reason;        // why it failed
+  bool limit_point = false;  // under a load, the path turned back
+  std::string note;          // then what the state says of it (the softening connector)
+  NewtonReport last;         // the solve at the increment's end (or the last failed one)
 };
 
 // Solves the current increment on the given problem and solver (the step driver's attempt: Newton

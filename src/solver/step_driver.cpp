@@ -159,7 +159,7 @@ class Driver {
       }
       if (proposal.kind == TimeProposal::Kind::FollowPath) {
         ++attempt_number;
-        if (!follow_path(*procedure, step_number, increment, attempt_number, proposal, last)) {
+        if (!follow_path(step_number, increment, attempt_number, proposal, last)) {
           return false;
         }
         proposal = stepper.next(last.outcome);
@@ -369,13 +369,10 @@ class Driver {
   // No increment converges at this point: the path inside the first one tried here is followed
   // to its end (increment_path.hpp), which becomes the increment. False when that fails too
   // (the run stops for the stepper's reason) or the run must stop here.
-  bool follow_path(const Procedure& procedure, int step_number, int increment, int attempt_number,
-                   const TimeProposal& proposal, Attempted& attempted) {
+  bool follow_path(int step_number, int increment, int attempt_number, const TimeProposal& proposal,
+                   Attempted& attempted) {
     if (interrupted(step_number, increment)) return false;
     const double dt = proposal.dt;
-    if (step_problem_.loads_change(step_time_, step_time_ + dt)) {
-      return fail(proposal.reason, step_number, increment);
-    }
     int iterations = 0;
     const IncrementSolve solve = [&](NonlinearProblem& problem, LinearSolver& solver) {
       int its = 0, changes = 0;
@@ -385,15 +382,19 @@ class Driver {
       return report;
     };
     const IncrementPathResult path = follow_increment_path(
-        problem_, step_problem_, *solver_, {step_time_, total_time_, dt, procedure.period()},
+        problem_, step_problem_, *solver_,
+        {step_time_, total_time_, dt, step_problem_.loads_change(step_time_, step_time_ + dt)},
         controls_->time, solve);
     result_.iterations += iterations;
     note_solver_hand_over(step_number, increment);
     if (!path.converged) {
       step_problem_.revert();
+      // The limit-point note once: the stepper's reason may have it already.
+      const bool noted =
+          path.note.empty() || proposal.reason.find("a limit point") != std::string::npos;
       return fail(fmt::format("{}; following the path inside the increment did not reach its "
-                              "end either ({})",
-                              proposal.reason, path.reason),
+                              "end either ({}{})",
+                              proposal.reason, path.reason, noted ? "" : ": " + path.note),
                   step_number, increment);
     }
     out_.note(step_number, increment,
