@@ -58,10 +58,10 @@ IncrementPathResult follow_increment_path(NonlinearProblem& problem, StepProblem
               : fmt::format("{} points without reaching the increment's end", kMaxPoints);
       return result;
     }
-    const double start = path.load_factor();
+    path.begin_increment(proposal.dt);
+    const double start = path.load_factor();  // the last point's
     step.begin_increment(time_at(start), span.total_time + (time_at(start) - span.step_time),
                          proposal.dt * span.dt, 0.0);
-    path.begin_increment(proposal.dt);
     result.last = solve(path, bordered);
     AttemptOutcome outcome = outcome_of(result.last, step.step_request());
     if (span.loads_change && outcome.kind == AttemptOutcome::Kind::Converged &&

@@ -74,12 +74,12 @@ TEST(StaticTimeStepper, GrowsNoMoreThanTheAccuracyAllows) {
     o.accuracy = ratio;
     return o;
   };
-  EXPECT_NEAR(stepper.next(accurate(0.5)).dt, 0.1, 0.1 * kTol);       // one accurate increment
-  EXPECT_NEAR(stepper.next(accurate(0.5)).dt, 0.1, 0.1 * kTol);       // two: D_D would grow
-  EXPECT_NEAR(stepper.next(accurate(0.8)).dt, 0.1, 0.1 * kTol);       // 0.8 ≥ D_H: count restarts
+  EXPECT_NEAR(stepper.next(accurate(0.5)).dt, 0.1, 0.1 * kTol);  // one accurate increment
+  EXPECT_NEAR(stepper.next(accurate(0.5)).dt, 0.1, 0.1 * kTol);  // two: D_D would grow
+  EXPECT_NEAR(stepper.next(accurate(0.8)).dt, 0.1, 0.1 * kTol);  // 0.8 ≥ D_H: count restarts
   EXPECT_NEAR(stepper.next(accurate(0.7)).dt, 0.1, 0.1 * kTol);
   EXPECT_NEAR(stepper.next(accurate(0.7)).dt, 0.1, 0.1 * kTol);
-  EXPECT_NEAR(stepper.next(accurate(0.7)).dt, 0.8 / 0.7 * 0.1, 1e-16);  // third: D_S/(ε/T)
+  EXPECT_NEAR(stepper.next(accurate(0.7)).dt, 0.8 / 0.7 * 0.1, 1e-16);         // third: D_S/(ε/T)
   EXPECT_NEAR(stepper.next(accurate(0.1)).dt, 1.25 * 0.8 / 0.7 * 0.1, 1e-16);  // capped by D_M
   AttemptOutcome smaller = failed(AttemptOutcome::Kind::LawAsksSmaller, "half-increment residual");
   smaller.dt_ratio = 0.5;
@@ -289,6 +289,42 @@ TEST(StaticTimeStepper, LeavesNoSliverAtOutputTimesAfterLongRuns) {
   }
   EXPECT_EQ(plain.increments(), 3000000);
   EXPECT_GT(smallest, 1e-4 * (1 - 1e-6));
+}
+
+// Where the step would stop, a stepper that may follow the path asks for it instead
+// (TimeProposal::FollowPath, docs/riks.md "Inside a *STATIC increment") over the first increment
+// tried there, at least the initial one, with the stop's reason; once the path reaches its end,
+// that increment is accepted and the next starts at its size. D_C = 0.25 per cutback, I_A = 5:
+// 0.1 at 0.2, cut to 0.025, 0.00625, ..., the sixth failure asks for the path over 0.1.
+TEST(StaticTimeStepper, FollowsThePathWhereTheStepWouldStop) {
+  StaticTimeSettings s = settings(0.1);
+  s.follow_path_on_stop = true;
+  StaticTimeStepper stepper(s);
+  stepper.first();
+  stepper.next(converged(3));
+  stepper.next(converged(3));  // at 0.2, the next increment 0.15
+  TimeProposal p;
+  for (int i = 0; i < 6; ++i) p = stepper.next(failed(AttemptOutcome::Kind::NotConverged));
+  EXPECT_EQ(p.kind, Kind::FollowPath);
+  EXPECT_NEAR(p.dt, 0.15, 0.15 * kTol);  // the first tried at 0.2, above the initial 0.1
+  EXPECT_NE(p.reason.find("too many cutbacks"), std::string::npos) << p.reason;
+  p = stepper.next(converged(8));
+  EXPECT_NEAR(stepper.step_time(), 0.35, 0.35 * kTol);
+  EXPECT_EQ(stepper.increments(), 3);
+  EXPECT_EQ(p.kind, Kind::Attempt);
+  EXPECT_NEAR(p.dt, 0.15, 0.15 * kTol);  // 5–10 iterations: not grown, not cut
+
+  // Under DIRECT: the fixed increment.
+  StaticTimeSettings d = settings(0.25);
+  d.direct = true;
+  d.follow_path_on_stop = true;
+  StaticTimeStepper direct(d);
+  direct.first();
+  p = direct.next(failed(AttemptOutcome::Kind::NotConverged));
+  EXPECT_EQ(p.kind, Kind::FollowPath);
+  EXPECT_DOUBLE_EQ(p.dt, 0.25);
+  direct.next(converged(3));
+  EXPECT_DOUBLE_EQ(direct.step_time(), 0.25);
 }
 
 }  // namespace
