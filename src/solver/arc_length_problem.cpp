@@ -35,21 +35,25 @@ void ArcLengthProblem::begin_increment(double arc) {
   predicting_ = true;
 }
 
+void ArcLengthProblem::hold(int equation) {
+  // No farther than the secant predictor takes that equation, nor than the arc length would take
+  // it alone.
+  held_ = equation;
+  held_value_ = 0.0;
+  if (held_ < 0) return;
+  double reach = std::sqrt(2.0 * scale_squared_ / weights_[held_]) * arc_;
+  if (previous_q_[held_] * farthest_[held_] > 0) {
+    reach = std::min(reach, std::abs(previous_q_[held_]) * arc_ / previous_length());
+  }
+  held_value_ = std::clamp(farthest_[held_], -reach, reach);
+}
+
 bool ArcLengthProblem::attempt_failed() {
   switch (attempt_) {
     case Attempt::Secant:
-      // No farther than the secant predictor takes that equation, nor than the arc length would
-      // take it alone.
-      held_ = largest_residual_;
-      held_value_ = 0.0;
-      if (held_ >= 0) {
-        double reach = std::sqrt(2.0 * scale_squared_ / weights_[held_]) * arc_;
-        if (previous_q_[held_] * farthest_[held_] > 0) {
-          reach = std::min(reach, std::abs(previous_q_[held_]) * arc_ / previous_length());
-        }
-        held_value_ = std::clamp(farthest_[held_], -reach, reach);
-      }
+      hold(largest_residual_);
       held_retries_ = 0;
+      held_switched_ = false;
       attempt_ = Attempt::Reversed;
       return true;
     case Attempt::Reversed:
@@ -60,6 +64,14 @@ bool ArcLengthProblem::attempt_failed() {
       if (held_distance_ > kHeldReach * arc_ && ++held_retries_ <= 2) {
         held_value_ *= arc_ / held_distance_;
         return true;
+      }
+      // Another equation out of balance once the held one is in balance (a second connector at
+      // its peak): held instead, once.
+      if (!held_switched_ && out_of_balance_ >= 0) {
+        held_switched_ = true;
+        held_retries_ = 0;
+        hold(out_of_balance_);
+        if (held_value_ != 0.0) return true;
       }
       attempt_ = Attempt::Secant;
       return false;
@@ -86,7 +98,8 @@ void ArcLengthProblem::track_attempt() {
   // The equation to hold is the one out of balance at the predicted point, before the
   // corrections (which may diverge) move the imbalance elsewhere.
   const bool first = largest_residual_ < 0;
-  double largest = 0.0;
+  double largest = 0.0, largest_other = 0.0;
+  out_of_balance_ = -1;
   for (int i = 0; i < problem_.size(); ++i) {
     if (weights_[i] == 0.0) continue;
     const double ahead = previous_q_[i] != 0.0 ? std::copysign(1.0, previous_q_[i]) : 0.0;
@@ -96,6 +109,10 @@ void ArcLengthProblem::track_attempt() {
     if (first && std::abs(residual_[i]) > largest) {
       largest = std::abs(residual_[i]);
       largest_residual_ = i;
+    }
+    if (i != held_ && std::abs(residual_[i]) > largest_other) {
+      largest_other = std::abs(residual_[i]);
+      out_of_balance_ = i;
     }
   }
 }

@@ -56,9 +56,11 @@ class ArcLengthProblem final : public NonlinearProblem {
   // finds no equilibrium.
   bool reversing() const { return attempt_ == Attempt::Reversed; }
   // Held: the equation whose residual was largest at the secant attempt's predicted point (the
-  // one whose law passed its peak) is held where that attempt took it farthest ahead, and λ follows from
-  // equilibrium. Under one λ, the connectors that unload while another passes its peak can
-  // outweigh it on the sphere, which then cuts the path only behind the last point.
+  // one whose law passed its peak) is held where that attempt took it farthest ahead, and λ
+  // follows from equilibrium. Under one λ, the connectors that unload while another passes its
+  // peak can outweigh it on the sphere, which then cuts the path only behind the last point.
+  // Where that fails with another equation out of balance (a second connector at its peak), that
+  // one is held instead, once.
   bool holding() const { return attempt_ == Attempt::Held; }
   double load_factor() const { return converged_lpf_ + delta_lpf_; }
   // Before the increment's first correction: the next one is the predictor.
@@ -94,6 +96,7 @@ class ArcLengthProblem final : public NonlinearProblem {
   double constraint() const;
   double previous_length() const;  // the last converged increment's length on the sphere
   void track_attempt();            // farthest_ and largest_residual_ after an evaluation
+  void hold(int equation);         // held_ and held_value_ for the next held attempt
 
   NonlinearProblem& problem_;
   std::function<void(double)> set_load_factor_;
@@ -110,16 +113,18 @@ class ArcLengthProblem final : public NonlinearProblem {
   enum class Attempt { Secant, Reversed, Held };
   Attempt attempt_ = Attempt::Secant;
   // For the held attempt: per equation, the Δq of this attempt's iterates farthest ahead (along
-  // the last increment's Δq, or in magnitude where that is 0); the equation of the largest
-  // residual at the last evaluation; the equation held and its Δq.
+  // the last increment's Δq, or the first increment's predictor); the equation of the largest
+  // residual at the attempt's predicted point; the equation held and its Δq.
   Eigen::VectorXd farthest_;
   int largest_residual_ = -1;
+  int out_of_balance_ = -1;  // the largest residual but the held one's, at the last evaluation
   int held_ = -1;
   double held_value_ = 0.0;
   // A held point counts up to this many arc lengths from the converged one on the sphere.
   static constexpr double kHeldReach = 2.0;
   mutable double held_distance_ = 0.0;  // of the last evaluation of a held attempt
   int held_retries_ = 0;
+  bool held_switched_ = false;  // the held equation was changed once from this arc length
 };
 
 }  // namespace clinch
