@@ -95,15 +95,18 @@ void ConnectorStepProblem::set_load_factor(double lpf) {
   conditions_.apply(system_, lpf * period_, total_time_);
 }
 
+StepConditions::Time ConnectorStepProblem::time_of(double step_time) const {
+  return {step_time, total_time_ - step_time_ + step_time};
+}
+
 void ConnectorStepProblem::set_increment_fraction(double from, double to, double fraction) {
   system_.set_load_factor((from + fraction * (to - from)) / period_);
-  const double total = total_time_ - step_time_;  // the analysis time at the step's start
-  conditions_.apply_blended(system_, {from, total + from}, {to, total + to}, fraction);
+  conditions_.apply_blended(system_, time_of(from), time_of(to), fraction);
+  system_.prescribed_targets_moved();
 }
 
 bool ConnectorStepProblem::loads_change(double from, double to) const {
-  const double total = total_time_ - step_time_;
-  return conditions_.loads_change({from, total + from}, {to, total + to});
+  return conditions_.loads_change(time_of(from), time_of(to));
 }
 
 double ConnectorStepProblem::nodal_value(std::int32_t node, int dof) const {

@@ -56,20 +56,21 @@ class ConnectorStepProblem final : public StepProblem {
   // Newton names a solved equation (connector_system.hpp).
   std::string failure_note(int failed_equation) const override {
     return system_.failure_note(
-        failed_equation < 0 ? failed_equation : system_.equation_of_solved(failed_equation),
-        riks_);
+        failed_equation < 0 ? failed_equation : system_.equation_of_solved(failed_equation), riks_);
   }
 
  private:
   const Model& model_;
   ConnectorSystem& system_;
   StepConditions conditions_;
-  bool dynamic_step_started_ = false;  // this step's start state has been taken
+  bool dynamic_step_started_ = false;   // this step's start state has been taken
   bool finite_rotary_inertia_ = false;  // the step is dynamic, under NLGEOM, with such a node
   bool riks_ = false;                   // the step is *STATIC, RIKS
-  double period_ = 1.0;      // of the step's ramps
-  double total_time_ = 0.0;  // at the end of the increment
-  double step_time_ = 0.0;   // the same in the step
+  double period_ = 1.0;                 // of the step's ramps
+  double total_time_ = 0.0;             // at the end of the increment
+  double step_time_ = 0.0;              // the same in the step
+  // The step time `step_time` with the analysis time it falls at.
+  StepConditions::Time time_of(double step_time) const;
   double load_factor_ = 1.0;  // τ where the step's conditions end (1 but in a Riks step)
 };
 

@@ -375,9 +375,6 @@ void ConnectorSystem::apply_prescribed_rotations() {
 EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* tangent) {
   internal_.setZero();
   element_forces_ = {};
-  // The targets may have moved since the last correction (a path followed inside an increment
-  // ramps them with its parameter: increment_path.hpp).
-  update_prescribed_predictor();
   if (predicting_) predictor_.setZero();
   if (tangent) std::fill(tangent->values.begin(), tangent->values.end(), 0.0);
   // Each rank sets the flags of its own connectors' multipliers (exchange() merges them).

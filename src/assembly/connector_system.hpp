@@ -57,6 +57,9 @@ class ConnectorSystem final : public NonlinearProblem {
   }
   bool nlgeom() const { return context_.nlgeom; }
   IncrementConditions& conditions() { return conditions_; }
+  // The prescribed targets moved within the increment (a path followed inside it ramps them with
+  // its parameter: increment_path.hpp): the predictor takes the state to them again.
+  void prescribed_targets_moved() { update_prescribed_predictor(); }
   // Starts an increment: with `extrapolate_scale` ≠ 0, adds that times the last converged
   // increment to the DOFs (finite rotations excepted). Prescribed DOFs do not jump to their
   // targets (finite rotations excepted): the next correction takes them there, the free DOFs

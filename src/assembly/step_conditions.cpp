@@ -315,31 +315,26 @@ void StepConditions::end_perturbation() {
 }
 
 void StepConditions::apply(ConnectorSystem& system, double step_time, double total_time) const {
-  const double tau = period_ > 0 ? step_time / period_ : 1.0;
-  push(system,
-       [&](const Condition& c) { return c.value(tau, step_time, total_time, amplitudes_); });
+  push(system, [&](const Condition& c) { return value_at(c, {step_time, total_time}); });
 }
 
-void StepConditions::apply_blended(ConnectorSystem& system, std::pair<double, double> from,
-                                   std::pair<double, double> to, double fraction) const {
-  const auto at = [&](const Condition& c, std::pair<double, double> time) {
-    return c.value(period_ > 0 ? time.first / period_ : 1.0, time.first, time.second, amplitudes_);
-  };
+double StepConditions::value_at(const Condition& c, Time time) const {
+  return c.value(period_ > 0 ? time.first / period_ : 1.0, time.first, time.second, amplitudes_);
+}
+
+void StepConditions::apply_blended(ConnectorSystem& system, Time from, Time to,
+                                   double fraction) const {
   push(system, [&](const Condition& c) {
-    const double start = at(c, from);
-    return start + fraction * (at(c, to) - start);
+    const double start = value_at(c, from);
+    return start + fraction * (value_at(c, to) - start);
   });
 }
 
-bool StepConditions::loads_change(std::pair<double, double> from,
-                                  std::pair<double, double> to) const {
-  const auto at = [&](const Condition& c, std::pair<double, double> time) {
-    return c.value(period_ > 0 ? time.first / period_ : 1.0, time.first, time.second, amplitudes_);
-  };
+bool StepConditions::loads_change(Time from, Time to) const {
   for (const Table* table :
        {&loads_, &released_loads_, &gravity_, &connector_loads_, &released_connector_loads_}) {
     for (const auto& [key, c] : *table) {
-      if (at(c, from) != at(c, to)) return true;
+      if (value_at(c, from) != value_at(c, to)) return true;
     }
   }
   return false;

@@ -25,13 +25,13 @@ class StepConditions {
   void begin_step(std::size_t step, ConnectorSystem& system);
   // Pushes the values at (step time, total time) into the system. τ = step_time / period.
   void apply(ConnectorSystem& system, double step_time, double total_time) const;
-  // Pushes each condition's values at (step time, total time) `from` and `to` blended by
-  // `fraction`: v(from) + fraction (v(to) − v(from)), linear in it (increment_path.hpp).
-  void apply_blended(ConnectorSystem& system, std::pair<double, double> from,
-                     std::pair<double, double> to, double fraction) const;
-  // Whether any load (nodal, connector, gravity) has another value at (step time, total time)
-  // `to` than at `from`.
-  bool loads_change(std::pair<double, double> from, std::pair<double, double> to) const;
+  // A time of the step: (step time, total time).
+  using Time = std::pair<double, double>;
+  // Pushes each condition's values at `from` and `to` blended by `fraction`:
+  // v(from) + fraction (v(to) − v(from)), linear in it (increment_path.hpp).
+  void apply_blended(ConnectorSystem& system, Time from, Time to, double fraction) const;
+  // Whether any load (nodal, connector, gravity) has another value at `to` than at `from`.
+  bool loads_change(Time from, Time to) const;
   // Records the values at the end of the step for the next one: at τ = 1, or at the load
   // proportionality factor a Riks step ended at.
   // Holds every condition at its value at the end of the step (a prescribed rate stays a rate,
@@ -59,6 +59,7 @@ class StepConditions {
   Condition define(const ConditionBlock& block, const Step& step, double magnitude, double start,
                    bool prescribed_kind) const;
   static double load_start(const Table& table, std::int64_t key);
+  double value_at(const Condition& c, Time time) const;  // τ = step time / period
   // Pushes every condition's value(c) into the system.
   template <class Value>
   void push(ConnectorSystem& system, const Value& value) const;
