@@ -16,21 +16,6 @@ namespace {
 constexpr double kInitialArc = 0.25, kMinArc = 1e-4, kMaxArc = 0.5;
 constexpr int kMaxPoints = 200;
 
-AttemptOutcome outcome_of(const NewtonReport& report, const StepRequest& request) {
-  AttemptOutcome outcome;
-  outcome.iterations = static_cast<int>(report.iterations.size());
-  if (!report.converged()) {
-    outcome.kind = report.outcome == NewtonOutcome::Diverged ? AttemptOutcome::Kind::Diverged
-                                                             : AttemptOutcome::Kind::NotConverged;
-    outcome.reason = report.message;
-  } else if (request.dt_ratio < 1.0) {
-    outcome.kind = AttemptOutcome::Kind::LawAsksSmaller;
-    outcome.dt_ratio = request.dt_ratio;
-    outcome.reason = request.message;
-  }
-  return outcome;
-}
-
 }  // namespace
 
 IncrementPathResult follow_increment_path(NonlinearProblem& problem, StepProblem& step,
@@ -62,13 +47,13 @@ IncrementPathResult follow_increment_path(NonlinearProblem& problem, StepProblem
     const double start = path.load_factor();  // the last point's
     step.begin_increment(time_at(start), span.total_time + (time_at(start) - span.step_time),
                          proposal.dt * span.dt, 0.0);
-    result.last = solve(path, bordered);
-    AttemptOutcome outcome = outcome_of(result.last, step.step_request());
+    PathPoint attempt = solve(path, bordered);
+    result.last = attempt.report;
+    AttemptOutcome outcome = attempt.outcome;
     if (span.loads_change && outcome.kind == AttemptOutcome::Kind::Converged &&
         path.load_factor() < start) {
       // Under a load the path turned back: a limit point, past which the far equilibrium is
       // reached only by a jump.
-      result.limit_point = true;
       result.reason = "the load passes a limit point inside it";
       result.note = step.failure_note(-1);
       step.revert();
@@ -78,8 +63,9 @@ IncrementPathResult follow_increment_path(NonlinearProblem& problem, StepProblem
       // Past the end: the end itself, directly from the last point.
       step.revert();
       step.begin_increment(to, span.total_time + span.dt, (1.0 - start) * span.dt, 0.0);
-      result.last = solve(problem, solver);
-      outcome = outcome_of(result.last, step.step_request());
+      attempt = solve(problem, solver);
+      result.last = attempt.report;
+      outcome = attempt.outcome;
       if (outcome.kind == AttemptOutcome::Kind::Converged) {
         result.converged = true;
         return result;

@@ -19,6 +19,7 @@
 #include "src/solver/newton.hpp"
 #include "src/solver/nonlinear_problem.hpp"
 #include "src/solver/step_problem.hpp"
+#include "src/solver/time_stepper.hpp"
 
 namespace clinch {
 
@@ -34,18 +35,22 @@ struct IncrementSpan {
 };
 
 struct IncrementPathResult {
-  bool converged = false;    // the state at the increment's end, not committed
-  int points = 0;            // converged points on the way, committed
-  double lowest = 0.0;       // the least λ the path went back to
-  std::string reason;        // why it failed
-  bool limit_point = false;  // under a load, the path turned back
-  std::string note;          // then what the state says of it (the softening connector)
-  NewtonReport last;         // the solve at the increment's end (or the last failed one)
+  bool converged = false;  // the state at the increment's end, not committed
+  int points = 0;          // converged points on the way, committed
+  double lowest = 0.0;     // the least λ the path went back to
+  std::string reason;      // why it failed
+  std::string note;        // under a load that passed a limit point: what the state says of it
+  NewtonReport last;       // the solve at the increment's end (or the last failed one)
 };
 
 // Solves the current increment on the given problem and solver (the step driver's attempt: Newton
-// with the stop active set, its iterations logged).
-using IncrementSolve = std::function<NewtonReport(NonlinearProblem&, LinearSolver&)>;
+// with the stop active set, its iterations logged) and says how it ended, as the step driver
+// tells its stepper (with a law's request for a smaller increment).
+struct PathPoint {
+  NewtonReport report;
+  AttemptOutcome outcome;
+};
+using IncrementSolve = std::function<PathPoint(NonlinearProblem&, LinearSolver&)>;
 
 IncrementPathResult follow_increment_path(NonlinearProblem& problem, StepProblem& step,
                                           LinearSolver& solver, const IncrementSpan& span,

@@ -376,10 +376,14 @@ class Driver {
     int iterations = 0;
     const IncrementSolve solve = [&](NonlinearProblem& problem, LinearSolver& solver) {
       int its = 0, changes = 0;
-      NewtonReport report =
+      PathPoint point;
+      point.report =
           attempt(step_number, increment, attempt_number, its, changes, &problem, &solver);
       iterations += its;
-      return report;
+      const StepRequest request = step_problem_.step_request();
+      point.outcome = outcome_of(point.report, request,
+                                 point.report.converged() && request.dt_ratio < 1.0, its);
+      return point;
     };
     const IncrementPathResult path = follow_increment_path(
         problem_, step_problem_, *solver_,
