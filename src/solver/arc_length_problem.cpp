@@ -206,7 +206,12 @@ bool ArcLengthProblem::correction(const Eigen::VectorXd& rhs, const Eigen::Vecto
   const int n = problem_.size();
   out.resize(n + 1);
   double dlpf = 0.0;
-  if (predicting_) {
+  if (holding()) {
+    // The held equation at its value, the predictor and the corrections alike (the constraint is
+    // linear): λ from the linear response.
+    if (!(std::abs(v[held_]) > 0)) return false;
+    dlpf = (rhs[n] - a[held_]) / v[held_];
+  } else if (predicting_) {
     // ū: the weighted size of the response to a unit λ at the step's first predictor.
     if (scale_squared_ == 0.0) {
       const double size = v.cwiseProduct(weights_).dot(v);
@@ -217,11 +222,7 @@ bool ArcLengthProblem::correction(const Eigen::VectorXd& rhs, const Eigen::Vecto
     // from unloading, and the elastic unloading branch is an equilibrium path too. The first
     // increment of a step goes along the tangent (v, 1), with λ growing. Either is scaled to
     // the length Δl.
-    if (holding()) {
-      // λ such that the linear response takes the held equation to its value.
-      if (!(std::abs(v[held_]) > 0)) return false;
-      dlpf = (held_value_ - a[held_]) / v[held_];
-    } else if (has_previous_) {
+    if (has_previous_) {
       const double previous = previous_length();
       if (previous > 0) {
         const double scale = arc_ / previous;
@@ -234,18 +235,13 @@ bool ArcLengthProblem::correction(const Eigen::VectorXd& rhs, const Eigen::Vecto
     dlpf = arc_ / std::sqrt(0.5 * (scaled_dot(v, v) + 1.0));
     if (reversing()) dlpf = -dlpf;
   } else {
-    if (holding()) {
-      if (!(std::abs(v[held_]) > 0)) return false;
-      dlpf = (rhs[n] - a[held_]) / v[held_];
-    } else {
-      // The linearised constraint: ∂g/∂q = W Δq / ū², ∂g/∂λ = Δλ.
-      const double along = scaled_dot(delta_q_, v) + delta_lpf_;
-      const double scale = std::abs(scaled_dot(delta_q_, delta_q_)) + delta_lpf_ * delta_lpf_;
-      if (!(std::abs(along) > 1e-12 * std::sqrt(scale) * std::sqrt(0.5 * (scaled_dot(v, v) + 1)))) {
-        return false;
-      }
-      dlpf = (rhs[n] - scaled_dot(delta_q_, a)) / along;
+    // The linearised constraint: ∂g/∂q = W Δq / ū², ∂g/∂λ = Δλ.
+    const double along = scaled_dot(delta_q_, v) + delta_lpf_;
+    const double scale = std::abs(scaled_dot(delta_q_, delta_q_)) + delta_lpf_ * delta_lpf_;
+    if (!(std::abs(along) > 1e-12 * std::sqrt(scale) * std::sqrt(0.5 * (scaled_dot(v, v) + 1)))) {
+      return false;
     }
+    dlpf = (rhs[n] - scaled_dot(delta_q_, a)) / along;
   }
   out.head(n) = a + dlpf * v;
   out[n] = dlpf;
