@@ -1,18 +1,35 @@
 #include "src/assembly/assembly_pattern.hpp"
 
+#include <algorithm>
+#include <stdexcept>
+
 #include "src/assembly/constrained_elements.hpp"
 #include "src/assembly/constrained_inertia.hpp"
 #include "src/assembly/sparsity_pattern.hpp"
 
 namespace clinch {
 
-AssemblyPattern build_assembly_pattern(const AnalysisPlan& plan, bool symmetric) {
+AssemblyPattern build_assembly_pattern(const AnalysisPlan& plan, bool symmetric,
+                                       const RowAssemblyShare* share) {
   AssemblyPattern p;
   p.symmetric = symmetric;
   // The pattern is over the solved equations: the dependent ones have no row
   // (dependent_dofs.hpp).
   const DependentDofs& dependents = plan.dependents;
-  SparsityBuilder builder(dependents.solved_count(plan.dofs), symmetric);
+  const int n = dependents.solved_count(plan.dofs);
+  const int node_block = dependents.solved_node_block(plan.dofs);
+  if (share && !dependents.empty()) {
+    throw std::logic_error("build_assembly_pattern: a rank's part of a plan with dependent DOFs");
+  }
+  const ItemRange rows = share ? owned_rows(n, node_block, share->rank, share->ranks)
+                               : ItemRange{0, static_cast<std::size_t>(n)};
+  const ItemRange connectors = share ? share->connectors : ItemRange{0, plan.connectors.size()};
+  const ItemRange springs = share ? share->springs : ItemRange{0, plan.springs.size()};
+  const std::span<const ConnectorRecord> own_connectors(plan.connectors.data() + connectors.begin,
+                                                        connectors.end - connectors.begin);
+  const std::span<const SpringRecord> own_springs(plan.springs.data() + springs.begin,
+                                                  springs.end - springs.begin);
+  SparsityBuilder builder(n, symmetric, static_cast<int>(rows.begin), static_cast<int>(rows.end));
   // An element's equations: its own, or those of its condensed system (constrained_elements.hpp),
   // in the solved numbering.
   std::vector<int> solved;
@@ -35,15 +52,24 @@ AssemblyPattern build_assembly_pattern(const AnalysisPlan& plan, bool symmetric)
     local_entries += entries(l);
     local_diagonals += l.size();
   };
-  for (const ConnectorRecord& r : plan.connectors) count(equations(r));
-  for (const SpringRecord& r : plan.springs) count(equations(r));
-  builder.reserve(local_entries - local_diagonals);
-  for (const ConnectorRecord& r : plan.connectors) builder.couple(equations(r));
-  for (const SpringRecord& r : plan.springs) builder.couple(equations(r));
-  // A rotary inertia tensor couples the rotations of its node; inertia on a dependent DOF couples
+  for (const ConnectorRecord& r : own_connectors) count(equations(r));
+  for (const SpringRecord& r : own_springs) count(equations(r));
+  builder.reserve(local_entries - (share ? 0 : local_diagonals));
+  for (const ConnectorRecord& r : own_connectors) builder.couple(equations(r));
+  for (const SpringRecord& r : own_springs) builder.couple(equations(r));
+  // A rotary inertia tensor couples the rotations of its node (in a rank's part, of a node with
+  // a row it owns: the rank that owns an entry's row adds it); inertia on a dependent DOF couples
   // the independent equations its block moves with (constrained_inertia.hpp).
+  const auto owns_some = [&](std::span<const int> equations) {
+    return !share || std::any_of(equations.begin(), equations.end(), [&](int eq) {
+      return eq >= 0 && static_cast<std::size_t>(eq) >= rows.begin &&
+             static_cast<std::size_t>(eq) < rows.end;
+    });
+  };
   for (const NodeInertia& n : plan.inertia) {
-    if (!has_dependent_dof(n.rotation, dependents)) builder.couple(in_solved_numbering(n.rotation));
+    if (!has_dependent_dof(n.rotation, dependents) && owns_some(n.rotation)) {
+      builder.couple(in_solved_numbering(n.rotation));
+    }
   }
   for (const std::vector<int>& columns : constrained_inertia_couplings(plan.inertia, dependents)) {
     builder.couple(in_solved_numbering(columns));
@@ -58,7 +84,11 @@ AssemblyPattern build_assembly_pattern(const AnalysisPlan& plan, bool symmetric)
     builder.couple(in_solved_numbering(read));
   }
   p.matrix = builder.build();
-  p.matrix.node_block = dependents.solved_node_block(plan.dofs);
+  p.matrix.node_block = node_block;
+  if (share) {
+    p.matrix.first_owned_row = static_cast<int>(rows.begin);
+    p.matrix.owned_rows = static_cast<int>(rows.end - rows.begin);
+  }
   p.positions.reserve(local_entries);
   auto place = [&](std::span<const int> l) {
     const std::size_t offset = p.positions.size();
@@ -72,10 +102,12 @@ AssemblyPattern build_assembly_pattern(const AnalysisPlan& plan, bool symmetric)
     }
     return offset;
   };
-  p.connector_offset.reserve(plan.connectors.size());
-  for (const ConnectorRecord& r : plan.connectors) p.connector_offset.push_back(place(equations(r)));
-  p.spring_offset.reserve(plan.springs.size());
-  for (const SpringRecord& r : plan.springs) p.spring_offset.push_back(place(equations(r)));
+  p.first_connector = connectors.begin;
+  p.connector_offset.reserve(own_connectors.size());
+  for (const ConnectorRecord& r : own_connectors) p.connector_offset.push_back(place(equations(r)));
+  p.first_spring = springs.begin;
+  p.spring_offset.reserve(own_springs.size());
+  for (const SpringRecord& r : own_springs) p.spring_offset.push_back(place(equations(r)));
   p.diagonal.resize(static_cast<std::size_t>(p.matrix.n));
   for (int i = 0; i < p.matrix.n; ++i) {
     p.diagonal[static_cast<std::size_t>(i)] = entry_position(p.matrix, i, i);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "src/assembly/analysis_plan.hpp"
+#include "src/parallel/communicator.hpp"
 
 namespace clinch {
 
@@ -14,12 +15,29 @@ struct AssemblyPattern {
   SparseMatrix matrix;  // values zero
   // Positions into matrix.values of each element's local entries, column by column: the upper
   // triangle (a ≤ b, count·(count+1)/2 entries) when symmetric, all count² otherwise. Connectors
-  // first, then springs, each from its offset below.
+  // first, then springs, each from its offset below (connector c's at
+  // connector_offset[c − first_connector]).
   std::vector<int> positions;
   std::vector<std::size_t> connector_offset, spring_offset;
-  std::vector<int> diagonal;  // position of each solved equation's diagonal entry
+  std::size_t first_connector = 0, first_spring = 0;
+  // Position of each solved equation's diagonal entry (−1 where a rank's part has none).
+  std::vector<int> diagonal;
+
+  std::size_t connector_at(std::size_t c) const { return connector_offset[c - first_connector]; }
+  std::size_t spring_at(std::size_t s) const { return spring_offset[s - first_spring]; }
 };
 
-AssemblyPattern build_assembly_pattern(const AnalysisPlan& plan, bool symmetric);
+// A rank's part of the tangent under assembly by rows (docs/parallel.md): its elements, and the
+// rows it owns among `ranks` (owned_rows over the pattern's node blocks).
+struct RowAssemblyShare {
+  ItemRange connectors, springs;
+  int rank = 0, ranks = 1;
+};
+
+// The whole pattern, or with `share` the pattern of that rank's part (SparseMatrix::partial):
+// its elements' entries, the diagonals of its rows, the rotary inertia of the nodes whose rows
+// it owns. A part is only built for a plan without dependent DOFs.
+AssemblyPattern build_assembly_pattern(const AnalysisPlan& plan, bool symmetric,
+                                       const RowAssemblyShare* share = nullptr);
 
 }  // namespace clinch

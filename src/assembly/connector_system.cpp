@@ -68,7 +68,6 @@ ConnectorSystem::ConnectorSystem(const Model& model, const AnalysisPlan& plan)
       inertia_force_(Eigen::VectorXd::Zero(plan.dynamic ? plan.dofs.equations() : 0)),
       stabilization_(plan.dofs, plan.dependents, plan.length_scale),
       stabilization_force_(Eigen::VectorXd::Zero(plan.stabilized ? plan.dofs.equations() : 0)) {
-  use_storage(true);
   if (plan.energies) {
     std::vector<bool> dashpots;
     for (const SpringRecord& s : plan.springs) dashpots.push_back(s.dashpot);
@@ -89,7 +88,8 @@ ConnectorSystem::ConnectorSystem(const Model& model, const AnalysisPlan& plan)
                             nullptr);
     state_.v = state_.v_n;
   }
-  if (state_.v_n.size() > 0) initial_kinetic_ = kinetic_energy(plan_.inertia, state_.v_n, state_.rotation_n);
+  if (state_.v_n.size() > 0)
+    initial_kinetic_ = kinetic_energy(plan_.inertia, state_.v_n, state_.rotation_n);
   if (energy_) energy_->set_kinetic(initial_kinetic_);
 }
 
@@ -125,12 +125,12 @@ void ConnectorSystem::start_dynamic_step(bool initial_acceleration) {
       for (const MappedInertiaBlock& b : constrained_inertia_) {
         for (const int column : b.columns) state_.a_n[column] = 0.0;
       }
-      follow_constraint_rates(plan_.dependents, motion_, state_.x, state_.rotation,
-                              context_.nlgeom, state_.v_n, &state_.a_n);
-      constrained_initial_accelerations(plan_.inertia, constrained_inertia_, conditions_,
-                                        condensed, state_.a_n);
-      follow_constraint_rates(plan_.dependents, motion_, state_.x, state_.rotation,
-                              context_.nlgeom, state_.v_n, &state_.a_n);
+      follow_constraint_rates(plan_.dependents, motion_, state_.x, state_.rotation, context_.nlgeom,
+                              state_.v_n, &state_.a_n);
+      constrained_initial_accelerations(plan_.inertia, constrained_inertia_, conditions_, condensed,
+                                        state_.a_n);
+      follow_constraint_rates(plan_.dependents, motion_, state_.x, state_.rotation, context_.nlgeom,
+                              state_.v_n, &state_.a_n);
       state_.v = state_.v_n;
     }
     state_.a = state_.a_n;
@@ -177,8 +177,8 @@ ConnectorSystem::HalfIncrementResidual ConnectorSystem::half_increment_residual(
     // clinch's rows are the HHT equation divided by 1 + α, with −α r₀ (dynamic_terms.hpp):
     // back to the HHT form, and the lagged term at the half increment −(α/2)(r₀ + r₋₁).
     const double alpha = newmark_->alpha;
-    const double r = std::abs(full[eq] * (1.0 + alpha) +
-                              0.5 * alpha * (state_.r_n[eq] - r_before_[eq]));
+    const double r =
+        std::abs(full[eq] * (1.0 + alpha) + 0.5 * alpha * (state_.r_n[eq] - r_before_[eq]));
     if (out.equation < 0 || r > out.value) {
       out.value = r;
       out.equation = eq;
@@ -227,9 +227,9 @@ Eigen::VectorXd ConnectorSystem::hht_residual(Eigen::VectorXd r, bool start) con
   }
   const double alpha = newmark_ ? newmark_->alpha : 0.0;
   for (const DependentDof& d : plan_.dependents.dofs) {
-    const double held = start ? -inertia[d.equation]
-                              : (alpha * state_.r_n[d.equation] - inertia_force_[d.equation]) /
-                                    (1.0 + alpha);
+    const double held =
+        start ? -inertia[d.equation]
+              : (alpha * state_.r_n[d.equation] - inertia_force_[d.equation]) / (1.0 + alpha);
     r[d.equation] = held;
     const std::span<const double> gradient = motion_.gradient(d);
     for (std::uint32_t e = 0; e < d.resolved_count; ++e) {
@@ -261,13 +261,22 @@ double ConnectorSystem::dependent_inertia(int eq) const {
 
 void ConnectorSystem::use_storage(bool symmetric) {
   std::unique_ptr<AssemblyPattern>& p = symmetric ? symmetric_pattern_ : full_pattern_;
-  if (!p) p = std::make_unique<AssemblyPattern>(build_assembly_pattern(plan_, symmetric));
+  if (!p) {
+    // Under assembly by rows, this rank's part (docs/parallel.md).
+    std::optional<RowAssemblyShare> share;
+    if (by_rows_) {
+      share = RowAssemblyShare{owned_connectors_, owned_springs_, communicator_->rank(),
+                               communicator_->size()};
+    }
+    p = std::make_unique<AssemblyPattern>(
+        build_assembly_pattern(plan_, symmetric, share ? &*share : nullptr));
+  }
   pattern_ = p.get();
 }
 
 ConnectorSystem::Snapshot ConnectorSystem::snapshot() const {
-  return {state_,      conditions_, internal_,          predictor_,      predicting_,
-          springs_,    multiplier_active_, element_forces_, constraint_load_, dependent_failure_};
+  return {state_,   conditions_,        internal_,       predictor_,       predicting_,
+          springs_, multiplier_active_, element_forces_, constraint_load_, dependent_failure_};
 }
 
 void ConnectorSystem::restore(const Snapshot& snapshot) {
@@ -373,6 +382,7 @@ void ConnectorSystem::apply_prescribed_rotations() {
 }
 
 EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* tangent) {
+  if (!pattern_) use_storage(true);
   internal_.setZero();
   element_forces_ = {};
   if (predicting_) predictor_.setZero();
@@ -412,8 +422,8 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
           r.local.equation[static_cast<std::size_t>(r.column_count + j)])] =
           local.active[static_cast<std::size_t>(j)];
     }
-    scatter_element(r.local, r.expansion, pattern_->connector_offset[c], local,
-                    !r.laws.symmetric, tangent);
+    scatter_element(r.local, r.expansion, pattern_->connector_at(c), local, !r.laws.symmetric,
+                    tangent);
     add_force_entries(r.local, r.column_count, local);
     add_component_forces(state_.results[c]);
   }
@@ -432,8 +442,8 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
       break;
     }
     // A dashpot's dynamic tangent is unsymmetric under NLGEOM (spring_element.cpp).
-    scatter_element(spring.local, spring.expansion, pattern_->spring_offset[s], local,
-                    spring.dashpot, tangent);
+    scatter_element(spring.local, spring.expansion, pattern_->spring_at(s), local, spring.dashpot,
+                    tangent);
     add_force_entries(spring.local, spring.local.count, local);
   }
   if (communicator_) exchange(tangent, failed);
@@ -443,8 +453,12 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
   Eigen::VectorXd& full = dependents.empty() ? residual : full_residual_;
   full = internal_ - conditions_.external();
   if (newmark_) {
-    const InertiaTarget target{full, tangent, pattern_->diagonal, pattern_->symmetric,
-                               predicting_ ? &predictor_ : nullptr, dependents};
+    const InertiaTarget target{full,
+                               tangent,
+                               pattern_->diagonal,
+                               pattern_->symmetric,
+                               predicting_ ? &predictor_ : nullptr,
+                               dependents};
     add_inertia(plan_.inertia, *newmark_, state_, conditions_, target, inertia_force_,
                 element_forces_);
     if (!dependents.empty()) {
@@ -463,9 +477,9 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
   for (int eq : conditions_.prescribed()) {
     // Newton's row of a prescribed DOF is Δu = target − u. A reaction that overflows takes the
     // row's place, so that Newton stops on it rather than report it (principle 8).
-    full[eq] =
-        std::isfinite(internal_[eq]) ? state_.x[eq] - conditions_.target(eq) : internal_[eq];
-    if (tangent) {
+    full[eq] = std::isfinite(internal_[eq]) ? state_.x[eq] - conditions_.target(eq) : internal_[eq];
+    // Under assembly by rows the rank that owns the row holds its diagonal.
+    if (tangent && tangent->owns_row(dependents.solved(eq))) {
       tangent->values[static_cast<std::size_t>(
           pattern_->diagonal[static_cast<std::size_t>(dependents.solved(eq))])] = 1.0;
     }
@@ -519,8 +533,8 @@ void ConnectorSystem::add_component_forces(const ConnectorResult& result) {
 }
 
 void ConnectorSystem::scatter_element(const LocalEquations& l, std::int32_t expansion,
-                                      std::size_t offset, const LocalSystem& local,
-                                      bool symmetrize, SparseMatrix* tangent) {
+                                      std::size_t offset, const LocalSystem& local, bool symmetrize,
+                                      SparseMatrix* tangent) {
   if (expansion < 0) {
     scatter({l.equation.data(), static_cast<std::size_t>(l.count)}, offset, local.r, local.k,
             symmetrize, tangent);
@@ -569,9 +583,14 @@ void ConnectorSystem::path_weights(Eigen::VectorXd& weights) const {
   weights.resize(size());
   for (int i = 0; i < size(); ++i) {
     switch (plan_.dofs.field(plan_.dependents.equation(i))) {
-      case EquationField::Translation: weights[i] = 1.0; break;
-      case EquationField::Rotation: weights[i] = plan_.length_scale * plan_.length_scale; break;
-      default: weights[i] = 0.0;  // a multiplier is a force, not a motion
+      case EquationField::Translation:
+        weights[i] = 1.0;
+        break;
+      case EquationField::Rotation:
+        weights[i] = plan_.length_scale * plan_.length_scale;
+        break;
+      default:
+        weights[i] = 0.0;  // a multiplier is a force, not a motion
     }
   }
 }
@@ -858,9 +877,9 @@ std::string ConnectorSystem::failure_note(int failed_equation, bool riks) const 
     }
   }
   if (softening == plan_.connectors.size()) return {};
-  const bool loaded = (conditions_.external().size() > 0 &&
-                       conditions_.external().cwiseAbs().maxCoeff() > 0) ||
-                      conditions_.has_connector_loads();
+  const bool loaded =
+      (conditions_.external().size() > 0 && conditions_.external().cwiseAbs().maxCoeff() > 0) ||
+      conditions_.has_connector_loads();
   if (!loaded) {
     return fmt::format("connector element {} softening (d={:.3g})", elements_.label(softening),
                        largest);
@@ -893,8 +912,7 @@ NonlinearProblem::DamageChange ConnectorSystem::damage_change() const {
     for (const LawSlot& slot : plan_.connectors[c].laws) {
       const double now = slot.law->damage(slot.history_in(state_.history));
       change.damaged = change.damaged || now > 0.0;
-      change.growing =
-          change.growing || now > slot.law->damage(slot.history_in(state_.history_n));
+      change.growing = change.growing || now > slot.law->damage(slot.history_in(state_.history_n));
     }
   }
   // Each rank evaluates its own connectors; the decision is taken together.
@@ -941,8 +959,7 @@ double ConnectorSystem::displacement_of_rate(int equation, int order, double rat
   return newmark_->value_of_rate(u0, state_.v_n[equation], state_.a_n[equation], order, rate);
 }
 
-double ConnectorSystem::converged_component(std::size_t connector, int component,
-                                            int order) const {
+double ConnectorSystem::converged_component(std::size_t connector, int component, int order) const {
   const int i = component - 1;
   if (converged_components_.empty()) {
     const ConnectorResult& r = state_.results[connector];

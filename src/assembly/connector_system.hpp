@@ -50,7 +50,7 @@ class ConnectorSystem final : public NonlinearProblem {
   // Stores the tangent as an upper triangle (symmetric) or in full from the next evaluation on.
   // An unsymmetric element tangent in symmetric storage is symmetrised (keywords.md §14).
   void use_storage(bool symmetric);
-  bool symmetric_storage() const { return pattern_->symmetric; }
+  bool symmetric_storage() const { return !pattern_ || pattern_->symmetric; }
   void set_time(double time, double dt) {
     context_.time = time;
     context_.dt = dt;
@@ -100,6 +100,7 @@ class ConnectorSystem final : public NonlinearProblem {
   // and corrections are in this numbering, the state and the conditions in the equations'.
   int size() const override { return plan_.dependents.solved_count(plan_.dofs); }
   int equation_of_solved(int solved) const { return plan_.dependents.equation(solved); }
+  // The pattern of the storage in use (use_storage before the first call).
   const SparseMatrix& pattern() const override { return pattern_->matrix; }
   EvalStatus evaluate(Eigen::VectorXd& residual, SparseMatrix* tangent) override;
   void apply_correction(const Eigen::VectorXd& correction) override;
@@ -129,7 +130,11 @@ class ConnectorSystem final : public NonlinearProblem {
   // From the next evaluation on, evaluates only this rank's share of the connectors and springs
   // and exchanges the results after each evaluation (connector_system_exchange.cpp), so that
   // every rank holds what a serial evaluation gives. Without it every element is evaluated here.
-  void distribute(Communicator& communicator);
+  // `by_rows`: the tangent is this rank's part (SparseMatrix::partial), which the distributed
+  // solver sums; otherwise the ranks sum the whole tangent and each holds it. Called before the
+  // first evaluation.
+  void distribute(Communicator& communicator, bool by_rows);
+  bool assembled_by_rows() const { return by_rows_; }
 
   // ---- diagnostics ----
   // Everything an evaluation, a correction or a change of the conditions can change: the state,
@@ -217,7 +222,8 @@ class ConnectorSystem final : public NonlinearProblem {
   AnalysisState state_;
   IncrementConditions conditions_;
   ElementContext context_;
-  // The storages built so far (symmetric, full) and the one in use.
+  // The storages built so far (symmetric, full) and the one in use (built at the first
+  // use_storage or evaluation, once the system knows whether it is distributed).
   std::unique_ptr<AssemblyPattern> symmetric_pattern_, full_pattern_;
   const AssemblyPattern* pattern_ = nullptr;
   std::unique_ptr<LocalSystem> local_;
@@ -230,6 +236,7 @@ class ConnectorSystem final : public NonlinearProblem {
   bool predicting_ = false;
   std::vector<std::uint8_t> deleted_;           // per connector: deleted by damage (§7.4)
   Communicator* communicator_ = nullptr;        // null: a serial run
+  bool by_rows_ = false;                        // the tangent is this rank's part
   ItemRange owned_connectors_, owned_springs_;  // the elements this process evaluates
   std::vector<std::size_t> history_bytes_;      // per rank: the bytes of its connectors' history
   std::vector<std::string> events_;

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <cstring>
+#include <stdexcept>
 #include <type_traits>
 
 #include "src/assembly/connector_system.hpp"
@@ -56,8 +57,10 @@ void merge_encoded(const std::string& text, StepRequest& into) {
 
 }  // namespace
 
-void ConnectorSystem::distribute(Communicator& communicator) {
+void ConnectorSystem::distribute(Communicator& communicator, bool by_rows) {
+  if (pattern_) throw std::logic_error("ConnectorSystem::distribute after the first assembly");
   communicator_ = &communicator;
+  by_rows_ = by_rows;
   const int size = communicator.size();
   owned_connectors_ = share_of(plan_.connectors.size(), communicator.rank(), size);
   owned_springs_ = share_of(plan_.springs.size(), communicator.rank(), size);
@@ -85,7 +88,8 @@ void ConnectorSystem::exchange(SparseMatrix* tangent, EvalStatus& status) {
   }
   comm.sum({internal_.data(), static_cast<std::size_t>(internal_.size())});
   if (predicting_) comm.sum({predictor_.data(), static_cast<std::size_t>(predictor_.size())});
-  if (tangent) comm.sum(tangent->values);
+  // Assembled by rows, the solver sums the ranks' parts of the tangent.
+  if (tangent && !by_rows_) comm.sum(tangent->values);
   double entries[4] = {element_forces_.sum[0], element_forces_.sum[1],
                        static_cast<double>(element_forces_.count[0]),
                        static_cast<double>(element_forces_.count[1])};

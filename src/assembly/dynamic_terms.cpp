@@ -116,15 +116,16 @@ void add_inertia(const std::vector<NodeInertia>& inertia, const NewmarkIncrement
           if (conditions.is_prescribed(column)) {
             // The prescribed column goes to the right-hand side, as an element's does.
             if (target.predictor) {
-              (*target.predictor)[row] +=
-                  k * (conditions.target(column) - state.x[column]);
+              (*target.predictor)[row] += k * (conditions.target(column) - state.x[column]);
             }
             continue;
           }
           const int solved_row = target.dependents.solved(row);
           const int solved_column = target.dependents.solved(column);
-          // The upper triangle holds both.
+          // The upper triangle holds both; under assembly by rows the rank that owns the row
+          // adds the entry.
           if (target.symmetric && solved_column < solved_row) continue;
+          if (!target.tangent->owns_row(solved_row)) continue;
           const int position = row == column
                                    ? target.diagonal[static_cast<std::size_t>(solved_row)]
                                    : entry_position(*target.tangent, solved_row, solved_column);
@@ -168,8 +169,8 @@ double kinetic_energy(const std::vector<NodeInertia>& inertia, const Eigen::Vect
     const bool finite = has_finite_rotary_inertia(node, !rotations.empty());
     if (finite) {
       const Vector3 omega(v[node.rotation[0]], v[node.rotation[1]], v[node.rotation[2]]);
-      energy += finite_rotary_kinetic_energy(
-          node, rotations[static_cast<std::size_t>(node.node)], omega);
+      energy +=
+          finite_rotary_kinetic_energy(node, rotations[static_cast<std::size_t>(node.node)], omega);
     }
     const std::array<InertiaBlock, 2> blocks = blocks_of(node);
     for (int field = 0; field < (finite ? 1 : 2); ++field) {  // translations, then rotations

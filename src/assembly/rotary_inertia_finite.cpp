@@ -96,6 +96,8 @@ void add_finite_rotary_inertia(const std::vector<NodeInertia>& inertia, double d
           if (solved_column < solved_row) continue;  // the upper triangle holds both: their mean
           value = 0.5 * (k(i, j) + k(j, i));
         }
+        // Under assembly by rows the rank that owns the row adds the entry.
+        if (!target.tangent->owns_row(solved_row)) continue;
         const int position = row == column
                                  ? target.diagonal[static_cast<std::size_t>(solved_row)]
                                  : entry_position(*target.tangent, solved_row, solved_column);

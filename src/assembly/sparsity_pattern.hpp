@@ -5,6 +5,7 @@
 // the positions of their entries once (scatter indices), so assembly is a flat loop.
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <utility>
 #include <vector>
@@ -15,7 +16,10 @@ namespace clinch {
 
 class SparsityBuilder {
  public:
+  // Every diagonal is present; with `diagonals` (a rank's part under assembly by rows) only
+  // those of the equations in [first, last) and of the equations coupled.
   SparsityBuilder(int equations, bool symmetric);
+  SparsityBuilder(int equations, bool symmetric, int first_diagonal, int last_diagonal);
   // Room for this many entries off the diagonal (what the couple calls will add).
   void reserve(std::size_t couplings);
   // Couples every pair of the (non-negative) equations; negative entries are skipped.
@@ -29,6 +33,8 @@ class SparsityBuilder {
   // (3·10⁶ of them for a 10⁶-connector chain).
   bool symmetric_;
   std::vector<int> count_;  // entries of each column, its diagonal included
+  // Per column: 0 without its diagonal so far, 1 present from the start, 2 added by couple.
+  std::vector<std::uint8_t> diagonal_;
   std::vector<std::pair<int, int>> entries_;
 };
 

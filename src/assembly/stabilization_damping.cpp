@@ -35,14 +35,16 @@ std::string StabilizationDamping::begin_step(const StaticStabilization* settings
   }
   if (settings->continue_previous && last_factor_ > 0.0) {
     factor_ = base_factor_ = last_factor_;
-    return fmt::format("automatic stabilization: damping factor c = {:.6g} from the previous "
-                       "step (CONTINUE=YES){}",
-                       factor_, settings->allsdtol > 0 ? ", adaptive" : "");
+    return fmt::format(
+        "automatic stabilization: damping factor c = {:.6g} from the previous "
+        "step (CONTINUE=YES){}",
+        factor_, settings->allsdtol > 0 ? ", adaptive" : "");
   }
   factor_ = base_factor_ = 0.0;
-  return fmt::format("automatic stabilization: the first increment runs without damping; c "
-                     "then follows from the dissipated energy fraction {:.3g}{}",
-                     settings->energy_fraction, settings->allsdtol > 0 ? ", adaptive" : "");
+  return fmt::format(
+      "automatic stabilization: the first increment runs without damping; c "
+      "then follows from the dissipated energy fraction {:.3g}{}",
+      settings->energy_fraction, settings->allsdtol > 0 ? ", adaptive" : "");
 }
 
 void StabilizationDamping::add(const Eigen::VectorXd& x, const Eigen::VectorXd& x_n, double dt,
@@ -56,7 +58,8 @@ void StabilizationDamping::add(const Eigen::VectorXd& x, const Eigen::VectorXd& 
     const double force = per_time * mass_[eq] * (x[e] - x_n[e]);
     target.force[e] = force;
     target.residual[e] += force;
-    if (target.tangent) {
+    // Under assembly by rows the rank that owns the row adds its diagonal.
+    if (target.tangent && target.tangent->owns_row(dependents_.solved(e))) {
       target.tangent->values[static_cast<std::size_t>(
           target.diagonal[static_cast<std::size_t>(dependents_.solved(e))])] +=
           per_time * mass_[eq];
@@ -73,8 +76,7 @@ double StabilizationDamping::artificial_mass_norm(const Eigen::VectorXd& dx) con
 }
 
 void StabilizationDamping::converged(const Eigen::VectorXd& dx, double dt, double element_work,
-                                     const ModelEnergies& energies,
-                                     std::vector<std::string>& notes,
+                                     const ModelEnergies& energies, std::vector<std::string>& notes,
                                      std::vector<std::string>& warnings) {
   if (settings_ == nullptr) return;
   const StaticStabilization& s = *settings_;
@@ -86,9 +88,10 @@ void StabilizationDamping::converged(const Eigen::VectorXd& dx, double dt, doubl
     const double extrapolated = element_work * (period_ / dt) * (period_ / dt);
     factor_ = s.energy_fraction * extrapolated * dt / motion;
     base_factor_ = factor_;
-    notes.push_back(fmt::format("automatic stabilization: damping factor c = {:.6g} (the "
-                                "increment's strain energy {:.6g} extrapolated to {:.6g})",
-                                factor_, element_work, extrapolated));
+    notes.push_back(
+        fmt::format("automatic stabilization: damping factor c = {:.6g} (the "
+                    "increment's strain energy {:.6g} extrapolated to {:.6g})",
+                    factor_, element_work, extrapolated));
   } else {
     const double strain = energies.internal;
     const double tolerance = s.allsdtol > 0.0 ? s.allsdtol : 0.05;
@@ -98,9 +101,10 @@ void StabilizationDamping::converged(const Eigen::VectorXd& dx, double dt, doubl
     }
     if (above && s.allsdtol > 0.0) {
       factor_ *= 0.5;
-      notes.push_back(fmt::format("automatic stabilization: ALLSD/ALLIE = {:.3g} > ALLSDTOL = "
-                                  "{:.3g}: damping factor halved to {:.6g}",
-                                  energies.stabilization / strain, s.allsdtol, factor_));
+      notes.push_back(
+          fmt::format("automatic stabilization: ALLSD/ALLIE = {:.3g} > ALLSDTOL = "
+                      "{:.3g}: damping factor halved to {:.6g}",
+                      energies.stabilization / strain, s.allsdtol, factor_));
     }
     if (above && !warned_) {
       warned_ = true;

@@ -8,10 +8,11 @@
 
 #include "parser/deck_reader.hpp"
 #include "parser/diagnostic_render.hpp"
-#include "src/check/check.hpp"
 #include "src/assembly/analysis_plan.hpp"
 #include "src/assembly/connector_step_problem.hpp"
 #include "src/assembly/connector_system.hpp"
+#include "src/assembly/whole_tangent_need.hpp"
+#include "src/check/check.hpp"
 #include "src/cli/blas_threads.hpp"
 #include "src/cli/stop_signals.hpp"
 #include "src/model/default_stick_stiffness.hpp"
@@ -38,9 +39,10 @@ std::string count_of(std::size_t n, const char* what) {
 // nowhere else. Returns the message, or an empty string when it is one.
 std::string check_job_name(const std::string& job) {
   if (job.empty() || job == "." || job == ".." || job.find('/') != std::string::npos) {
-    return fmt::format("--job '{}' is not a job name: a file name (not empty, '.' or '..', no "
-                       "'/') is needed",
-                       job);
+    return fmt::format(
+        "--job '{}' is not a job name: a file name (not empty, '.' or '..', no "
+        "'/') is needed",
+        job);
   }
   return {};
 }
@@ -69,8 +71,10 @@ bool stopped_before_analysis(const char* stage, const std::string& status_path, 
       fmt::format("interrupted by {} {}, before the first increment", signal, stage);
   StatusFile status;
   std::string error;
-  if (!status.open(status_path, &error)) log.error(error);
-  else status.write_failed(reason, 1, 0, 0.0);
+  if (!status.open(status_path, &error))
+    log.error(error);
+  else
+    status.write_failed(reason, 1, 0, 0.0);
   log.error(fmt::format("analysis stopped: {} (step 1, increment 0, time 0)", reason));
   return true;
 }
@@ -136,8 +140,9 @@ int run_deck(const RunCommandOptions& options) {
   std::error_code ec;
   fs::create_directories(options.out_dir, ec);
   if (ec) {
-    if (writer) std::cerr << fmt::format("clinch: error: cannot create output directory '{}': {}\n",
-                             options.out_dir, ec.message());
+    if (writer)
+      std::cerr << fmt::format("clinch: error: cannot create output directory '{}': {}\n",
+                               options.out_dir, ec.message());
     return kExitUsage;
   }
   const fs::path base = fs::path(options.out_dir) / job;
@@ -149,7 +154,9 @@ int run_deck(const RunCommandOptions& options) {
   std::string error;
   // In a distributed run only rank 0 opens real files: the others follow its outcome rather than
   // wait for it in the analysis.
-  const auto every_rank_ok = [&](bool ok) { return world ? world->first(!ok) == world->size() : ok; };
+  const auto every_rank_ok = [&](bool ok) {
+    return world ? world->first(!ok) == world->size() : ok;
+  };
   if (!every_rank_ok(log.open(output_path(".log"), &error))) {
     if (writer) std::cerr << "clinch: error: " << error << "\n";
     return kExitUsage;
@@ -157,8 +164,10 @@ int run_deck(const RunCommandOptions& options) {
   sink.sort_by_location();
   for (const Diagnostic& d : sink.diagnostics()) {
     const std::string text = render_text(d, sources);
-    if (d.severity == Severity::Error) log.error(text);
-    else log.warning(text);
+    if (d.severity == Severity::Error)
+      log.error(text);
+    else
+      log.warning(text);
   }
   sources.release_texts();  // the lines a warning showed are not held through the analysis
   if (stopped_before_analysis("while reading the deck", output_path(".sta"), log)) {
@@ -180,30 +189,43 @@ int run_deck(const RunCommandOptions& options) {
   const int node_equations = plan->dofs.node_equations();
   // The nodes clinch adds at the centres of mass of rigid bodies' elements are not the deck's.
   const std::size_t centres = model.constraints.element_masses.size();
-  log.info(fmt::format("{}: {} nodes{}, {} connectors, {} springs; {} active DOFs ({:.3g} per "
-                       "node), {} multipliers",
-                       deck_name, model.nodes.size() - centres,
-                       centres == 0 ? std::string()
-                                    : fmt::format(" (and {} at the centres of mass of rigid "
-                                                  "bodies' elements)",
-                                                  centres),
-                       plan->connectors.size(), plan->springs.size(), node_equations,
-                       model.nodes.empty() ? 0.0 : double(node_equations) / model.nodes.size(),
-                       plan->dofs.equations() - node_equations));
+  log.info(
+      fmt::format("{}: {} nodes{}, {} connectors, {} springs; {} active DOFs ({:.3g} per "
+                  "node), {} multipliers",
+                  deck_name, model.nodes.size() - centres,
+                  centres == 0 ? std::string()
+                               : fmt::format(" (and {} at the centres of mass of rigid "
+                                             "bodies' elements)",
+                                             centres),
+                  plan->connectors.size(), plan->springs.size(), node_equations,
+                  model.nodes.empty() ? 0.0 : double(node_equations) / model.nodes.size(),
+                  plan->dofs.equations() - node_equations));
   if (!plan->dependents.empty()) {
-    log.info(fmt::format("{} of the active DOFs follow others through kinematic constraints "
-                         "(eliminated: {} condensed elements)",
-                         plan->dependents.dofs.size(), plan->expansions.size()));
+    log.info(
+        fmt::format("{} of the active DOFs follow others through kinematic constraints "
+                    "(eliminated: {} condensed elements)",
+                    plan->dependents.dofs.size(), plan->expansions.size()));
   }
   if (auto stick = default_stick_stiffness_summary(model.behaviors)) log.info(*stick);
   ConnectorSystem system(model, *plan);
   if (communicator) {
-    system.distribute(*communicator);
-    log.info(fmt::format("distributed over {} processes: each evaluates about {} connectors and "
-                         "{} springs",
-                         communicator->size(),
-                         (plan->connectors.size() + communicator->size() - 1) / communicator->size(),
-                         (plan->springs.size() + communicator->size() - 1) / communicator->size()));
+    // Each rank assembles its part of the tangent and the PETSc backend sums the parts, unless
+    // another backend or a feature needs the whole tangent on every rank (docs/parallel.md).
+    std::string whole =
+        options.solver == SolverChoice::Automatic || options.solver == SolverChoice::Petsc
+            ? whole_tangent_need(model, *plan)
+            : std::string(
+                  "the --solver asked for solves the whole system on "
+                  "every rank");
+    system.distribute(*communicator, whole.empty());
+    log.info(
+        fmt::format("distributed over {} processes: each evaluates about {} connectors and "
+                    "{} springs; {}",
+                    communicator->size(),
+                    (plan->connectors.size() + communicator->size() - 1) / communicator->size(),
+                    (plan->springs.size() + communicator->size() - 1) / communicator->size(),
+                    whole.empty() ? "each assembles its part of the tangent, which PETSc sums"
+                                  : "each rank holds the whole tangent: " + whole));
   }
   if (stopped_before_analysis("while planning the analysis", output_path(".sta"), log)) {
     return kExitStopped;
@@ -215,18 +237,19 @@ int run_deck(const RunCommandOptions& options) {
   StatusFile status;
   // The status file first, so that it can say why the history could not be started (a header
   // larger than the file-size limit, a full disk).
-  if (!every_rank_ok(status.open(output_path(".sta"), &error) &&
-                     table.open(output_path(".history.csv"), column_names(columns, options.labels),
-                                &error))) {
+  if (!every_rank_ok(
+          status.open(output_path(".sta"), &error) &&
+          table.open(output_path(".history.csv"), column_names(columns, options.labels), &error))) {
     if (status.is_open()) status.write_failed(error, 1, 0, 0.0);
     log.error(fmt::format("analysis stopped: {} (step 1, increment 0, time 0)", error));
     return kExitUsage;
   }
   const double columns_seconds = seconds_since(columns_start);
   if (options.labels == LabelStyle::Abaqus) {
-    log.info(fmt::format("history: {} columns, rotational components with Abaqus's names "
-                         "(--labels abaqus: CTM1 for CTF4, CUR1 for CU4, ...)",
-                         columns.names().size()));
+    log.info(
+        fmt::format("history: {} columns, rotational components with Abaqus's names "
+                    "(--labels abaqus: CTM1 for CTF4, CUR1 for CU4, ...)",
+                    columns.names().size()));
   }
   // Per step, the driver asks for the solver of the storage the step needs.
   const bool definite = !plan->has_multipliers;
@@ -244,30 +267,29 @@ int run_deck(const RunCommandOptions& options) {
   for (const Step& step : model.history.steps) step_names.push_back(step.name.display);
   outputs.set_step_names(std::move(step_names));
   ConnectorStepProblem step_problem(model, system);
-  const RunResult result = run_analysis(model, system, step_problem, solvers, outputs,
-                                        RunOptions{options.check_tangent,
-                                                   world ? stop_signal_of_any_rank
-                                                         : stop_signal_name});
+  const RunResult result = run_analysis(
+      model, system, step_problem, solvers, outputs,
+      RunOptions{options.check_tangent, world ? stop_signal_of_any_rank : stop_signal_name});
   progress.finish();
   const double seconds = seconds_since(start);
-  const std::string summary = fmt::format("{}, {}, {} in {:.3f} s",
-                                          count_of(static_cast<std::size_t>(result.increments), "increment"),
-                                          count_of(static_cast<std::size_t>(result.iterations), "iteration"),
-                                          count_of(static_cast<std::size_t>(result.cutbacks), "cutback"),
-                                          seconds);
+  const std::string summary = fmt::format(
+      "{}, {}, {} in {:.3f} s", count_of(static_cast<std::size_t>(result.increments), "increment"),
+      count_of(static_cast<std::size_t>(result.iterations), "iteration"),
+      count_of(static_cast<std::size_t>(result.cutbacks), "cutback"), seconds);
   // scripts/bench_setup.sh reads this line: reading, plan and columns are the run's setup.
-  log.info(fmt::format("time: reading {:.3f} s, plan {:.3f} s, columns {:.3f} s, symbolic "
-                       "analysis {:.3f} s, Newton {:.3f} s, whole run {:.3f} s",
-                       read_seconds, plan_seconds, columns_seconds, result.analyze_seconds,
-                       result.newton_seconds, seconds));
+  log.info(
+      fmt::format("time: reading {:.3f} s, plan {:.3f} s, columns {:.3f} s, symbolic "
+                  "analysis {:.3f} s, Newton {:.3f} s, whole run {:.3f} s",
+                  read_seconds, plan_seconds, columns_seconds, result.analyze_seconds,
+                  result.newton_seconds, seconds));
   if (result.factorizations > 0) {
     // The per-iteration cost against its floor, one factorization plus solve
     // (scripts/bench_lattice.sh reads this line).
     const double n = result.factorizations;
-    log.info(fmt::format("factorize+solve: {:.6g} s per iteration ({} factorizations); Newton: "
-                         "{:.6g} s per iteration; whole run: {:.6g} s per iteration",
-                         result.linear_seconds / n, result.factorizations,
-                         result.newton_seconds / n, seconds / n));
+    log.info(fmt::format(
+        "factorize+solve: {:.6g} s per iteration ({} factorizations); Newton: "
+        "{:.6g} s per iteration; whole run: {:.6g} s per iteration",
+        result.linear_seconds / n, result.factorizations, result.newton_seconds / n, seconds / n));
   }
   if (!result.completed) {
     log.error(fmt::format("{}: FAILED after {}", job, summary));

@@ -176,18 +176,26 @@ LinearStatus PetscSolver::analyze(const SparseMatrix& pattern, std::string* mess
   const int n = pattern.n;
   input_nonzeros_ = pattern.nonzeros();
   node_block_ = pattern.node_block;
-  diagonal_ = diagonal_positions(pattern);
-  line_entries_.assign(n, 0);
-  // Full pattern in compressed rows (AIJ's layout) and its gather map.
-  FullPattern full = full_pattern(pattern, true);
-  row_ptr_ = std::move(full.ptr);
-  col_idx_ = std::move(full.idx);
-  source_ = std::move(full.source);
+  summed_ = pattern.partial();
+  if (summed_ && !distributed_) {
+    throw std::invalid_argument("PetscSolver::analyze: a part of a matrix on one process");
+  }
+  if (!summed_) {
+    diagonal_ = diagonal_positions(pattern);
+    line_entries_.assign(n, 0);
+    // Full pattern in compressed rows (AIJ's layout) and its gather map.
+    FullPattern full = full_pattern(pattern, true);
+    row_ptr_ = std::move(full.ptr);
+    col_idx_ = std::move(full.idx);
+    source_ = std::move(full.source);
+  }
   if (n == 0) {
     n_ = 0;
     return LinearStatus::Ok;
   }
-  if (const PetscErrorCode code = distributed_ ? create_distributed_objects() : create_objects();
+  if (const PetscErrorCode code = summed_        ? create_summed_objects(pattern)
+                                  : distributed_ ? create_distributed_objects()
+                                                 : create_objects();
       code != 0) {
     release();
     return petsc_failure(code, "matrix and solver setup", message);
@@ -226,16 +234,16 @@ PetscErrorCode PetscSolver::create_objects() {
   return direct_ ? use_direct() : configure_iterative();
 }
 
-// Under mpirun: rank r owns a contiguous share of the node blocks (share_of,
+// Under mpirun: rank r owns a contiguous share of the node blocks (owned_rows,
 // src/parallel/communicator.hpp), with global column indices.
 PetscErrorCode PetscSolver::create_distributed_objects() {
   const PetscInt n = static_cast<PetscInt>(row_ptr_.size()) - 1;
   int rank = 0, ranks = 1;
   MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
   MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
-  const ItemRange blocks = share_of(static_cast<std::size_t>(n / node_block_), rank, ranks);
-  first_row_ = static_cast<int>(blocks.begin) * node_block_;
-  local_rows_ = static_cast<int>(blocks.end - blocks.begin) * node_block_;
+  const ItemRange rows = owned_rows(static_cast<int>(n), node_block_, rank, ranks);
+  first_row_ = static_cast<int>(rows.begin);
+  local_rows_ = static_cast<int>(rows.end - rows.begin);
   const int offset = row_ptr_[first_row_];
   std::vector<PetscInt> local_row_ptr(local_rows_ + 1);
   for (int r = 0; r <= local_rows_; ++r) local_row_ptr[r] = row_ptr_[first_row_ + r] - offset;
@@ -308,6 +316,7 @@ LinearStatus PetscSolver::factorize(const SparseMatrix& k, std::string* message)
     factorized_ = true;
     return LinearStatus::Ok;
   }
+  if (summed_) return factorize_summed(k, message);
   if (const int p = first_non_finite(k); p >= 0) {
     set_message(message, non_finite_message(k, p, name()));
     return LinearStatus::Failure;
@@ -339,12 +348,37 @@ LinearStatus PetscSolver::factorize(const SparseMatrix& k, std::string* message)
   if (const PetscErrorCode code = copy_values(k); code != 0) {
     return petsc_failure(code, "matrix access", message);
   }
+  return factor_or_set_up(std::any_of(diagonal_.begin(), diagonal_.end(),
+                                      [&](int p) { return p < 0 || k.values[p] <= 0.0; }),
+                          message);
+}
+
+LinearStatus PetscSolver::factorize_summed(const SparseMatrix& part, std::string* message) {
+  // The first rank with a non-finite entry in its part names it on every rank.
+  const int p = first_non_finite(part);
+  std::string text = p >= 0 ? non_finite_message(part, p, name()) : std::string();
+  if (first_rank_with(p >= 0, text)) {
+    set_message(message, text);
+    return LinearStatus::Failure;
+  }
+  int zero_row = n_;
+  bool indefinite = false;
+  PetscErrorCode code = sum_parts(part);
+  if (code == 0) code = classify_owned_rows(zero_row, indefinite);
+  if (code != 0) return petsc_failure(code, "matrix assembly", message);
+  if (zero_row < n_) {
+    failed_pivot_ = zero_row;
+    set_message(message, pivot_message(LinearStatus::Singular, failed_pivot_, name()));
+    return LinearStatus::Singular;
+  }
+  return factor_or_set_up(indefinite, message);
+}
+
+LinearStatus PetscSolver::factor_or_set_up(bool indefinite, std::string* message) {
   if (!direct_) {
     // A diagonal entry a_jj <= 0 proves the matrix is not positive definite (e_jᵀ K e_j = a_jj):
     // CG is not meant for it, nor BoomerAMG's smoothers; LU takes over for good, as CHOLMOD hands
     // over to UMFPACK (automatic_solver.hpp).
-    const bool indefinite = std::any_of(diagonal_.begin(), diagonal_.end(),
-                                        [&](int p) { return p < 0 || k.values[p] <= 0.0; });
     if (!indefinite) return set_up_iterative(message);
     if (const PetscErrorCode code = use_direct(); code != 0) {
       return petsc_failure(code, "MUMPS setup", message);
@@ -525,6 +559,17 @@ LinearStatus PetscSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x,
       code = run_solve();
     }
   }
+  if (code == 0 && summed_ && !direct_ && reason_ >= 0 && !decoupled_lines_.empty()) {
+    // The owned lines coupled to no other take their exact solution before the gather.
+    PetscScalar* owned = nullptr;
+    code = VecGetArray(solution_, &owned);
+    if (code == 0) {
+      for (const auto& [line, diagonal] : decoupled_lines_) {
+        owned[line - first_row_] = b[line] / diagonal;
+      }
+      code = VecRestoreArray(solution_, &owned);
+    }
+  }
   if (code == 0 && distributed_ && reason_ >= 0) {
     code = VecScatterBegin(gather_, solution_, whole_solution_, INSERT_VALUES, SCATTER_FORWARD);
     if (code == 0) {
@@ -536,7 +581,7 @@ LinearStatus PetscSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x,
   // A line coupled to no other (a prescribed DOF's row Δu = target − u, its column moved to the
   // right-hand side) has its exact solution: an iterative solve leaves it within the tolerance
   // only, and Newton would then never see a prescribed DOF on its target.
-  if (!direct_ && reason_ >= 0) {
+  if (!direct_ && reason_ >= 0 && !summed_) {
     for (const auto& [line, diagonal] : decoupled_lines_) x[line] = b[line] / diagonal;
   }
   if (reason_ < 0) {

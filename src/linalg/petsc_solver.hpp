@@ -2,9 +2,10 @@
 // machine"): conjugate gradients preconditioned by hypre BoomerAMG for symmetric positive definite
 // tangents, GMRES with BoomerAMG for unsymmetric ones without multipliers (friction, damage:
 // behaviors.md §7.4), MUMPS LU through PETSc for KKT systems with multipliers
-// (connection-types.md §3.8) and for any system on which the Krylov method fails. On one process the matrix
-// is a sequential AIJ; under mpirun each rank holds its share of the rows, and every rank passes
-// the same whole matrix and right-hand side and receives the whole solution (docs/parallel.md).
+// (connection-types.md §3.8) and for any system on which the Krylov method fails. On one process
+// the matrix is a sequential AIJ; under mpirun each rank holds its share of the rows, and every
+// rank passes the same whole matrix and right-hand side and receives the whole solution
+// (docs/parallel.md).
 #pragma once
 
 #include <utility>
@@ -60,6 +61,17 @@ class PetscSolver final : public LinearSolver {
   int create_distributed_objects();
   // Writes the values of `k` into the matrix (this rank's rows when distributed).
   int copy_values(const SparseMatrix& k);
+  // A matrix assembled by rows (petsc_summed_matrix.cpp): the distributed matrix preallocated
+  // from this rank's part, the parts summed into it, and its owned rows read for a row of
+  // zeros, rows with their diagonal only and diagonals that are not positive.
+  int create_summed_objects(const SparseMatrix& part);
+  int sum_parts(const SparseMatrix& part);
+  int classify_owned_rows(int& zero_row, bool& indefinite);
+  LinearStatus factorize_summed(const SparseMatrix& part, std::string* message);
+  // CG with BoomerAMG unless `indefinite` or the KSP is already MUMPS's; then LU.
+  LinearStatus factor_or_set_up(bool indefinite, std::string* message);
+  // True when some rank has `mine` set; `text` is then the lowest such rank's on every rank.
+  static bool first_rank_with(bool mine, std::string& text);
   // Makes the KSP a MUMPS LU for good (the matrix proved indefinite or CG failed on it).
   int use_direct();
   int configure_iterative();
@@ -82,6 +94,11 @@ class PetscSolver final : public LinearSolver {
   // rank the whole solution.
   bool distributed_ = false;
   int first_row_ = 0, local_rows_ = 0;
+  // Assembled by rows (SparseMatrix::partial): the COO values of this rank's part, its stored
+  // values then the mirrors of the upper triangle's entries `mirrored_` off the diagonal.
+  bool summed_ = false;
+  std::vector<double> coo_values_;
+  std::vector<int> mirrored_;
   std::vector<double> local_values_;
   PetscSF gather_ = nullptr;
   Vec whole_solution_ = nullptr;
@@ -97,7 +114,8 @@ class PetscSolver final : public LinearSolver {
   std::vector<int> source_;
   std::vector<int> diagonal_;
   // Per line of the current values: 0 no nonzero entry, 1 its diagonal only, 2 coupled to
-  // another line; and the lines of kind 1 with their diagonal value.
+  // another line; and the lines of kind 1 with their diagonal value (assembled by rows: the
+  // owned rows with their diagonal only).
   std::vector<char> line_entries_;
   std::vector<std::pair<int, double>> decoupled_lines_;
   double rtol_ = 1e-10;

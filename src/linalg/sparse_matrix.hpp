@@ -19,8 +19,19 @@ struct SparseMatrix {
   // DOFs (a translational lattice: 3). Solvers of nodal systems use it (BoomerAMG coarsens nodes
   // instead of single equations); the others ignore it.
   int node_block = 1;
+  // Assembled by rows under mpirun (docs/parallel.md "Assembly by rows"): this rank's part of
+  // the matrix, which the distributed solver sums with the other ranks' parts. It holds the
+  // entries of the rank's own elements and what is added per row for the rows
+  // [first_owned_row, first_owned_row + owned_rows) it owns in the solver's partition. −1: the
+  // whole matrix.
+  int first_owned_row = 0, owned_rows = -1;
 
   int nonzeros() const { return col_ptr.empty() ? 0 : col_ptr.back(); }
+  bool partial() const { return owned_rows >= 0; }
+  // Whether this part adds what belongs to row i alone (every row of a whole matrix).
+  bool owns_row(int i) const {
+    return owned_rows < 0 || (i >= first_owned_row && i < first_owned_row + owned_rows);
+  }
 };
 
 // Throws std::invalid_argument when the arrays do not form a valid pattern of the kind above

@@ -20,6 +20,11 @@ struct ItemRange {
 };
 ItemRange share_of(std::size_t count, int rank, int size);
 
+// The rows of an n-equation system that rank `rank` of `size` owns in the distributed solver:
+// contiguous shares of whole node blocks of `node_block` equations, so that no node is split
+// (SparseMatrix::node_block).
+ItemRange owned_rows(int n, int node_block, int rank, int size);
+
 class Communicator {
  public:
   virtual ~Communicator() = default;

@@ -21,6 +21,16 @@ LinearStatus BorderedSolver::factorize(const SparseMatrix& k, std::string* messa
 }
 
 LinearStatus BorderedSolver::factorize_whole(const SparseMatrix& k, std::string* message) {
+  if (k.partial()) {
+    // A run whose laws can soften holds the whole tangent (whole_tangent_need.hpp); another one
+    // meets a singular tangent on a followed path only where its own model is singular.
+    if (message) {
+      *message =
+          "the tangent is singular on the path, and a distributed run that assembles its "
+          "tangent by rows cannot solve the bordered matrix whole (run it on one process)";
+    }
+    return LinearStatus::Singular;
+  }
   const int n = k.n;
   if (!whole_solver_ || bordered_.n != n + 1) {
     // Full storage: K's entries by columns (both triangles of upper storage), the row ∂g/∂q
@@ -72,8 +82,9 @@ LinearStatus BorderedSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x,
     if (path_.correction(b, solution_, tangent_, x)) return LinearStatus::Ok;
   }
   if (message) {
-    *message = "the arc-length constraint does not cut the path's tangent (the bordered "
-               "system is singular)";
+    *message =
+        "the arc-length constraint does not cut the path's tangent (the bordered "
+        "system is singular)";
   }
   return LinearStatus::Singular;
 }
