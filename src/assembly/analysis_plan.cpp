@@ -10,6 +10,7 @@
 #include "src/behavior/connector_laws.hpp"
 #include "src/behavior/elastic/elastic_behavior.hpp"
 #include "src/model/orientation_triad.hpp"
+#include "src/parallel/communicator.hpp"
 
 namespace clinch {
 namespace {
@@ -42,7 +43,8 @@ std::vector<ComponentMask> motion_components(const Model& model) {
 
 class PlanBuilder {
  public:
-  PlanBuilder(const Model& model, AnalysisPlan& plan) : model_(model), plan_(plan) {}
+  PlanBuilder(const Model& model, AnalysisPlan& plan, const PlanShare* share)
+      : model_(model), plan_(plan), share_(share) {}
 
   bool build(std::string* error) {
     plan_.dofs = DofMap(active_dofs(model_));
@@ -65,10 +67,12 @@ class PlanBuilder {
     plan_.stabilized = std::any_of(steps.begin(), steps.end(), [](const Step& s) {
       return s.procedure && s.procedure->stabilize && !s.dynamic;
     });
-    plan_.energies = plan_.dynamic || plan_.stabilized || std::any_of(steps.begin(), steps.end(), [](const Step& s) {
-                       return std::any_of(s.outputs.begin(), s.outputs.end(),
-                                          [](const OutputRequest& r) { return !r.energies.empty(); });
-                     });
+    plan_.energies =
+        plan_.dynamic || plan_.stabilized ||
+        std::any_of(steps.begin(), steps.end(), [](const Step& s) {
+          return std::any_of(s.outputs.begin(), s.outputs.end(),
+                             [](const OutputRequest& r) { return !r.energies.empty(); });
+        });
     section_laws_.assign(model_.sections.connector_sections.size(), {});
     section_laws_built_.assign(model_.sections.connector_sections.size(), false);
     section_stops_.assign(model_.sections.connector_sections.size(), nullptr);
@@ -84,7 +88,16 @@ class PlanBuilder {
                       [](const Element& element) { return is_connector(element.type); }));
     plan_.connectors.reserve(connectors);
     plan_.kinematics.reserve(connectors);
-    plan_.springs.reserve(model_.elements.size() - connectors);
+    plan_.spring_total = static_cast<std::size_t>(
+        std::count_if(model_.elements.begin(), model_.elements.end(), [](const Element& element) {
+          return element.type != ElementType::Held && !is_connector(element.type);
+        }));
+    own_springs_ = {0, plan_.spring_total};
+    if (share_ && !plan_.energies) {
+      own_springs_ = share_of(plan_.spring_total, share_->rank, share_->ranks);
+    }
+    plan_.first_spring = own_springs_.begin;
+    plan_.springs.reserve(own_springs_.end - own_springs_.begin);
     for (std::size_t e = 0; e < model_.elements.size(); ++e) {
       const Element& element = model_.elements[e];
       // Held elements carry no formulation: only MASS and ROTARYI reach a run, as the nodal
@@ -247,51 +260,19 @@ class PlanBuilder {
   }
 
   bool add_spring(std::int32_t e, std::string* /*error*/) {
-    const Element& element = model_.elements[static_cast<std::size_t>(e)];
-    const std::int32_t p = model_.sections.spring_of_element[static_cast<std::size_t>(e)];
-    const SpringProperty& property = model_.sections.springs[static_cast<std::size_t>(p)];
-    SpringRecord r;
-    r.element = e;
-    r.type = spring_form(element.type);
-    r.dashpot = is_dashpot(element.type);
-    r.nodes = element.nodes;
-    r.law = static_cast<std::size_t>(p);
-    int first_dof = 1;
-    if (r.type == ElementType::SpringA) {
-      r.d0 = to_vector(model_.nodes[static_cast<std::size_t>(r.nodes[1])].x) -
-             to_vector(model_.nodes[static_cast<std::size_t>(r.nodes[0])].x);
-    } else {
-      // keywords.md §7: DOF d means the global axis, or local axis e_d of the orientation.
-      Triad triad{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
-      if (property.orientation_index >= 0) {
-        const Orientation& o =
-            model_.sections.orientations[static_cast<std::size_t>(property.orientation_index)];
-        triad = placed_triad(model_, o, element.instance);
-      }
-      const int slots = r.type == ElementType::Spring1 ? 1 : 2;
-      for (int k = 0; k < slots; ++k) {
-        const int dof = property.dofs[static_cast<std::size_t>(k)];
-        r.rotational = dof >= 4;
-        r.direction[static_cast<std::size_t>(k)] =
-            to_vector(triad[static_cast<std::size_t>((dof - 1) % 3)]);
-      }
-      first_dof = r.rotational ? 4 : 1;
+    const std::size_t index = next_spring_++;
+    plan_.spring_of_element[static_cast<std::size_t>(e)] = static_cast<std::int32_t>(index);
+    if (index >= own_springs_.begin && index < own_springs_.end) {
+      plan_.springs.push_back(spring_record(model_, plan_.dofs, e));
     }
-    for (int c = 0; c < 6; ++c) {
-      const int eq =
-          plan_.dofs.equation(r.nodes[static_cast<std::size_t>(c / 3)], first_dof + c % 3);
-      if (eq < 0) continue;
-      r.columns[static_cast<std::size_t>(r.column_count++)] = static_cast<std::int8_t>(c);
-      r.local.equation[static_cast<std::size_t>(r.local.count++)] = eq;
-    }
-    plan_.spring_of_element[static_cast<std::size_t>(e)] =
-        static_cast<std::int32_t>(plan_.springs.size());
-    plan_.springs.push_back(r);
     return true;
   }
 
   const Model& model_;
   AnalysisPlan& plan_;
+  const PlanShare* share_;
+  ItemRange own_springs_;        // the springs whose records this plan holds
+  std::size_t next_spring_ = 0;  // in element order
   std::vector<ComponentMask> motions_;
   std::vector<std::vector<const Behavior*>> section_laws_;
   std::vector<bool> section_laws_built_;
@@ -301,6 +282,46 @@ class PlanBuilder {
 };
 
 }  // namespace
+
+SpringRecord spring_record(const Model& model, const DofMap& dofs, std::int32_t e) {
+  const Element& element = model.elements[static_cast<std::size_t>(e)];
+  const std::int32_t p = model.sections.spring_of_element[static_cast<std::size_t>(e)];
+  const SpringProperty& property = model.sections.springs[static_cast<std::size_t>(p)];
+  SpringRecord r;
+  r.element = e;
+  r.type = spring_form(element.type);
+  r.dashpot = is_dashpot(element.type);
+  r.nodes = element.nodes;
+  r.law = static_cast<std::size_t>(p);
+  int first_dof = 1;
+  if (r.type == ElementType::SpringA) {
+    r.d0 = to_vector(model.nodes[static_cast<std::size_t>(r.nodes[1])].x) -
+           to_vector(model.nodes[static_cast<std::size_t>(r.nodes[0])].x);
+  } else {
+    // keywords.md §7: DOF d means the global axis, or local axis e_d of the orientation.
+    Triad triad{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+    if (property.orientation_index >= 0) {
+      const Orientation& o =
+          model.sections.orientations[static_cast<std::size_t>(property.orientation_index)];
+      triad = placed_triad(model, o, element.instance);
+    }
+    const int slots = r.type == ElementType::Spring1 ? 1 : 2;
+    for (int k = 0; k < slots; ++k) {
+      const int dof = property.dofs[static_cast<std::size_t>(k)];
+      r.rotational = dof >= 4;
+      r.direction[static_cast<std::size_t>(k)] =
+          to_vector(triad[static_cast<std::size_t>((dof - 1) % 3)]);
+    }
+    first_dof = r.rotational ? 4 : 1;
+  }
+  for (int c = 0; c < 6; ++c) {
+    const int eq = dofs.equation(r.nodes[static_cast<std::size_t>(c / 3)], first_dof + c % 3);
+    if (eq < 0) continue;
+    r.columns[static_cast<std::size_t>(r.column_count++)] = static_cast<std::int8_t>(c);
+    r.local.equation[static_cast<std::size_t>(r.local.count++)] = eq;
+  }
+  return r;
+}
 
 void AnalysisPlan::add_law(std::size_t c, const Behavior& law) {
   LawStack& stack = connectors[c].laws;
@@ -316,9 +337,10 @@ bool AnalysisPlan::laws_symmetric() const {
                      [](const ConnectorRecord& r) { return r.laws.symmetric; });
 }
 
-std::optional<AnalysisPlan> build_analysis_plan(const Model& model, std::string* error) {
+std::optional<AnalysisPlan> build_analysis_plan(const Model& model, std::string* error,
+                                                const PlanShare* share) {
   AnalysisPlan plan;
-  if (!PlanBuilder(model, plan).build(error)) return std::nullopt;
+  if (!PlanBuilder(model, plan, share).build(error)) return std::nullopt;
   if (!build_dependent_dofs(model, plan.dofs, plan.dependents, error)) return std::nullopt;
   expand_constrained_elements(plan);
   return plan;

@@ -37,7 +37,7 @@ struct LocalEquations {
 struct ElementExpansion {
   // Its independent nodal equations, those its dependent DOFs depend on, then its multipliers.
   std::vector<int> equations;
-  std::vector<std::int16_t> place;       // per local row: its place in `equations`, −1 if dependent
+  std::vector<std::int16_t> place;  // per local row: its place in `equations`, −1 if dependent
   std::vector<std::int16_t> term_place;  // the places of the dependent rows' gradients, in order
 };
 
@@ -123,7 +123,7 @@ struct SpringRecord {
   std::array<Vector3, 2> direction{Vector3::Zero(), Vector3::Zero()};
   bool rotational = false;
   LocalEquations local;
-  std::int32_t expansion = -1;  // into AnalysisPlan::expansions when a DOF is dependent
+  std::int32_t expansion = -1;           // into AnalysisPlan::expansions when a DOF is dependent
   std::array<std::int8_t, 6> columns{};  // SPRINGA: 0–2 node 1, 3–5 node 2; SPRING1/2: 0–2 / 3–5
   int column_count = 0;
 };
@@ -141,8 +141,12 @@ struct AnalysisPlan {
   std::vector<ConnectorRecord> connectors;
   std::vector<std::int32_t> connector_of_element;     // global element → connector record (−1)
   std::vector<std::optional<SpringLaw>> spring_laws;  // per *SPRING (empty when invalid)
+  // Every spring of the model (spring_total of them, in element order), or in a rank's plan
+  // (build_analysis_plan with a share) the springs first_spring … first_spring + springs.size()
+  // − 1 of them.
   std::vector<SpringRecord> springs;
-  std::vector<std::int32_t> spring_of_element;
+  std::size_t first_spring = 0, spring_total = 0;
+  std::vector<std::int32_t> spring_of_element;  // global element → spring (−1)
   // The DOFs kinematic constraints eliminate, and the elements that have some.
   DependentDofs dependents;
   std::vector<ElementExpansion> expansions;
@@ -164,10 +168,23 @@ struct AnalysisPlan {
   void add_law(std::size_t c, const Behavior& law);
   // True when every law of every connector returns a symmetric tangent.
   bool laws_symmetric() const;
+  // True when this plan holds the records of only some of the springs.
+  bool springs_shared() const { return springs.size() < spring_total; }
+  const SpringRecord& spring(std::size_t s) const { return springs[s - first_spring]; }
 };
 
 // Builds the plan of a validated model (no errors). Returns nullopt with `error` when the model
-// asks for something clinch run cannot do yet.
-std::optional<AnalysisPlan> build_analysis_plan(const Model& model, std::string* error);
+// asks for something clinch run cannot do yet. With `share` (a distributed model under assembly
+// by rows, docs/parallel.md), the plan of rank `rank` of `ranks`: the records of its share of
+// the springs (share_of in element order), unless the run keeps the whole-model energies, whose
+// dashpot work reads every spring.
+// The record of spring element `e` of the model (a rank's plan holds only its share of them).
+SpringRecord spring_record(const Model& model, const DofMap& dofs, std::int32_t e);
+
+struct PlanShare {
+  int rank = 0, ranks = 1;
+};
+std::optional<AnalysisPlan> build_analysis_plan(const Model& model, std::string* error,
+                                                const PlanShare* share = nullptr);
 
 }  // namespace clinch

@@ -18,17 +18,22 @@ AssemblyPattern build_assembly_pattern(const AnalysisPlan& plan, bool symmetric,
   const DependentDofs& dependents = plan.dependents;
   const int n = dependents.solved_count(plan.dofs);
   const int node_block = dependents.solved_node_block(plan.dofs);
+  if (!share && plan.springs_shared()) {
+    throw std::logic_error("build_assembly_pattern: the whole pattern of a rank's plan");
+  }
   if (share && !dependents.empty()) {
     throw std::logic_error("build_assembly_pattern: a rank's part of a plan with dependent DOFs");
   }
   const ItemRange rows = share ? owned_rows(n, node_block, share->rank, share->ranks)
                                : ItemRange{0, static_cast<std::size_t>(n)};
   const ItemRange connectors = share ? share->connectors : ItemRange{0, plan.connectors.size()};
-  const ItemRange springs = share ? share->springs : ItemRange{0, plan.springs.size()};
+  const ItemRange springs =
+      share ? share->springs
+            : ItemRange{plan.first_spring, plan.first_spring + plan.springs.size()};
   const std::span<const ConnectorRecord> own_connectors(plan.connectors.data() + connectors.begin,
                                                         connectors.end - connectors.begin);
-  const std::span<const SpringRecord> own_springs(plan.springs.data() + springs.begin,
-                                                  springs.end - springs.begin);
+  const std::span<const SpringRecord> own_springs(
+      plan.springs.data() + (springs.begin - plan.first_spring), springs.end - springs.begin);
   SparsityBuilder builder(n, symmetric, static_cast<int>(rows.begin), static_cast<int>(rows.end));
   // An element's equations: its own, or those of its condensed system (constrained_elements.hpp),
   // in the solved numbering.

@@ -62,7 +62,7 @@ ConnectorSystem::ConnectorSystem(const Model& model, const AnalysisPlan& plan)
       predictor_(internal_),
       deleted_(plan.connectors.size(), 0),
       owned_connectors_{0, plan.connectors.size()},
-      owned_springs_{0, plan.springs.size()},
+      owned_springs_{plan.first_spring, plan.first_spring + plan.springs.size()},
       motion_(plan.dependents, plan.dofs),
       constraint_load_(Eigen::VectorXd::Zero(plan.dependents.empty() ? 0 : plan.dofs.equations())),
       inertia_force_(Eigen::VectorXd::Zero(plan.dynamic ? plan.dofs.equations() : 0)),
@@ -428,13 +428,14 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
     add_component_forces(state_.results[c]);
   }
   for (std::size_t s = owned_springs_.begin; failed.ok && s < owned_springs_.end; ++s) {
-    const SpringRecord& spring = plan_.springs[s];
+    const SpringRecord& spring = plan_.spring(s);
+    SpringResult& result = springs_[s - plan_.first_spring];
     evaluate_spring(plan_, spring,
                     {state_.x, state_.x_n, context_.dt, context_.nlgeom,
                      newmark_ ? &state_.v : nullptr, newmark_ ? newmark_->dv_du : 0.0},
-                    want_tangent, local, springs_[s]);
-    if (zero_unless_non_finite(local.r.head(spring.local.count)) + springs_[s].force * 0.0 +
-            springs_[s].delta * 0.0 !=
+                    want_tangent, local, result);
+    if (zero_unless_non_finite(local.r.head(spring.local.count)) + result.force * 0.0 +
+            result.delta * 0.0 !=
         0.0) {
       const Element& e = model_.elements[static_cast<std::size_t>(spring.element)];
       failed = {false, fmt::format("spring element {}: a force or output is not finite",

@@ -181,7 +181,19 @@ class ConnectorSystem final : public NonlinearProblem {
   // The whole-model energies at the last converged increment (plan().energies; else zero).
   ModelEnergies energies() const;
   ConnectorOutput connector_output(std::size_t connector) const;
-  const SpringResult& spring_output(std::size_t spring) const { return springs_[spring]; }
+  // Spring `spring` (global index), of those whose results this rank holds (holds_spring: every
+  // one unless the plan holds a share of the springs).
+  const SpringResult& spring_output(std::size_t spring) const {
+    return springs_[spring - plan_.first_spring];
+  }
+  bool holds_spring(std::size_t spring) const {
+    return spring >= plan_.first_spring && spring < plan_.first_spring + springs_.size();
+  }
+  // Element-wise sums over the ranks of a distributed run, in place (nothing on one process):
+  // for outputs whose parts each rank holds (history columns of springs).
+  void sum_over_ranks(std::span<double> values) const {
+    if (communicator_) communicator_->sum(values);
+  }
   const AnalysisPlan& plan() const { return plan_; }
   // The motion of the dependent DOFs with its gradients at the current state.
   DependentMotion dependent_motion() const;

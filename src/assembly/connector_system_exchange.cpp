@@ -63,7 +63,10 @@ void ConnectorSystem::distribute(Communicator& communicator, bool by_rows) {
   by_rows_ = by_rows;
   const int size = communicator.size();
   owned_connectors_ = share_of(plan_.connectors.size(), communicator.rank(), size);
-  owned_springs_ = share_of(plan_.springs.size(), communicator.rank(), size);
+  // A plan with a share of the springs (build_analysis_plan) already says which this rank has.
+  if (!plan_.springs_shared()) {
+    owned_springs_ = share_of(plan_.spring_total, communicator.rank(), size);
+  }
   // The laws' history is laid out connector by connector (AnalysisPlan::add_law): a rank's share
   // of it runs from its first connector's first slot to the next rank's.
   const auto history_start = [&](std::size_t c) {
@@ -103,7 +106,11 @@ void ConnectorSystem::exchange(SparseMatrix* tangent, EvalStatus& status) {
   comm.share(reinterpret_cast<std::byte*>(state_.results.data()), state_.results.size(),
              sizeof(ConnectorResult));
   comm.share_bytes(reinterpret_cast<std::byte*>(state_.history.data()), history_bytes_);
-  comm.share(reinterpret_cast<std::byte*>(springs_.data()), springs_.size(), sizeof(SpringResult));
+  // A rank that holds a share of the springs keeps their results (history columns ask it).
+  if (!plan_.springs_shared()) {
+    comm.share(reinterpret_cast<std::byte*>(springs_.data()), springs_.size(),
+               sizeof(SpringResult));
+  }
   exchange_step_requests();
 }
 

@@ -79,13 +79,24 @@ Holding elements_holding(const Model& model, const AnalysisPlan& plan, int equat
       }
     }
   }
-  for (const SpringRecord& s : plan.springs) {
+  const auto add_spring = [&](const SpringRecord& s) {
     for (int k = 0; k < s.column_count; ++k) {
       if (s.local.equation[static_cast<std::size_t>(k)] == equation &&
           spring_holds(s, s.columns[static_cast<std::size_t>(k)])) {
         add(element_type_name(model.elements[static_cast<std::size_t>(s.element)].type), s.element);
       }
     }
+  };
+  if (plan.springs_shared()) {
+    // A rank's plan holds only its share of the springs: every rank names them all, from the
+    // model, so that the ranks agree on the message.
+    for (std::size_t e = 0; e < plan.spring_of_element.size(); ++e) {
+      if (plan.spring_of_element[e] >= 0) {
+        add_spring(spring_record(model, plan.dofs, static_cast<std::int32_t>(e)));
+      }
+    }
+  } else {
+    for (const SpringRecord& s : plan.springs) add_spring(s);
   }
   Holding holding{found.size(), {}};
   if (found.empty()) return holding;

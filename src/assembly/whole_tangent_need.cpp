@@ -4,8 +4,10 @@
 
 namespace clinch {
 
-std::string whole_tangent_need(const Model& model, const AnalysisPlan& plan) {
-  if (!plan.dependents.empty()) {
+std::string whole_tangent_need(const Model& model) {
+  const ConstraintModel& constraints = model.constraints;
+  if (!constraints.followers.empty() || !constraints.equations.empty() ||
+      !constraints.links.empty()) {
     return "kinematic constraints condense their DOFs' rows onto the DOFs they follow";
   }
   for (const Step& step : model.history.steps) {

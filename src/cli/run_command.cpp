@@ -181,7 +181,19 @@ int run_deck(const RunCommandOptions& options) {
   }
   const double read_seconds = seconds_since(start);
   const auto plan_start = std::chrono::steady_clock::now();
-  std::optional<AnalysisPlan> plan = build_analysis_plan(model, &error);
+  // Under mpirun each rank assembles its part of the tangent and the PETSc backend sums the
+  // parts, and the plan holds the rank's share of the springs, unless another backend or a
+  // feature needs the whole tangent on every rank (docs/parallel.md).
+  std::string whole_tangent;
+  std::optional<PlanShare> share;
+  if (communicator) {
+    whole_tangent =
+        options.solver == SolverChoice::Automatic || options.solver == SolverChoice::Petsc
+            ? whole_tangent_need(model)
+            : std::string("the --solver asked for solves the whole system on every rank");
+    if (whole_tangent.empty()) share = PlanShare{communicator->rank(), communicator->size()};
+  }
+  std::optional<AnalysisPlan> plan = build_analysis_plan(model, &error, share ? &*share : nullptr);
   if (!plan) {
     log.error(fmt::format("{}: error: {}", deck_name, error));
     return kExitDeckErrors;
@@ -197,7 +209,7 @@ int run_deck(const RunCommandOptions& options) {
                                : fmt::format(" (and {} at the centres of mass of rigid "
                                              "bodies' elements)",
                                              centres),
-                  plan->connectors.size(), plan->springs.size(), node_equations,
+                  plan->connectors.size(), plan->spring_total, node_equations,
                   model.nodes.empty() ? 0.0 : double(node_equations) / model.nodes.size(),
                   plan->dofs.equations() - node_equations));
   if (!plan->dependents.empty()) {
@@ -209,23 +221,16 @@ int run_deck(const RunCommandOptions& options) {
   if (auto stick = default_stick_stiffness_summary(model.behaviors)) log.info(*stick);
   ConnectorSystem system(model, *plan);
   if (communicator) {
-    // Each rank assembles its part of the tangent and the PETSc backend sums the parts, unless
-    // another backend or a feature needs the whole tangent on every rank (docs/parallel.md).
-    std::string whole =
-        options.solver == SolverChoice::Automatic || options.solver == SolverChoice::Petsc
-            ? whole_tangent_need(model, *plan)
-            : std::string(
-                  "the --solver asked for solves the whole system on "
-                  "every rank");
-    system.distribute(*communicator, whole.empty());
+    system.distribute(*communicator, whole_tangent.empty());
     log.info(
         fmt::format("distributed over {} processes: each evaluates about {} connectors and "
                     "{} springs; {}",
                     communicator->size(),
                     (plan->connectors.size() + communicator->size() - 1) / communicator->size(),
-                    (plan->springs.size() + communicator->size() - 1) / communicator->size(),
-                    whole.empty() ? "each assembles its part of the tangent, which PETSc sums"
-                                  : "each rank holds the whole tangent: " + whole));
+                    (plan->spring_total + communicator->size() - 1) / communicator->size(),
+                    whole_tangent.empty()
+                        ? "each assembles its part of the tangent, which PETSc sums"
+                        : "each rank holds the whole tangent: " + whole_tangent));
   }
   if (stopped_before_analysis("while planning the analysis", output_path(".sta"), log)) {
     return kExitStopped;

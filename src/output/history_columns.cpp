@@ -70,8 +70,7 @@ HistoryColumns::HistoryColumns(const Model& model, const AnalysisPlan& plan)
   expand_steps();
 }
 
-std::size_t HistoryColumns::column(const std::string& name, Column c,
-                                   std::span<const Term> terms) {
+std::size_t HistoryColumns::column(const std::string& name, Column c, std::span<const Term> terms) {
   if (index_names_) {
     if (const auto it = column_of_name_.find(std::string_view(name)); it != column_of_name_.end()) {
       return *it;
@@ -193,8 +192,8 @@ std::vector<HistoryColumns::Request> HistoryColumns::expand_step(
     for (std::int32_t e : connectors) {
       const ConnectorRecord& r = plan_.connectors[static_cast<std::size_t>(
           plan_.connector_of_element[static_cast<std::size_t>(e)])];
-      const std::int32_t b = model_.sections.connector_sections[static_cast<std::size_t>(r.section)]
-                                 .behavior_index;
+      const std::int32_t b =
+          model_.sections.connector_sections[static_cast<std::size_t>(r.section)].behavior_index;
       if (b >= 0 && !features_of[static_cast<std::size_t>(b)]) {
         features_of[static_cast<std::size_t>(b)] =
             behavior_features(model_.behaviors.behaviors[static_cast<std::size_t>(b)]);
@@ -210,8 +209,10 @@ std::vector<HistoryColumns::Request> HistoryColumns::expand_step(
       if (features.plastic_motion_criterion) variables.push_back("CDIP");
       bool stops = !r.locks.empty();
       stops |= r.stops != nullptr;
-      if (stops) variables.insert(variables.end(), {"CRF", "CSLST"});
-      else if (driven[static_cast<std::size_t>(e)]) variables.push_back("CRF");
+      if (stops)
+        variables.insert(variables.end(), {"CRF", "CSLST"});
+      else if (driven[static_cast<std::size_t>(e)])
+        variables.push_back("CRF");
       if (features.friction) variables.insert(variables.end(), {"CSF", "CNF", "CASU"});
       if (features.kinematic_hardening) variables.push_back("CALPHAF");
       for (const char* v : variables) {
@@ -259,8 +260,10 @@ std::vector<HistoryColumns::Request> HistoryColumns::expand_step(
       const bool only = p->totals == PrintRequest::Totals::Only;
       const std::string set = set_label(p->set, !p->node);
       for (const OutputIdentifier& id : p->identifiers) {
-        if (p->node) node_columns(id, p->resolved, request, totals, only, set);
-        else element_columns(id, p->resolved, request, totals, only, set);
+        if (p->node)
+          node_columns(id, p->resolved, request, totals, only, set);
+        else
+          element_columns(id, p->resolved, request, totals, only, set);
       }
     }
     requests.push_back(std::move(request));
@@ -280,8 +283,8 @@ void HistoryColumns::total_columns(std::string_view variable,
   for (int k = 1; k <= 6; ++k) {
     const std::vector<Term>& terms = sums[static_cast<std::size_t>(k)];
     if (terms.empty()) continue;
-    request.columns.push_back(column(output_column_label(variable, k) + "@" + set,
-                                     {variable, k}, terms));
+    request.columns.push_back(
+        column(output_column_label(variable, k) + "@" + set, {variable, k}, terms));
   }
 }
 
@@ -389,15 +392,16 @@ std::int32_t HistoryColumns::derived_component(std::int32_t behavior_index,
   return index;
 }
 
-void HistoryColumns::node_columns(const OutputIdentifier& id, const std::vector<std::int32_t>& nodes,
-                                  Request& request, bool totals, bool totals_only,
-                                  const std::string& set) {
+void HistoryColumns::node_columns(const OutputIdentifier& id,
+                                  const std::vector<std::int32_t>& nodes, Request& request,
+                                  bool totals, bool totals_only, const std::string& set) {
   const OutputVariableInfo* info = output_variable_info(id.variable);
   if (!info) return;
   std::array<std::vector<Term>, 7> sums;
   for (std::int32_t n : nodes) {
     // A DOF that is not active at the node has no column (output-variables.md §3).
-    const auto components = static_cast<std::uint8_t>(id.components & active_[static_cast<std::size_t>(n)]);
+    const auto components =
+        static_cast<std::uint8_t>(id.components & active_[static_cast<std::size_t>(n)]);
     const Node& node = model_.nodes[static_cast<std::size_t>(n)];
     const std::string where = qualified_label(model_, node.instance, node.label);
     const Term term{Source::Node, n};
@@ -432,7 +436,7 @@ bool HistoryColumns::due(int increment, double step_time, bool last) const {
                      [&](const Request& r) { return r.due(increment, step_time, last); });
 }
 
-double HistoryColumns::value(const Column& c, ConnectorSystem& system) {
+double HistoryColumns::value(const Column& c, ConnectorSystem& system, SpringPart& springs) {
   double sum = 0;
   for (const Term& t : std::span(terms_).subspan(c.first_term, c.term_count)) {
     switch (t.source) {
@@ -462,8 +466,11 @@ double HistoryColumns::value(const Column& c, ConnectorSystem& system) {
         break;
       }
       case Source::Spring: {
+        // Only the rank that evaluates a spring holds its result (a distributed model).
+        springs.present = true;
+        if (!system.holds_spring(static_cast<std::size_t>(t.index))) break;
         const SpringResult& spring = system.spring_output(static_cast<std::size_t>(t.index));
-        sum += c.variable == "S" ? spring.force : c.variable == "E" ? spring.delta : 0.0;
+        springs.sum += c.variable == "S" ? spring.force : c.variable == "E" ? spring.delta : 0.0;
         break;
       }
       case Source::Node:
@@ -479,7 +486,9 @@ double HistoryColumns::value(const Column& c, ConnectorSystem& system) {
           sum += system.nodal_rate(t.index, c.component, 2);
         }
         break;
-      case Source::Model: sum += model_value(c.variable, system); break;
+      case Source::Model:
+        sum += model_value(c.variable, system);
+        break;
     }
   }
   return sum;
@@ -489,9 +498,23 @@ void HistoryColumns::evaluate(ConnectorSystem& system, int increment, double ste
                               std::vector<double>& values) {
   values.resize(columns_.size(), 0.0);
   output_connector_ = -1;  // the state has changed since the last row
+  spring_columns_.clear();
+  spring_sums_.clear();
   for (const Request& r : step_requests_[step_]) {
     if (!r.due(increment, step_time, last)) continue;
-    for (std::size_t c : r.columns) values[c] = value(columns_[c], system);
+    for (std::size_t c : r.columns) {
+      SpringPart springs;
+      values[c] = value(columns_[c], system, springs);
+      if (!springs.present) continue;
+      spring_columns_.push_back(c);
+      spring_sums_.push_back(springs.sum);
+    }
+  }
+  // Each rank holds the results of its own springs under a distributed model: the spring parts
+  // of the due columns, and only those, are summed over the ranks (docs/parallel.md).
+  if (system.plan().springs_shared()) system.sum_over_ranks(spring_sums_);
+  for (std::size_t k = 0; k < spring_columns_.size(); ++k) {
+    values[spring_columns_[k]] += spring_sums_[k];
   }
 }
 

@@ -87,7 +87,8 @@ class HistoryColumns {
   std::size_t column(const std::string& name, Column column, std::span<const Term> terms);
   void expand_steps();
   void add_load_factor_column();
-  std::vector<Request> expand_step(const Step* step, const std::vector<const OutputRequest*>& outputs,
+  std::vector<Request> expand_step(const Step* step,
+                                   const std::vector<const OutputRequest*>& outputs,
                                    const std::vector<const PrintRequest*>& prints,
                                    bool default_request);
   void element_columns(const OutputIdentifier& id, std::span<const std::int32_t> elements,
@@ -100,7 +101,16 @@ class HistoryColumns {
                     Request& request, bool totals, bool totals_only, const std::string& set);
   void total_columns(std::string_view variable, const std::array<std::vector<Term>, 7>& sums,
                      Request& request, const std::string& set);
-  double value(const Column& column, ConnectorSystem& system);
+  // The springs' part of a column: whether it has one, and the sum of the springs this rank
+  // evaluates.
+  struct SpringPart {
+    bool present = false;
+    double sum = 0.0;
+  };
+  // A column's value but for its springs' part, which goes to `springs`.
+  double value(const Column& column, ConnectorSystem& system, SpringPart& springs);
+  std::vector<std::size_t> spring_columns_;  // of the row being evaluated, with their sums
+  std::vector<double> spring_sums_;
 
   const Model& model_;
   const AnalysisPlan& plan_;

@@ -1,0 +1,98 @@
+// Assembly by rows (docs/parallel.md): a rank's plan holds its share of the springs, and its
+// pattern the entries of those springs and the diagonals of the rows it owns. Over the ranks the
+// shares are the whole plan and the parts cover the whole pattern, entry for entry.
+#include <gtest/gtest.h>
+
+#include <set>
+#include <utility>
+
+#include "parser/deck_reader.hpp"
+#include "src/assembly/analysis_plan.hpp"
+#include "src/assembly/assembly_pattern.hpp"
+#include "src/assembly/sparsity_pattern.hpp"
+#include "tests/unit/checked_deck.hpp"
+
+namespace clinch {
+namespace {
+
+using Entries = std::set<std::pair<int, int>>;  // (row, column) as stored
+
+Entries entries_of(const SparseMatrix& m) {
+  Entries out;
+  for (int j = 0; j < m.n; ++j) {
+    for (int p = m.col_ptr[j]; p < m.col_ptr[j + 1]; ++p) out.emplace(m.row_idx[p], j);
+  }
+  return out;
+}
+
+TEST(SparsityBuilder, PresetDiagonalsOnlyForTheGivenRowsAndForCoupledEquations) {
+  SparsityBuilder builder(4, true, 1, 2);
+  const int coupled[] = {0, 3};
+  builder.couple(coupled);
+  const SparseMatrix m = builder.build();
+  validate_pattern(m);
+  EXPECT_EQ(entries_of(m), (Entries{{0, 0}, {1, 1}, {0, 3}, {3, 3}}));
+}
+
+// Eight SPRINGA elements around and across a square of four free nodes, each also tied to the
+// ground node 5 by a SPRING1 on DOF 3.
+std::string square_deck() {
+  return "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n3, 1., 1., 0.\n4, 0., 1., 0.\n5, 2., 2., 0.\n"
+         "*ELEMENT, TYPE=SPRINGA, ELSET=A\n1, 1, 2\n2, 2, 3\n3, 3, 4\n4, 4, 1\n5, 1, 3\n6, 2, 4\n"
+         "7, 1, 5\n8, 3, 5\n"
+         "*SPRING, ELSET=A\n\n100.\n"
+         "*ELEMENT, TYPE=SPRING1, ELSET=Z\n11, 1\n12, 2\n13, 3\n14, 4\n"
+         "*SPRING, ELSET=Z\n3\n10.\n"
+         "*BOUNDARY\n5, 1, 3\n*STEP\n*STATIC\n*CLOAD\n3, 1, 1.\n*END STEP\n";
+}
+
+TEST(RowAssembly, RankSharesOfTheSpringsAndPatternPartsMakeTheWhole) {
+  CheckedDeck deck;
+  read_deck_text("square.inp", square_deck(), deck.sources, deck.model, deck.sink);
+  ASSERT_FALSE(deck.sink.has_errors()) << deck.dump();
+  std::string error;
+  const std::optional<AnalysisPlan> whole = build_analysis_plan(deck.model, &error);
+  ASSERT_TRUE(whole) << error;
+  ASSERT_EQ(whole->spring_total, 12u);
+  ASSERT_FALSE(whole->springs_shared());
+  const AssemblyPattern whole_pattern = build_assembly_pattern(*whole, true);
+  const int n = whole_pattern.matrix.n;
+  constexpr int kRanks = 3;
+  std::vector<std::int32_t> elements;
+  Entries covered;
+  int next_row = 0;
+  for (int rank = 0; rank < kRanks; ++rank) {
+    const PlanShare share{rank, kRanks};
+    const std::optional<AnalysisPlan> plan = build_analysis_plan(deck.model, &error, &share);
+    ASSERT_TRUE(plan) << error;
+    EXPECT_EQ(plan->spring_total, whole->spring_total);
+    EXPECT_EQ(plan->springs.size(), 4u);  // 12 springs over 3 ranks
+    EXPECT_TRUE(plan->springs_shared());
+    for (const SpringRecord& s : plan->springs) elements.push_back(s.element);
+    const ItemRange springs{plan->first_spring, plan->first_spring + plan->springs.size()};
+    const RowAssemblyShare rows{{0, 0}, springs, rank, kRanks};
+    const AssemblyPattern part = build_assembly_pattern(*plan, true, &rows);
+    validate_pattern(part.matrix);
+    ASSERT_TRUE(part.matrix.partial());
+    // The ranks own consecutive rows, whole nodes of three DOFs each.
+    EXPECT_EQ(part.matrix.first_owned_row, next_row);
+    EXPECT_EQ(part.matrix.owned_rows % 3, 0);
+    next_row += part.matrix.owned_rows;
+    for (int i = 0; i < n; ++i) {
+      if (part.matrix.owns_row(i)) EXPECT_GE(part.diagonal[static_cast<std::size_t>(i)], 0) << i;
+    }
+    const Entries mine = entries_of(part.matrix);
+    for (const auto& entry : mine) EXPECT_TRUE(entries_of(whole_pattern.matrix).count(entry));
+    covered.insert(mine.begin(), mine.end());
+    // Each spring's positions are in its rank's part.
+    EXPECT_EQ(part.spring_offset.size(), plan->springs.size());
+  }
+  EXPECT_EQ(next_row, n);
+  EXPECT_EQ(covered, entries_of(whole_pattern.matrix));
+  std::vector<std::int32_t> all;
+  for (const SpringRecord& s : whole->springs) all.push_back(s.element);
+  EXPECT_EQ(elements, all);
+}
+
+}  // namespace
+}  // namespace clinch
