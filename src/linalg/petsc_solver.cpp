@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 #include <petscksp.h>
+#include <petscsf.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -150,6 +151,7 @@ void PetscSolver::release() {
   if (solution_ != nullptr) VecDestroy(&solution_);
   if (work_ != nullptr) VecDestroy(&work_);
   if (gather_ != nullptr) VecScatterDestroy(&gather_);
+  if (sent_to_owners_ != nullptr) PetscSFDestroy(&sent_to_owners_);
   if (whole_solution_ != nullptr) VecDestroy(&whole_solution_);
   factorized_ = false;
 }

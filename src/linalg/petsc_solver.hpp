@@ -61,8 +61,8 @@ class PetscSolver final : public LinearSolver {
   int create_distributed_objects();
   // Writes the values of `k` into the matrix (this rank's rows when distributed).
   int copy_values(const SparseMatrix& k);
-  // A matrix assembled by rows (petsc_summed_matrix.cpp): the distributed matrix preallocated
-  // from this rank's part, the parts summed into it, and its owned rows read for a row of
+  // A matrix assembled by rows (petsc_summed_matrix.cpp): the distributed matrix of the owned
+  // rows of every rank's part, the parts summed into it, and its owned rows read for a row of
   // zeros, rows with their diagonal only and diagonals that are not positive.
   int create_summed_objects(const SparseMatrix& part);
   int sum_parts(const SparseMatrix& part);
@@ -90,15 +90,18 @@ class PetscSolver final : public LinearSolver {
   bool direct_;
   std::string init_error_;
   // Several ranks: this rank's rows [first_row_, first_row_ + local_rows_) of the distributed
-  // matrix, its values in the order of that share of col_idx_, and the scatter that gives every
-  // rank the whole solution.
+  // matrix, its values in the order of that share of col_idx_ (of its compressed rows when
+  // assembled by rows), and the scatter that gives every rank the whole solution.
   bool distributed_ = false;
   int first_row_ = 0, local_rows_ = 0;
-  // Assembled by rows (SparseMatrix::partial): the COO values of this rank's part, its stored
-  // values then the mirrors of the upper triangle's entries `mirrored_` off the diagonal.
+  // Assembled by rows (SparseMatrix::partial, petsc_summed_matrix.cpp): for each entry of this
+  // rank's part (both triangles of upper storage) its place in local_values_, or −1 when its
+  // row is another rank's; the values of those entries, and the star forest that adds them to
+  // their owners' local_values_.
   bool summed_ = false;
-  std::vector<double> coo_values_;
-  std::vector<int> mirrored_;
+  std::vector<int> entry_place_;
+  std::vector<double> sent_values_;
+  PetscSF sent_to_owners_ = nullptr;
   std::vector<double> local_values_;
   PetscSF gather_ = nullptr;
   Vec whole_solution_ = nullptr;

@@ -1,53 +1,165 @@
 // The tangent assembled by rows under mpirun (docs/parallel.md "Assembly by rows"): each rank
 // passes its part of the matrix (SparseMatrix::partial, the entries of its own elements over
-// global equations), and PETSc's COO assembly sums the parts into the rows each rank owns,
-// sending the entries of rows owned elsewhere itself. No rank holds the whole matrix.
+// global equations). Once per pattern the ranks tell the owners of the rows their parts touch
+// which entries they will send; the owner builds the compressed rows of the rows it owns from
+// its own entries and those it is sent, and a star forest (PetscSF) carries the values of the
+// entries in rows owned elsewhere to their places there at every assembly. No rank holds the
+// whole matrix; what it sends per assembly is one value per entry of its part in another rank's
+// rows.
 #include <fmt/format.h>
 #include <petscksp.h>
+#include <petscsf.h>
 
 #include <algorithm>
 #include <string>
 #include <vector>
 
 #include "src/linalg/petsc_solver.hpp"
+#include "src/parallel/communicator.hpp"
 
 namespace clinch {
+namespace {
+
+// Calls `entry(i, j)` for every entry of the matrix `part` stands for, in a fixed order: each
+// stored entry, then, in upper storage, its mirror when it lies off the diagonal.
+template <typename Entry>
+void for_each_entry(const SparseMatrix& part, Entry entry) {
+  for (int j = 0; j < part.n; ++j) {
+    for (int p = part.col_ptr[j]; p < part.col_ptr[j + 1]; ++p) {
+      const int i = part.row_idx[p];
+      entry(i, j);
+      if (part.symmetric_upper && i != j) entry(j, i);
+    }
+  }
+}
+
+}  // namespace
 
 PetscErrorCode PetscSolver::create_summed_objects(const SparseMatrix& part) {
-  const PetscInt n = part.n;
+  const int n = part.n;
+  int rank = 0, ranks = 1;
+  PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
+  PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &ranks));
   first_row_ = part.first_owned_row;
   local_rows_ = part.owned_rows;
-  // Every stored entry in the order of part.values, then the mirror of each entry off the
-  // diagonal of an upper triangle: the values of MatSetValuesCOO are then a copy of part.values
-  // followed by the mirrored ones.
-  std::vector<PetscInt> coo_i, coo_j;
-  mirrored_.clear();
-  const std::size_t stored = part.row_idx.size();
-  coo_i.reserve(part.symmetric_upper ? 2 * stored : stored);
-  coo_j.reserve(coo_i.capacity());
-  for (PetscInt j = 0; j < n; ++j) {
-    for (int p = part.col_ptr[j]; p < part.col_ptr[j + 1]; ++p) {
-      coo_i.push_back(part.row_idx[p]);
-      coo_j.push_back(j);
+  // The first row of every rank (and n): the owner of row i is the last rank starting at or
+  // before it.
+  std::vector<int> starts(static_cast<std::size_t>(ranks) + 1, n);
+  PetscCallMPI(MPI_Allgather(&first_row_, 1, MPI_INT, starts.data(), 1, MPI_INT, PETSC_COMM_WORLD));
+  const auto owner = [&](int i) {
+    return static_cast<int>(std::upper_bound(starts.begin(), starts.end() - 1, i) -
+                            starts.begin()) -
+           1;
+  };
+  // The entries in rows owned elsewhere, grouped by owner, as (row, column) pairs.
+  std::vector<int> send_counts(static_cast<std::size_t>(ranks), 0);
+  for_each_entry(part, [&](int i, int) {
+    if (!part.owns_row(i)) send_counts[static_cast<std::size_t>(owner(i))] += 2;
+  });
+  std::vector<int> send_offsets(static_cast<std::size_t>(ranks) + 1, 0);
+  for (int r = 0; r < ranks; ++r) send_offsets[r + 1] = send_offsets[r] + send_counts[r];
+  std::vector<int> sent(static_cast<std::size_t>(send_offsets[ranks]));
+  {
+    std::vector<int> fill(send_offsets.begin(), send_offsets.end() - 1);
+    for_each_entry(part, [&](int i, int j) {
+      if (part.owns_row(i)) return;
+      int& at = fill[static_cast<std::size_t>(owner(i))];
+      sent[static_cast<std::size_t>(at++)] = i;
+      sent[static_cast<std::size_t>(at++)] = j;
+    });
+  }
+  std::vector<int> receive_counts(static_cast<std::size_t>(ranks));
+  PetscCallMPI(MPI_Alltoall(send_counts.data(), 1, MPI_INT, receive_counts.data(), 1, MPI_INT,
+                            PETSC_COMM_WORLD));
+  std::vector<int> receive_offsets(static_cast<std::size_t>(ranks) + 1, 0);
+  for (int r = 0; r < ranks; ++r) receive_offsets[r + 1] = receive_offsets[r] + receive_counts[r];
+  std::vector<int> received(static_cast<std::size_t>(receive_offsets[ranks]));
+  PetscCallMPI(MPI_Alltoallv(sent.data(), send_counts.data(), send_offsets.data(), MPI_INT,
+                             received.data(), receive_counts.data(), receive_offsets.data(),
+                             MPI_INT, PETSC_COMM_WORLD));
+  // The owned rows in compressed form: this rank's entries there and those it was sent, each
+  // row's columns sorted and unique.
+  std::vector<int> row_count(static_cast<std::size_t>(local_rows_) + 1, 0);
+  for_each_entry(part, [&](int i, int) {
+    if (part.owns_row(i)) ++row_count[static_cast<std::size_t>(i - first_row_) + 1];
+  });
+  for (std::size_t q = 0; q < received.size(); q += 2) {
+    ++row_count[static_cast<std::size_t>(received[q] - first_row_) + 1];
+  }
+  for (int r = 0; r < local_rows_; ++r) row_count[r + 1] += row_count[r];
+  std::vector<PetscInt> columns(static_cast<std::size_t>(row_count[local_rows_]));
+  {
+    std::vector<int> fill(row_count.begin(), row_count.end() - 1);
+    for_each_entry(part, [&](int i, int j) {
+      if (part.owns_row(i)) columns[static_cast<std::size_t>(fill[i - first_row_]++)] = j;
+    });
+    for (std::size_t q = 0; q < received.size(); q += 2) {
+      columns[static_cast<std::size_t>(fill[received[q] - first_row_]++)] = received[q + 1];
     }
   }
-  if (part.symmetric_upper) {
-    for (PetscInt j = 0; j < n; ++j) {
-      for (int p = part.col_ptr[j]; p < part.col_ptr[j + 1]; ++p) {
-        if (part.row_idx[p] == j) continue;
-        mirrored_.push_back(p);
-        coo_i.push_back(j);
-        coo_j.push_back(part.row_idx[p]);
-      }
-    }
+  std::vector<PetscInt> row_ptr(static_cast<std::size_t>(local_rows_) + 1, 0);
+  std::size_t kept = 0;
+  for (int r = 0; r < local_rows_; ++r) {
+    const auto first = columns.begin() + row_count[r];
+    const auto last = columns.begin() + row_count[r + 1];
+    std::sort(first, last);
+    const auto end = std::unique(first, last);
+    std::copy(first, end, columns.begin() + static_cast<std::ptrdiff_t>(kept));
+    kept += static_cast<std::size_t>(end - first);
+    row_ptr[static_cast<std::size_t>(r) + 1] = static_cast<PetscInt>(kept);
   }
-  coo_values_.assign(coo_i.size(), 0.0);
+  columns.resize(kept);
+  const auto place = [&](int i, int j) {
+    const auto first = columns.begin() + row_ptr[static_cast<std::size_t>(i - first_row_)];
+    const auto last = columns.begin() + row_ptr[static_cast<std::size_t>(i - first_row_) + 1];
+    return static_cast<int>(std::lower_bound(first, last, j) - columns.begin());
+  };
+  // Where each entry of the part goes: its place among the owned values, or −1 for a value sent.
+  entry_place_.clear();
+  for_each_entry(
+      part, [&](int i, int j) { entry_place_.push_back(part.owns_row(i) ? place(i, j) : -1); });
+  // The places of the received entries, sent back: the roots of the sent values.
+  std::vector<int> received_places(received.size() / 2);
+  for (std::size_t q = 0; q < received.size(); q += 2) {
+    received_places[q / 2] = place(received[q], received[q + 1]);
+  }
+  for (int r = 0; r <= ranks; ++r) {
+    send_offsets[r] /= 2;
+    receive_offsets[r] /= 2;
+  }
+  for (int r = 0; r < ranks; ++r) {
+    send_counts[r] /= 2;
+    receive_counts[r] /= 2;
+  }
+  std::vector<int> sent_places(static_cast<std::size_t>(send_offsets[ranks]));
+  PetscCallMPI(MPI_Alltoallv(received_places.data(), receive_counts.data(), receive_offsets.data(),
+                             MPI_INT, sent_places.data(), send_counts.data(), send_offsets.data(),
+                             MPI_INT, PETSC_COMM_WORLD));
+  // The sent values in the order of for_each_entry: owner by owner as grouped above.
+  std::vector<PetscSFNode> roots(sent_places.size());
+  {
+    std::vector<int> fill(send_offsets.begin(), send_offsets.end() - 1);
+    std::size_t leaf = 0;
+    for_each_entry(part, [&](int i, int) {
+      if (part.owns_row(i)) return;
+      const int r = owner(i);
+      roots[leaf++] = {r, sent_places[static_cast<std::size_t>(fill[r]++)]};
+    });
+  }
+  sent_values_.assign(roots.size(), 0.0);
+  local_values_.assign(columns.size(), 0.0);
+  PetscCall(PetscSFCreate(PETSC_COMM_WORLD, &sent_to_owners_));
+  PetscCall(PetscSFSetGraph(sent_to_owners_, static_cast<PetscInt>(columns.size()),
+                            static_cast<PetscInt>(roots.size()), nullptr, PETSC_COPY_VALUES,
+                            roots.data(), PETSC_COPY_VALUES));
+  PetscCall(PetscSFSetUp(sent_to_owners_));
   PetscCall(MatCreate(PETSC_COMM_WORLD, &matrix_));
   PetscCall(MatSetSizes(matrix_, local_rows_, local_rows_, n, n));
   PetscCall(MatSetBlockSize(matrix_, node_block_));
   PetscCall(MatSetType(matrix_, MATMPIAIJ));
-  PetscCall(MatSetPreallocationCOO(matrix_, static_cast<PetscCount>(coo_i.size()), coo_i.data(),
-                                   coo_j.data()));
+  PetscCall(
+      MatMPIAIJSetPreallocationCSR(matrix_, row_ptr.data(), columns.data(), local_values_.data()));
+  PetscCall(MatSetOption(matrix_, MAT_NEW_NONZERO_LOCATION_ERR, PETSC_TRUE));
   PetscCall(VecCreateMPIWithArray(PETSC_COMM_WORLD, 1, local_rows_, n, nullptr, &rhs_));
   PetscCall(MatCreateVecs(matrix_, &solution_, &work_));
   PetscCall(VecScatterCreateToAll(solution_, &gather_, &whole_solution_));
@@ -55,14 +167,29 @@ PetscErrorCode PetscSolver::create_summed_objects(const SparseMatrix& part) {
 }
 
 PetscErrorCode PetscSolver::sum_parts(const SparseMatrix& part) {
-  std::copy(part.values.begin(), part.values.end(), coo_values_.begin());
-  std::size_t at = part.values.size();
-  for (const int p : mirrored_) coo_values_[at++] = part.values[static_cast<std::size_t>(p)];
-  // INSERT_VALUES: each entry becomes the sum of its COO contributions over every rank.
-  PetscCall(MatSetValuesCOO(matrix_, coo_values_.data(), INSERT_VALUES));
+  std::fill(local_values_.begin(), local_values_.end(), 0.0);
+  std::size_t entry = 0, leaf = 0;
+  for (int j = 0; j < part.n; ++j) {
+    for (int p = part.col_ptr[j]; p < part.col_ptr[j + 1]; ++p) {
+      const double value = part.values[static_cast<std::size_t>(p)];
+      const int copies = part.symmetric_upper && part.row_idx[p] != j ? 2 : 1;
+      for (int c = 0; c < copies; ++c) {
+        const int at = entry_place_[entry++];
+        if (at >= 0) {
+          local_values_[static_cast<std::size_t>(at)] += value;
+        } else {
+          sent_values_[leaf++] = value;
+        }
+      }
+    }
+  }
+  PetscCall(PetscSFReduceBegin(sent_to_owners_, MPIU_SCALAR, sent_values_.data(),
+                               local_values_.data(), MPI_SUM));
+  PetscCall(PetscSFReduceEnd(sent_to_owners_, MPIU_SCALAR, sent_values_.data(),
+                             local_values_.data(), MPI_SUM));
+  PetscCall(MatUpdateMPIAIJWithArray(matrix_, local_values_.data()));
   return 0;
 }
-
 PetscErrorCode PetscSolver::classify_owned_rows(int& zero_row, bool& indefinite) {
   // A row of zeros (an unrestrained DOF, connection-types.md §1.1), a row with its diagonal only
   // (solved exactly after an iterative solve), a diagonal that is not positive (not definite):
