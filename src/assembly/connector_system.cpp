@@ -259,7 +259,14 @@ double ConnectorSystem::dependent_inertia(int eq) const {
   return inertia_force_[eq] / (1.0 + newmark_->alpha);
 }
 
-void ConnectorSystem::use_storage(bool symmetric) {
+void ConnectorSystem::use_storage(bool symmetric) { pattern_ = &build_storage(symmetric); }
+
+const AssemblyPattern& ConnectorSystem::storage() const {
+  if (!pattern_) pattern_ = &build_storage(true);
+  return *pattern_;
+}
+
+const AssemblyPattern& ConnectorSystem::build_storage(bool symmetric) const {
   std::unique_ptr<AssemblyPattern>& p = symmetric ? symmetric_pattern_ : full_pattern_;
   if (!p) {
     // Under assembly by rows, this rank's part (docs/parallel.md).
@@ -271,7 +278,7 @@ void ConnectorSystem::use_storage(bool symmetric) {
     p = std::make_unique<AssemblyPattern>(
         build_assembly_pattern(plan_, symmetric, share ? &*share : nullptr));
   }
-  pattern_ = p.get();
+  return *p;
 }
 
 ConnectorSystem::Snapshot ConnectorSystem::snapshot() const {
@@ -382,7 +389,7 @@ void ConnectorSystem::apply_prescribed_rotations() {
 }
 
 EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* tangent) {
-  if (!pattern_) use_storage(true);
+  storage();
   internal_.setZero();
   element_forces_ = {};
   if (predicting_) predictor_.setZero();

@@ -50,7 +50,7 @@ class ConnectorSystem final : public NonlinearProblem {
   // Stores the tangent as an upper triangle (symmetric) or in full from the next evaluation on.
   // An unsymmetric element tangent in symmetric storage is symmetrised (keywords.md §14).
   void use_storage(bool symmetric);
-  bool symmetric_storage() const { return !pattern_ || pattern_->symmetric; }
+  bool symmetric_storage() const { return storage().symmetric; }
   void set_time(double time, double dt) {
     context_.time = time;
     context_.dt = dt;
@@ -100,8 +100,7 @@ class ConnectorSystem final : public NonlinearProblem {
   // and corrections are in this numbering, the state and the conditions in the equations'.
   int size() const override { return plan_.dependents.solved_count(plan_.dofs); }
   int equation_of_solved(int solved) const { return plan_.dependents.equation(solved); }
-  // The pattern of the storage in use (use_storage before the first call).
-  const SparseMatrix& pattern() const override { return pattern_->matrix; }
+  const SparseMatrix& pattern() const override { return storage().matrix; }
   EvalStatus evaluate(Eigen::VectorXd& residual, SparseMatrix* tangent) override;
   void apply_correction(const Eigen::VectorXd& correction) override;
   bool moving_prescribed() const override { return predicting_; }
@@ -234,10 +233,13 @@ class ConnectorSystem final : public NonlinearProblem {
   AnalysisState state_;
   IncrementConditions conditions_;
   ElementContext context_;
-  // The storages built so far (symmetric, full) and the one in use (built at the first
-  // use_storage or evaluation, once the system knows whether it is distributed).
-  std::unique_ptr<AssemblyPattern> symmetric_pattern_, full_pattern_;
-  const AssemblyPattern* pattern_ = nullptr;
+  // The storages built so far (symmetric, full) and the one in use: built when first asked for,
+  // once the system knows whether it is distributed; the symmetric one until use_storage
+  // chooses.
+  mutable std::unique_ptr<AssemblyPattern> symmetric_pattern_, full_pattern_;
+  mutable const AssemblyPattern* pattern_ = nullptr;
+  const AssemblyPattern& storage() const;
+  const AssemblyPattern& build_storage(bool symmetric) const;
   std::unique_ptr<LocalSystem> local_;
   std::vector<SpringResult> springs_;
   std::vector<std::uint8_t> multiplier_active_;

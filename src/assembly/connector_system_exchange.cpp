@@ -102,7 +102,7 @@ void ConnectorSystem::exchange(SparseMatrix* tangent, EvalStatus& status) {
   element_forces_.count[0] = static_cast<int>(entries[2]);
   element_forces_.count[1] = static_cast<int>(entries[3]);
   // Only the owner of a multiplier's connector sets its flag; the others hold 0 there.
-  comm.max(multiplier_active_);
+  if (plan_.has_multipliers) comm.max(multiplier_active_);
   comm.share(reinterpret_cast<std::byte*>(state_.results.data()), state_.results.size(),
              sizeof(ConnectorResult));
   comm.share_bytes(reinterpret_cast<std::byte*>(state_.history.data()), history_bytes_);
