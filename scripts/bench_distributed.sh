@@ -4,14 +4,19 @@
 # of the largest rank's peak to the one-rank peak, and the largest difference of the history from
 # the one-rank run (`clinch compare --rtol 1e-8 --atol 1e-12`: exit 0 when every column agrees to
 # 1e-8 of its scale). With CLINCH_BASELINE=path/to/other/clinch the same runs of that build are
-# interleaved with these, run for run, and reported beside them.
+# interleaved with these, run for run, and reported beside them (on the rank counts of
+# DIST_BASELINE_RANKS only, when set: a build that holds the whole model on every rank may not
+# fit in memory on many).
 # Usage: scripts/bench_distributed.sh DECK.inp [ranks...]   (default ranks: 1 2 4)
 # Environment: CLINCH_BUILD_DIR (default build), DIST_RUNS (runs per count, default 1; the
-# median is reported), DIST_KEEP=DIR to keep the outputs in DIR.
+# median is reported), DIST_KEEP=DIR to keep the outputs in DIR, DIST_COMPARE="--rtol R --atol
+# A" for other tolerances of the comparison.
 set -euo pipefail
-cd "$(dirname "$0")/.."
 deck=$(realpath "$1")
 shift
+baseline=${CLINCH_BASELINE:+$(realpath "$CLINCH_BASELINE")}
+cd "$(dirname "$0")/.."
+
 counts=("$@")
 ((${#counts[@]})) || counts=(1 2 4)
 runs=${DIST_RUNS:-1}
@@ -21,7 +26,8 @@ bench_workdir "${DIST_KEEP:-}"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1 \
   OPENBLAS_NUM_THREADS=1
 builds=("new|$bin/clinch")
-[ -n "${CLINCH_BASELINE:-}" ] && builds+=("baseline|$(realpath "$CLINCH_BASELINE")")
+[ -n "$baseline" ] && builds+=("baseline|$baseline")
+compare=${DIST_COMPARE:---rtol 1e-8 --atol 1e-12}
 median() { sort -g | awk '{a[NR]=$1} END {if (NR) print a[int((NR+1)/2)]; else print "nan"}'; }
 
 # One run of build $2 on $1 ranks into $dir/$3: "<wall s> <largest rank's peak kB>".
@@ -50,6 +56,10 @@ for ((k = 1; k <= runs; ++k)); do
   for ranks in "${counts[@]}"; do
     for build in "${builds[@]}"; do
       name=${build%%|*}
+      if [ "$name" = baseline ] && [ -n "${DIST_BASELINE_RANKS:-}" ] &&
+        [[ " $DIST_BASELINE_RANKS " != *" $ranks "* ]]; then
+        continue
+      fi
       read -r w p < <(run_once "$ranks" "${build#*|}" "$name-$ranks-$k")
       wall[$name-$ranks]+="$w "
       peak[$name-$ranks]+="$p "
@@ -60,16 +70,17 @@ printf '%-9s %5s %9s %12s %11s  %s\n' build ranks "wall s" "peak MB/rank" "of 1 
 for build in "${builds[@]}"; do
   name=${build%%|*}
   for ranks in "${counts[@]}"; do
+    [ -z "${wall[$name-$ranks]:-}" ] && continue
     w=$(echo "${wall[$name-$ranks]}" | tr ' ' '\n' | grep . | median)
     p=$(echo "${peak[$name-$ranks]}" | tr ' ' '\n' | grep . | median)
     [ "$ranks" -eq "${counts[0]}" ] && one_rank[$name]=$p
     verdict="(reference)"
     if [ "$ranks" -ne "${counts[0]}" ]; then
       if "${build#*|}" compare "$dir/$name-$ranks-1/job.history.csv" \
-        "$dir/$name-${counts[0]}-1/job.history.csv" --rtol 1e-8 --atol 1e-12 >/dev/null; then
-        verdict="equal to 1e-8 of each column's scale"
+        "$dir/$name-${counts[0]}-1/job.history.csv" $compare >"$dir/compare-$name-$ranks.txt"; then
+        verdict="equal ($compare)"
       else
-        verdict="DIFFERS beyond 1e-8"
+        verdict="DIFFERS ($compare; $dir/compare-$name-$ranks.txt)"
       fi
     fi
     awk -v n="$name" -v r="$ranks" -v w="$w" -v p="$p" -v one="${one_rank[$name]}" -v v="$verdict" \

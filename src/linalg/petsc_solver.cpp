@@ -151,7 +151,8 @@ void PetscSolver::release() {
   if (solution_ != nullptr) VecDestroy(&solution_);
   if (work_ != nullptr) VecDestroy(&work_);
   if (gather_ != nullptr) VecScatterDestroy(&gather_);
-  if (sent_to_owners_ != nullptr) PetscSFDestroy(&sent_to_owners_);
+  if (diagonal_forest_ != nullptr) PetscSFDestroy(&diagonal_forest_);
+  if (off_diagonal_forest_ != nullptr) PetscSFDestroy(&off_diagonal_forest_);
   if (whole_solution_ != nullptr) VecDestroy(&whole_solution_);
   factorized_ = false;
 }

@@ -95,13 +95,15 @@ class PetscSolver final : public LinearSolver {
   bool distributed_ = false;
   int first_row_ = 0, local_rows_ = 0;
   // Assembled by rows (SparseMatrix::partial, petsc_summed_matrix.cpp): for each entry of this
-  // rank's part (both triangles of upper storage) its place in local_values_, or −1 when its
-  // row is another rank's; the values of those entries, and the star forest that adds them to
-  // their owners' local_values_.
+  // rank's part (both triangles of upper storage) its place in the values of the owned rows'
+  // diagonal block (2k) or off-diagonal block (2k + 1), or when its row is another rank's the
+  // block it goes to there (negative); the values sent to each kind of block, and the star
+  // forests that add them to their owners' blocks.
   bool summed_ = false;
   std::vector<int> entry_place_;
-  std::vector<double> sent_values_;
-  PetscSF sent_to_owners_ = nullptr;
+  int diagonal_entries_ = 0, off_diagonal_entries_ = 0;
+  std::vector<double> sent_to_diagonal_, sent_to_off_diagonal_;
+  PetscSF diagonal_forest_ = nullptr, off_diagonal_forest_ = nullptr;
   std::vector<double> local_values_;
   PetscSF gather_ = nullptr;
   Vec whole_solution_ = nullptr;

@@ -11,6 +11,7 @@
 #include <petscsf.h>
 
 #include <algorithm>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,9 @@
 
 namespace clinch {
 namespace {
+
+// entry_place_ of an entry in another rank's rows: the block of that rank it goes to.
+constexpr int kSentToDiagonal = -1, kSentToOffDiagonal = -2;
 
 // Calls `entry(i, j)` for every entry of the matrix `part` stands for, in a fixed order: each
 // stored entry, then, in upper storage, its mirror when it lies off the diagonal.
@@ -109,13 +113,28 @@ PetscErrorCode PetscSolver::create_summed_objects(const SparseMatrix& part) {
     row_ptr[static_cast<std::size_t>(r) + 1] = static_cast<PetscInt>(kept);
   }
   columns.resize(kept);
+  // PETSc keeps the owned rows as two blocks, the columns it owns (diagonal block) and the others
+  // (off-diagonal block), each row's entries in the order of their columns: the place of entry
+  // q of the compressed rows is 2k for the k-th value of the diagonal block, 2k + 1 for the k-th
+  // of the other.
+  std::vector<int> block_place(kept);
+  diagonal_entries_ = off_diagonal_entries_ = 0;
+  for (std::size_t q = 0; q < kept; ++q) {
+    const bool diagonal = columns[q] >= first_row_ && columns[q] < first_row_ + local_rows_;
+    block_place[q] = diagonal ? 2 * diagonal_entries_++ : 2 * off_diagonal_entries_++ + 1;
+  }
   const auto place = [&](int i, int j) {
     const auto first = columns.begin() + row_ptr[static_cast<std::size_t>(i - first_row_)];
     const auto last = columns.begin() + row_ptr[static_cast<std::size_t>(i - first_row_) + 1];
-    return static_cast<int>(std::lower_bound(first, last, j) - columns.begin());
+    return block_place[static_cast<std::size_t>(std::lower_bound(first, last, j) -
+                                                columns.begin())];
   };
-  // Where each entry of the part goes: its place among the owned values, or −1 for a value sent.
+  // Where each entry of the part goes: its place among the owned values, or for a value sent to
+  // another rank kSentToDiagonal or kSentToOffDiagonal, the block it goes to there.
+  std::size_t entries = 0;
+  for_each_entry(part, [&](int, int) { ++entries; });
   entry_place_.clear();
+  entry_place_.reserve(entries);
   for_each_entry(
       part, [&](int i, int j) { entry_place_.push_back(part.owns_row(i) ? place(i, j) : -1); });
   // The places of the received entries, sent back: the roots of the sent values.
@@ -135,31 +154,57 @@ PetscErrorCode PetscSolver::create_summed_objects(const SparseMatrix& part) {
   PetscCallMPI(MPI_Alltoallv(received_places.data(), receive_counts.data(), receive_offsets.data(),
                              MPI_INT, sent_places.data(), send_counts.data(), send_offsets.data(),
                              MPI_INT, PETSC_COMM_WORLD));
-  // The sent values in the order of for_each_entry: owner by owner as grouped above.
-  std::vector<PetscSFNode> roots(sent_places.size());
+  // The sent values in the order of for_each_entry, owner by owner as grouped above, go to the
+  // owner's diagonal block or to its other one: a star forest for each.
+  std::vector<PetscSFNode> to_diagonal, to_off_diagonal;
   {
     std::vector<int> fill(send_offsets.begin(), send_offsets.end() - 1);
-    std::size_t leaf = 0;
+    std::size_t entry = 0;
     for_each_entry(part, [&](int i, int) {
+      const std::size_t e = entry++;
       if (part.owns_row(i)) return;
       const int r = owner(i);
-      roots[leaf++] = {r, sent_places[static_cast<std::size_t>(fill[r]++)]};
+      const int at = sent_places[static_cast<std::size_t>(fill[r]++)];
+      if (at % 2 == 0) {
+        to_diagonal.push_back({r, at / 2});
+      } else {
+        to_off_diagonal.push_back({r, at / 2});
+        entry_place_[e] = kSentToOffDiagonal;
+      }
     });
   }
-  sent_values_.assign(roots.size(), 0.0);
-  local_values_.assign(columns.size(), 0.0);
-  PetscCall(PetscSFCreate(PETSC_COMM_WORLD, &sent_to_owners_));
-  PetscCall(PetscSFSetGraph(sent_to_owners_, static_cast<PetscInt>(columns.size()),
-                            static_cast<PetscInt>(roots.size()), nullptr, PETSC_COPY_VALUES,
-                            roots.data(), PETSC_COPY_VALUES));
-  PetscCall(PetscSFSetUp(sent_to_owners_));
+  sent_to_diagonal_.assign(to_diagonal.size(), 0.0);
+  sent_to_off_diagonal_.assign(to_off_diagonal.size(), 0.0);
+  const auto star_forest = [&](PetscSF& forest, std::vector<PetscSFNode>& roots, int count) {
+    PetscCall(PetscSFCreate(PETSC_COMM_WORLD, &forest));
+    PetscCall(PetscSFSetGraph(forest, count, static_cast<PetscInt>(roots.size()), nullptr,
+                              PETSC_COPY_VALUES, roots.data(), PETSC_COPY_VALUES));
+    PetscCall(PetscSFSetUp(forest));
+    return PetscErrorCode(0);
+  };
+  PetscCall(star_forest(diagonal_forest_, to_diagonal, diagonal_entries_));
+  PetscCall(star_forest(off_diagonal_forest_, to_off_diagonal, off_diagonal_entries_));
   PetscCall(MatCreate(PETSC_COMM_WORLD, &matrix_));
   PetscCall(MatSetSizes(matrix_, local_rows_, local_rows_, n, n));
   PetscCall(MatSetBlockSize(matrix_, node_block_));
   PetscCall(MatSetType(matrix_, MATMPIAIJ));
-  PetscCall(
-      MatMPIAIJSetPreallocationCSR(matrix_, row_ptr.data(), columns.data(), local_values_.data()));
+  {
+    // Explicit zeros are kept (PETSc drops none unless told to): the blocks hold every entry.
+    const std::vector<PetscScalar> zeros(columns.size(), 0.0);
+    PetscCall(MatMPIAIJSetPreallocationCSR(matrix_, row_ptr.data(), columns.data(), zeros.data()));
+  }
   PetscCall(MatSetOption(matrix_, MAT_NEW_NONZERO_LOCATION_ERR, PETSC_TRUE));
+  {
+    Mat diagonal = nullptr, off_diagonal = nullptr;
+    const PetscInt* off_diagonal_columns = nullptr;
+    PetscCall(MatMPIAIJGetSeqAIJ(matrix_, &diagonal, &off_diagonal, &off_diagonal_columns));
+    MatInfo a{}, b{};
+    PetscCall(MatGetInfo(diagonal, MAT_LOCAL, &a));
+    PetscCall(MatGetInfo(off_diagonal, MAT_LOCAL, &b));
+    if (a.nz_used != diagonal_entries_ || b.nz_used != off_diagonal_entries_) {
+      throw std::logic_error("PetscSolver: the MPIAIJ blocks do not keep the given layout");
+    }
+  }
   PetscCall(VecCreateMPIWithArray(PETSC_COMM_WORLD, 1, local_rows_, n, nullptr, &rhs_));
   PetscCall(MatCreateVecs(matrix_, &solution_, &work_));
   PetscCall(VecScatterCreateToAll(solution_, &gather_, &whole_solution_));
@@ -167,8 +212,15 @@ PetscErrorCode PetscSolver::create_summed_objects(const SparseMatrix& part) {
 }
 
 PetscErrorCode PetscSolver::sum_parts(const SparseMatrix& part) {
-  std::fill(local_values_.begin(), local_values_.end(), 0.0);
-  std::size_t entry = 0, leaf = 0;
+  Mat diagonal = nullptr, off_diagonal = nullptr;
+  const PetscInt* off_diagonal_columns = nullptr;
+  PetscScalar *a = nullptr, *b = nullptr;
+  PetscCall(MatMPIAIJGetSeqAIJ(matrix_, &diagonal, &off_diagonal, &off_diagonal_columns));
+  PetscCall(MatSeqAIJGetArray(diagonal, &a));
+  PetscCall(MatSeqAIJGetArray(off_diagonal, &b));
+  std::fill(a, a + diagonal_entries_, 0.0);
+  std::fill(b, b + off_diagonal_entries_, 0.0);
+  std::size_t entry = 0, to_a = 0, to_b = 0;
   for (int j = 0; j < part.n; ++j) {
     for (int p = part.col_ptr[j]; p < part.col_ptr[j + 1]; ++p) {
       const double value = part.values[static_cast<std::size_t>(p)];
@@ -176,20 +228,31 @@ PetscErrorCode PetscSolver::sum_parts(const SparseMatrix& part) {
       for (int c = 0; c < copies; ++c) {
         const int at = entry_place_[entry++];
         if (at >= 0) {
-          local_values_[static_cast<std::size_t>(at)] += value;
+          (at % 2 == 0 ? a : b)[at / 2] += value;
+        } else if (at == kSentToDiagonal) {
+          sent_to_diagonal_[to_a++] = value;
         } else {
-          sent_values_[leaf++] = value;
+          sent_to_off_diagonal_[to_b++] = value;
         }
       }
     }
   }
-  PetscCall(PetscSFReduceBegin(sent_to_owners_, MPIU_SCALAR, sent_values_.data(),
-                               local_values_.data(), MPI_SUM));
-  PetscCall(PetscSFReduceEnd(sent_to_owners_, MPIU_SCALAR, sent_values_.data(),
-                             local_values_.data(), MPI_SUM));
-  PetscCall(MatUpdateMPIAIJWithArray(matrix_, local_values_.data()));
+  PetscCall(
+      PetscSFReduceBegin(diagonal_forest_, MPIU_SCALAR, sent_to_diagonal_.data(), a, MPI_SUM));
+  PetscCall(PetscSFReduceBegin(off_diagonal_forest_, MPIU_SCALAR, sent_to_off_diagonal_.data(), b,
+                               MPI_SUM));
+  PetscCall(PetscSFReduceEnd(diagonal_forest_, MPIU_SCALAR, sent_to_diagonal_.data(), a, MPI_SUM));
+  PetscCall(PetscSFReduceEnd(off_diagonal_forest_, MPIU_SCALAR, sent_to_off_diagonal_.data(), b,
+                             MPI_SUM));
+  PetscCall(MatSeqAIJRestoreArray(diagonal, &a));
+  PetscCall(MatSeqAIJRestoreArray(off_diagonal, &b));
+  // The blocks changed under the distributed matrix: an assembly (nothing is stashed) marks it
+  // changed, so that the preconditioner sees new values.
+  PetscCall(MatAssemblyBegin(matrix_, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(matrix_, MAT_FINAL_ASSEMBLY));
   return 0;
 }
+
 PetscErrorCode PetscSolver::classify_owned_rows(int& zero_row, bool& indefinite) {
   // A row of zeros (an unrestrained DOF, connection-types.md §1.1), a row with its diagonal only
   // (solved exactly after an iterative solve), a diagonal that is not positive (not definite):
