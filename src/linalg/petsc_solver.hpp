@@ -41,6 +41,8 @@ class PetscSolver final : public LinearSolver {
   int failed_pivot() const override { return failed_pivot_; }
   // Throws std::invalid_argument outside 0 < rtol < 1.
   void set_relative_tolerance(double rtol) override;
+  // Assembled by rows: the sizes of the ranks' parts and of what they send per assembly.
+  std::string choice() const override { return summed_ ? assembly_summary_ : std::string(); }
 
   // "cg+boomeramg", "gmres+boomeramg" or "mumps": the method the next solve uses.
   const char* method() const {
@@ -104,6 +106,7 @@ class PetscSolver final : public LinearSolver {
   int diagonal_entries_ = 0, off_diagonal_entries_ = 0;
   std::vector<double> sent_to_diagonal_, sent_to_off_diagonal_;
   PetscSF diagonal_forest_ = nullptr, off_diagonal_forest_ = nullptr;
+  std::string assembly_summary_;
   std::vector<double> local_values_;
   PetscSF gather_ = nullptr;
   Vec whole_solution_ = nullptr;

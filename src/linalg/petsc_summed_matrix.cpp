@@ -173,6 +173,19 @@ PetscErrorCode PetscSolver::create_summed_objects(const SparseMatrix& part) {
       }
     });
   }
+  // For the step's log line: how the parts and what they send compare over the ranks.
+  {
+    const double mine[2] = {static_cast<double>(entries),
+                            static_cast<double>(to_diagonal.size() + to_off_diagonal.size())};
+    double sum[2] = {0, 0}, most[2] = {0, 0};
+    PetscCallMPI(MPI_Allreduce(mine, sum, 2, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD));
+    PetscCallMPI(MPI_Allreduce(mine, most, 2, MPI_DOUBLE, MPI_MAX, PETSC_COMM_WORLD));
+    assembly_summary_ = fmt::format(
+        "assembled by rows on {} ranks: each assembles its part ({:.3g} entries at most, {:.3g} "
+        "in all) and sends the values of those in other ranks' rows to them ({:.3g} at most, "
+        "{:.3g} in all, per assembly)",
+        ranks, most[0], sum[0], most[1], sum[1]);
+  }
   sent_to_diagonal_.assign(to_diagonal.size(), 0.0);
   sent_to_off_diagonal_.assign(to_off_diagonal.size(), 0.0);
   const auto star_forest = [&](PetscSF& forest, std::vector<PetscSFNode>& roots, int count) {
