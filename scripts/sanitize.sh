@@ -18,7 +18,7 @@ status=0
 # which LeakSanitizer reports with stacks into unloaded code: the tests that start them (the PETSc
 # backend, the automatic choice that may load it, the runs under mpirun) run with leak detection
 # off, every other check on. With arguments, one pass as given.
-mpi_tests='Petsc|LinearSolverChoice|^mpi_|^petsc_'
+mpi_tests='Petsc|LinearSolverChoice|^mpi|^petsc_'
 if (($#)); then
   ctest --test-dir build-asan -j"$jobs" --output-on-failure "$@" || status=$?
 else
