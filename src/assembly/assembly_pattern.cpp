@@ -21,9 +21,6 @@ AssemblyPattern build_assembly_pattern(const AnalysisPlan& plan, bool symmetric,
   if (!share && plan.springs_shared()) {
     throw std::logic_error("build_assembly_pattern: the whole pattern of a rank's plan");
   }
-  if (share && !dependents.empty()) {
-    throw std::logic_error("build_assembly_pattern: a rank's part of a plan with dependent DOFs");
-  }
   const ItemRange rows = share ? owned_rows(n, node_block, share->rank, share->ranks)
                                : ItemRange{0, static_cast<std::size_t>(n)};
   const ItemRange connectors = share ? share->connectors : ItemRange{0, plan.connectors.size()};
@@ -72,12 +69,13 @@ AssemblyPattern build_assembly_pattern(const AnalysisPlan& plan, bool symmetric,
     });
   };
   for (const NodeInertia& n : plan.inertia) {
-    if (!has_dependent_dof(n.rotation, dependents) && owns_some(n.rotation)) {
-      builder.couple(in_solved_numbering(n.rotation));
-    }
+    if (has_dependent_dof(n.rotation, dependents)) continue;
+    const std::span<const int> solved_rotation = in_solved_numbering(n.rotation);
+    if (owns_some(solved_rotation)) builder.couple(solved_rotation);
   }
   for (const std::vector<int>& columns : constrained_inertia_couplings(plan.inertia, dependents)) {
-    builder.couple(in_solved_numbering(columns));
+    const std::span<const int> solved_columns = in_solved_numbering(columns);
+    if (owns_some(solved_columns)) builder.couple(solved_columns);
   }
   // The curvature of rigid arms and links under NLGEOM couples the equations they read.
   for (const DependentDof& d : dependents.dofs) {
@@ -86,7 +84,8 @@ AssemblyPattern build_assembly_pattern(const AnalysisPlan& plan, bool symmetric,
                           dependents.term_equation.begin() + d.first_term + d.term_count);
     for (int i = 0; i < 3; ++i) read.push_back(plan.dofs.equation(d.reference, 4 + i));
     std::erase_if(read, [&dependents](int eq) { return eq < 0 || dependents.is_dependent(eq); });
-    builder.couple(in_solved_numbering(read));
+    const std::span<const int> solved_read = in_solved_numbering(read);
+    if (owns_some(solved_read)) builder.couple(solved_read);
   }
   p.matrix = builder.build();
   p.matrix.node_block = node_block;

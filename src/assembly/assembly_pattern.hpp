@@ -35,8 +35,9 @@ struct RowAssemblyShare {
 };
 
 // The whole pattern, or with `share` the pattern of that rank's part (SparseMatrix::partial):
-// its elements' entries, the diagonals of its rows, the rotary inertia of the nodes whose rows
-// it owns. A part is only built for a plan without dependent DOFs.
+// its elements' entries, the diagonals of its rows, and what is added per row (rotary inertia,
+// inertia on dependent DOFs, the curvature of constraints under NLGEOM) where it owns one of
+// the rows coupled.
 AssemblyPattern build_assembly_pattern(const AnalysisPlan& plan, bool symmetric,
                                        const RowAssemblyShare* share = nullptr);
 

@@ -639,8 +639,10 @@ void ConnectorSystem::add_curvature(const CurvatureEntry& entry, SparseMatrix& t
   }
   // Upper storage: the slot of (i, j) stands for both triangles and takes the symmetric part,
   // half of each (entry_position finds the slot of either).
-  const int position =
-      entry_position(tangent, dependents.solved(entry.row), dependents.solved(entry.column));
+  const int row = dependents.solved(entry.row), column = dependents.solved(entry.column);
+  // Under assembly by rows the rank that owns the row of the entry's slot adds it.
+  if (!tangent.owns_row(pattern_->symmetric ? std::min(row, column) : row)) return;
+  const int position = entry_position(tangent, row, column);
   const double share = pattern_->symmetric && entry.row != entry.column ? 0.5 : 1.0;
   if (position >= 0) tangent.values[static_cast<std::size_t>(position)] += share * entry.value;
 }

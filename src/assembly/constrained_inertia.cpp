@@ -76,7 +76,8 @@ std::vector<MappedInertiaBlock> mapped_inertia_blocks(const std::vector<NodeIner
         const std::span<const double> gradient =
             dependent ? motion.gradient(dependent_of(dofs, e)) : std::span<const double>{};
         for_each_column(dofs, e, [&](int column, std::uint32_t k) {
-          const auto place = std::find(b.columns.begin(), b.columns.end(), column) - b.columns.begin();
+          const auto place =
+              std::find(b.columns.begin(), b.columns.end(), column) - b.columns.begin();
           b.t(i, place) += dependent ? gradient[k] : 1.0;
         });
       }
@@ -127,8 +128,7 @@ void add_constrained_inertia(const std::vector<MappedInertiaBlock>& blocks,
       if (!conditions.is_prescribed(row)) target.residual[row] += scale * pulled[p];
     }
     if (!target.tangent) continue;
-    const Eigen::MatrixXd k =
-        (increment.da_du * scale) * (b.t.transpose() * b.m * b.t);
+    const Eigen::MatrixXd k = (increment.da_du * scale) * (b.t.transpose() * b.m * b.t);
     for (Eigen::Index p = 0; p < n; ++p) {
       const int row = b.columns[static_cast<std::size_t>(p)];
       if (conditions.is_prescribed(row)) continue;
@@ -144,6 +144,8 @@ void add_constrained_inertia(const std::vector<MappedInertiaBlock>& blocks,
         }
         const int solved_row = dofs.solved(row), solved_column = dofs.solved(column);
         if (target.symmetric && solved_column < solved_row) continue;  // upper storage
+        // Under assembly by rows the rank that owns the row adds the entry.
+        if (!target.tangent->owns_row(solved_row)) continue;
         const int position = entry_position(*target.tangent, solved_row, solved_column);
         target.tangent->values[static_cast<std::size_t>(position)] += k(p, q);
       }

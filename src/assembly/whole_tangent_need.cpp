@@ -5,11 +5,6 @@
 namespace clinch {
 
 std::string whole_tangent_need(const Model& model) {
-  const ConstraintModel& constraints = model.constraints;
-  if (!constraints.followers.empty() || !constraints.equations.empty() ||
-      !constraints.links.empty()) {
-    return "kinematic constraints condense their DOFs' rows onto the DOFs they follow";
-  }
   for (const Step& step : model.history.steps) {
     if (step.procedure && step.procedure->riks) return "a Riks step solves its bordered matrix";
     if (step.is_perturbation()) {

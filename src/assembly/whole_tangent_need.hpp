@@ -9,8 +9,7 @@
 namespace clinch {
 
 // What in the model needs the whole tangent on every rank, for the run log; empty when nothing
-// does. Kinematic constraints (the rows of the DOFs they eliminate are condensed onto the DOFs
-// they follow, dependent_dofs.hpp), a Riks step (its
+// does: a Riks step (its
 // bordered matrix), a *FREQUENCY or perturbation step (the shifted matrix and the one-off solve
 // read the whole tangent), a damage law (the path followed inside an increment may solve its
 // bordered matrix whole, docs/riks.md).
