@@ -3,12 +3,15 @@
 // shares are the whole plan and the parts cover the whole pattern, entry for entry.
 #include <gtest/gtest.h>
 
+#include <Eigen/Dense>
+#include <cstdlib>
 #include <set>
 #include <utility>
 
 #include "parser/deck_reader.hpp"
 #include "src/assembly/analysis_plan.hpp"
 #include "src/assembly/assembly_pattern.hpp"
+#include "src/assembly/connector_system.hpp"
 #include "src/assembly/sparsity_pattern.hpp"
 #include "tests/unit/checked_deck.hpp"
 
@@ -92,6 +95,84 @@ TEST(RowAssembly, RankSharesOfTheSpringsAndPatternPartsMakeTheWhole) {
   std::vector<std::int32_t> all;
   for (const SpringRecord& s : whole->springs) all.push_back(s.element);
   EXPECT_EQ(elements, all);
+}
+
+// Rank `rank` of `ranks` with nothing to exchange: each system keeps what its own elements put
+// in its part of the tangent, which is what the PETSc backend sums.
+class PartCommunicator final : public Communicator {
+ public:
+  PartCommunicator(int rank, int ranks) : rank_(rank), ranks_(ranks) {}
+  int rank() const override { return rank_; }
+  int size() const override { return ranks_; }
+  void sum(std::span<double>) override {}
+  void max(std::span<std::uint8_t>) override {}
+  void share(std::byte*, std::size_t, std::size_t) override {}
+  void share_bytes(std::byte*, std::span<const std::size_t>) override {}
+  int first(bool mine) override { return mine ? rank_ : ranks_; }
+  std::string broadcast(const std::string& text, int) override { return text; }
+  [[noreturn]] void abort(int) override { std::abort(); }
+
+ private:
+  int rank_, ranks_;
+};
+
+// The matrix `m` stands for, dense.
+Eigen::MatrixXd dense(const SparseMatrix& m) {
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(m.n, m.n);
+  for (int j = 0; j < m.n; ++j) {
+    for (int p = m.col_ptr[j]; p < m.col_ptr[j + 1]; ++p) {
+      out(m.row_idx[p], j) += m.values[p];
+      if (m.symmetric_upper && m.row_idx[p] != j) out(j, m.row_idx[p]) += m.values[p];
+    }
+  }
+  return out;
+}
+
+TEST(RowAssembly, RankPartsOfTheTangentSumToTheSerialTangent) {
+  CheckedDeck deck;
+  read_deck_text("square.inp", square_deck(), deck.sources, deck.model, deck.sink);
+  ASSERT_FALSE(deck.sink.has_errors()) << deck.dump();
+  std::string error;
+  const std::optional<AnalysisPlan> whole = build_analysis_plan(deck.model, &error);
+  ASSERT_TRUE(whole) << error;
+  // The ground node 5 held: its rows are the identity, which only their owner adds.
+  const auto hold_ground = [&](ConnectorSystem& system) {
+    for (int dof = 1; dof <= 3; ++dof)
+      system.conditions().prescribe(whole->dofs.equation(4, dof), 0.0);
+  };
+  ConnectorSystem serial(deck.model, *whole);
+  hold_ground(serial);
+  // A state away from the initial one, the same for every system: SPRINGA's tangent turns with
+  // the springs under NLGEOM.
+  serial.set_nlgeom(true);
+  Eigen::VectorXd dx(serial.size());
+  for (int i = 0; i < dx.size(); ++i) dx[i] = 0.01 * std::sin(1.7 * i + 0.3);
+  serial.apply_correction(dx);
+  SparseMatrix k = serial.pattern();
+  Eigen::VectorXd r(serial.size());
+  ASSERT_TRUE(serial.evaluate(r, &k).ok);
+  const Eigen::MatrixXd expected = dense(k);
+  constexpr int kRanks = 3;
+  Eigen::MatrixXd summed = Eigen::MatrixXd::Zero(k.n, k.n);
+  for (int rank = 0; rank < kRanks; ++rank) {
+    const PlanShare share{rank, kRanks};
+    const std::optional<AnalysisPlan> plan = build_analysis_plan(deck.model, &error, &share);
+    ASSERT_TRUE(plan) << error;
+    PartCommunicator communicator(rank, kRanks);
+    ConnectorSystem part(deck.model, *plan);
+    part.distribute(communicator, true);
+    hold_ground(part);
+    part.set_nlgeom(true);
+    part.apply_correction(dx);
+    SparseMatrix k_part = part.pattern();
+    ASSERT_TRUE(k_part.partial());
+    Eigen::VectorXd r_part(part.size());
+    ASSERT_TRUE(part.evaluate(r_part, &k_part).ok);
+    summed += dense(k_part);
+  }
+  // Sums of the same element terms in another order: round-off of the largest entry.
+  EXPECT_LE((summed - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff());
+  EXPECT_GT(expected.cwiseAbs().maxCoeff(), 0.0);
 }
 
 }  // namespace
