@@ -49,13 +49,25 @@ std::string square_deck() {
          "*BOUNDARY\n5, 1, 3\n*STEP\n*STATIC\n*CLOAD\n3, 1, 1.\n*END STEP\n";
 }
 
-TEST(RowAssembly, RankSharesOfTheSpringsAndPatternPartsMakeTheWhole) {
+// The square deck, read and checked, with the plan of the whole model.
+struct Square {
   CheckedDeck deck;
-  read_deck_text("square.inp", square_deck(), deck.sources, deck.model, deck.sink);
-  ASSERT_FALSE(deck.sink.has_errors()) << deck.dump();
+  std::optional<AnalysisPlan> whole;
+  Square() {
+    read_deck_text("square.inp", square_deck(), deck.sources, deck.model, deck.sink);
+    EXPECT_FALSE(deck.sink.has_errors()) << deck.dump();
+    std::string error;
+    whole = build_analysis_plan(deck.model, &error);
+    EXPECT_TRUE(whole) << error;
+  }
+};
+
+TEST(RowAssembly, RankSharesOfTheSpringsAndPatternPartsMakeTheWhole) {
+  const Square square;
+  ASSERT_TRUE(square.whole);
+  const CheckedDeck& deck = square.deck;
+  const std::optional<AnalysisPlan>& whole = square.whole;
   std::string error;
-  const std::optional<AnalysisPlan> whole = build_analysis_plan(deck.model, &error);
-  ASSERT_TRUE(whole) << error;
   ASSERT_EQ(whole->spring_total, 12u);
   ASSERT_FALSE(whole->springs_shared());
   const AssemblyPattern whole_pattern = build_assembly_pattern(*whole, true);
@@ -129,12 +141,11 @@ Eigen::MatrixXd dense(const SparseMatrix& m) {
 }
 
 TEST(RowAssembly, RankPartsOfTheTangentSumToTheSerialTangent) {
-  CheckedDeck deck;
-  read_deck_text("square.inp", square_deck(), deck.sources, deck.model, deck.sink);
-  ASSERT_FALSE(deck.sink.has_errors()) << deck.dump();
+  const Square square;
+  ASSERT_TRUE(square.whole);
+  const CheckedDeck& deck = square.deck;
+  const std::optional<AnalysisPlan>& whole = square.whole;
   std::string error;
-  const std::optional<AnalysisPlan> whole = build_analysis_plan(deck.model, &error);
-  ASSERT_TRUE(whole) << error;
   // The ground node 5 held: its rows are the identity, which only their owner adds.
   const auto hold_ground = [&](ConnectorSystem& system) {
     for (int dof = 1; dof <= 3; ++dof)
