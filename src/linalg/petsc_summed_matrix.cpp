@@ -2,10 +2,10 @@
 // passes its part of the matrix (SparseMatrix::partial, the entries of its own elements over
 // global equations). Once per pattern the ranks tell the owners of the rows their parts touch
 // which entries they will send; the owner builds the compressed rows of the rows it owns from
-// its own entries and those it is sent, and a star forest (PetscSF) carries the values of the
-// entries in rows owned elsewhere to their places there at every assembly. No rank holds the
-// whole matrix; what it sends per assembly is one value per entry of its part in another rank's
-// rows.
+// its own entries and those it is sent, and two star forests (PetscSF) carry the values of the
+// entries in rows owned elsewhere straight into the owner's diagonal and off-diagonal blocks at
+// every assembly. No rank holds the whole matrix; what it sends per assembly is one value per
+// entry of its part in another rank's rows.
 #include <fmt/format.h>
 #include <petscksp.h>
 #include <petscsf.h>
@@ -24,17 +24,60 @@ namespace {
 // entry_place_ of an entry in another rank's rows: the block of that rank it goes to.
 constexpr int kSentToDiagonal = -1, kSentToOffDiagonal = -2;
 
-// Calls `entry(i, j)` for every entry of the matrix `part` stands for, in a fixed order: each
-// stored entry, then, in upper storage, its mirror when it lies off the diagonal.
+// Calls `entry(i, j, p)` for every entry (i, j) of the matrix `part` stands for, with p its index
+// in part.values, in a fixed order: each stored entry, then, in upper storage, its mirror when it
+// lies off the diagonal.
 template <typename Entry>
 void for_each_entry(const SparseMatrix& part, Entry entry) {
   for (int j = 0; j < part.n; ++j) {
     for (int p = part.col_ptr[j]; p < part.col_ptr[j + 1]; ++p) {
       const int i = part.row_idx[p];
-      entry(i, j);
-      if (part.symmetric_upper && i != j) entry(j, i);
+      entry(i, j, p);
+      if (part.symmetric_upper && i != j) entry(j, i, p);
     }
   }
+}
+
+// The compressed rows [first_row, first_row + rows) from this rank's entries in them and the
+// (row, column) pairs `received` from the others: row pointers and each row's columns, sorted and
+// unique.
+struct CompressedRows {
+  std::vector<PetscInt> row_ptr, columns;
+};
+CompressedRows compress_owned_rows(const SparseMatrix& part, int first_row, int rows,
+                                   const std::vector<int>& received) {
+  std::vector<int> count(static_cast<std::size_t>(rows) + 1, 0);
+  for_each_entry(part, [&](int i, int, int) {
+    if (part.owns_row(i)) ++count[static_cast<std::size_t>(i - first_row) + 1];
+  });
+  for (std::size_t q = 0; q < received.size(); q += 2) {
+    ++count[static_cast<std::size_t>(received[q] - first_row) + 1];
+  }
+  for (int r = 0; r < rows; ++r) count[r + 1] += count[r];
+  CompressedRows out;
+  out.columns.resize(static_cast<std::size_t>(count[rows]));
+  {
+    std::vector<int> fill(count.begin(), count.end() - 1);
+    for_each_entry(part, [&](int i, int j, int) {
+      if (part.owns_row(i)) out.columns[static_cast<std::size_t>(fill[i - first_row]++)] = j;
+    });
+    for (std::size_t q = 0; q < received.size(); q += 2) {
+      out.columns[static_cast<std::size_t>(fill[received[q] - first_row]++)] = received[q + 1];
+    }
+  }
+  out.row_ptr.assign(static_cast<std::size_t>(rows) + 1, 0);
+  std::size_t kept = 0;
+  for (int r = 0; r < rows; ++r) {
+    const auto first = out.columns.begin() + count[r];
+    const auto last = out.columns.begin() + count[r + 1];
+    std::sort(first, last);
+    const auto end = std::unique(first, last);
+    std::copy(first, end, out.columns.begin() + static_cast<std::ptrdiff_t>(kept));
+    kept += static_cast<std::size_t>(end - first);
+    out.row_ptr[static_cast<std::size_t>(r) + 1] = static_cast<PetscInt>(kept);
+  }
+  out.columns.resize(kept);
+  return out;
 }
 
 }  // namespace
@@ -57,7 +100,7 @@ PetscErrorCode PetscSolver::create_summed_objects(const SparseMatrix& part) {
   };
   // The entries in rows owned elsewhere, grouped by owner, as (row, column) pairs.
   std::vector<int> send_counts(static_cast<std::size_t>(ranks), 0);
-  for_each_entry(part, [&](int i, int) {
+  for_each_entry(part, [&](int i, int, int) {
     if (!part.owns_row(i)) send_counts[static_cast<std::size_t>(owner(i))] += 2;
   });
   std::vector<int> send_offsets(static_cast<std::size_t>(ranks) + 1, 0);
@@ -65,7 +108,7 @@ PetscErrorCode PetscSolver::create_summed_objects(const SparseMatrix& part) {
   std::vector<int> sent(static_cast<std::size_t>(send_offsets[ranks]));
   {
     std::vector<int> fill(send_offsets.begin(), send_offsets.end() - 1);
-    for_each_entry(part, [&](int i, int j) {
+    for_each_entry(part, [&](int i, int j, int) {
       if (part.owns_row(i)) return;
       int& at = fill[static_cast<std::size_t>(owner(i))];
       sent[static_cast<std::size_t>(at++)] = i;
@@ -81,38 +124,11 @@ PetscErrorCode PetscSolver::create_summed_objects(const SparseMatrix& part) {
   PetscCallMPI(MPI_Alltoallv(sent.data(), send_counts.data(), send_offsets.data(), MPI_INT,
                              received.data(), receive_counts.data(), receive_offsets.data(),
                              MPI_INT, PETSC_COMM_WORLD));
-  // The owned rows in compressed form: this rank's entries there and those it was sent, each
-  // row's columns sorted and unique.
-  std::vector<int> row_count(static_cast<std::size_t>(local_rows_) + 1, 0);
-  for_each_entry(part, [&](int i, int) {
-    if (part.owns_row(i)) ++row_count[static_cast<std::size_t>(i - first_row_) + 1];
-  });
-  for (std::size_t q = 0; q < received.size(); q += 2) {
-    ++row_count[static_cast<std::size_t>(received[q] - first_row_) + 1];
-  }
-  for (int r = 0; r < local_rows_; ++r) row_count[r + 1] += row_count[r];
-  std::vector<PetscInt> columns(static_cast<std::size_t>(row_count[local_rows_]));
-  {
-    std::vector<int> fill(row_count.begin(), row_count.end() - 1);
-    for_each_entry(part, [&](int i, int j) {
-      if (part.owns_row(i)) columns[static_cast<std::size_t>(fill[i - first_row_]++)] = j;
-    });
-    for (std::size_t q = 0; q < received.size(); q += 2) {
-      columns[static_cast<std::size_t>(fill[received[q] - first_row_]++)] = received[q + 1];
-    }
-  }
-  std::vector<PetscInt> row_ptr(static_cast<std::size_t>(local_rows_) + 1, 0);
-  std::size_t kept = 0;
-  for (int r = 0; r < local_rows_; ++r) {
-    const auto first = columns.begin() + row_count[r];
-    const auto last = columns.begin() + row_count[r + 1];
-    std::sort(first, last);
-    const auto end = std::unique(first, last);
-    std::copy(first, end, columns.begin() + static_cast<std::ptrdiff_t>(kept));
-    kept += static_cast<std::size_t>(end - first);
-    row_ptr[static_cast<std::size_t>(r) + 1] = static_cast<PetscInt>(kept);
-  }
-  columns.resize(kept);
+  // The owned rows in compressed form: this rank's entries there and those it was sent.
+  const CompressedRows owned = compress_owned_rows(part, first_row_, local_rows_, received);
+  const std::vector<PetscInt>& row_ptr = owned.row_ptr;
+  const std::vector<PetscInt>& columns = owned.columns;
+  const std::size_t kept = columns.size();
   // PETSc keeps the owned rows as two blocks, the columns it owns (diagonal block) and the others
   // (off-diagonal block), each row's entries in the order of their columns: the place of entry
   // q of the compressed rows is 2k for the k-th value of the diagonal block, 2k + 1 for the k-th
@@ -132,11 +148,12 @@ PetscErrorCode PetscSolver::create_summed_objects(const SparseMatrix& part) {
   // Where each entry of the part goes: its place among the owned values, or for a value sent to
   // another rank kSentToDiagonal or kSentToOffDiagonal, the block it goes to there.
   std::size_t entries = 0;
-  for_each_entry(part, [&](int, int) { ++entries; });
+  for_each_entry(part, [&](int, int, int) { ++entries; });
   entry_place_.clear();
   entry_place_.reserve(entries);
-  for_each_entry(
-      part, [&](int i, int j) { entry_place_.push_back(part.owns_row(i) ? place(i, j) : -1); });
+  for_each_entry(part, [&](int i, int j, int) {
+    entry_place_.push_back(part.owns_row(i) ? place(i, j) : -1);
+  });
   // The places of the received entries, sent back: the roots of the sent values.
   std::vector<int> received_places(received.size() / 2);
   for (std::size_t q = 0; q < received.size(); q += 2) {
@@ -160,7 +177,7 @@ PetscErrorCode PetscSolver::create_summed_objects(const SparseMatrix& part) {
   {
     std::vector<int> fill(send_offsets.begin(), send_offsets.end() - 1);
     std::size_t entry = 0;
-    for_each_entry(part, [&](int i, int) {
+    for_each_entry(part, [&](int i, int, int) {
       const std::size_t e = entry++;
       if (part.owns_row(i)) return;
       const int r = owner(i);
@@ -234,22 +251,17 @@ PetscErrorCode PetscSolver::sum_parts(const SparseMatrix& part) {
   std::fill(a, a + diagonal_entries_, 0.0);
   std::fill(b, b + off_diagonal_entries_, 0.0);
   std::size_t entry = 0, to_a = 0, to_b = 0;
-  for (int j = 0; j < part.n; ++j) {
-    for (int p = part.col_ptr[j]; p < part.col_ptr[j + 1]; ++p) {
-      const double value = part.values[static_cast<std::size_t>(p)];
-      const int copies = part.symmetric_upper && part.row_idx[p] != j ? 2 : 1;
-      for (int c = 0; c < copies; ++c) {
-        const int at = entry_place_[entry++];
-        if (at >= 0) {
-          (at % 2 == 0 ? a : b)[at / 2] += value;
-        } else if (at == kSentToDiagonal) {
-          sent_to_diagonal_[to_a++] = value;
-        } else {
-          sent_to_off_diagonal_[to_b++] = value;
-        }
-      }
+  for_each_entry(part, [&](int, int, int p) {
+    const double value = part.values[static_cast<std::size_t>(p)];
+    const int at = entry_place_[entry++];
+    if (at >= 0) {
+      (at % 2 == 0 ? a : b)[at / 2] += value;
+    } else if (at == kSentToDiagonal) {
+      sent_to_diagonal_[to_a++] = value;
+    } else {
+      sent_to_off_diagonal_[to_b++] = value;
     }
-  }
+  });
   PetscCall(
       PetscSFReduceBegin(diagonal_forest_, MPIU_SCALAR, sent_to_diagonal_.data(), a, MPI_SUM));
   PetscCall(PetscSFReduceBegin(off_diagonal_forest_, MPIU_SCALAR, sent_to_off_diagonal_.data(), b,
