@@ -11,7 +11,7 @@ bool update_stops(const AnalysisPlan& plan, const IncrementConditions& condition
   for (std::size_t c = 0; c < plan.connectors.size(); ++c) {
     const ConnectorRecord& r = plan.connectors[c];
     const ConnectorResult& out = state.results[c];
-    const ComponentMask motion = conditions.connector(c).motion;
+    const ComponentMask motion = conditions.connector(plan.first_connector + c).motion;
     for (int i = 1; i <= 6; ++i) {
       const ConnectorStopLimits& stop = r.stop(i);
       if ((!stop.lower && !stop.upper) || has_component(motion, i)) continue;

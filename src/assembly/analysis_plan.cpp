@@ -75,27 +75,32 @@ class PlanBuilder {
         });
     section_laws_.assign(model_.sections.connector_sections.size(), {});
     section_laws_built_.assign(model_.sections.connector_sections.size(), false);
-    section_stops_.assign(model_.sections.connector_sections.size(), nullptr);
-    section_stops_built_.assign(model_.sections.connector_sections.size(), false);
     for (const SpringProperty& spring : model_.sections.springs) {
       plan_.spring_laws.push_back(spring.valid ? std::optional<SpringLaw>(SpringLaw(spring))
                                                : std::nullopt);
     }
-    // Reserved up front: regrowing the vectors of a deck with 10⁵ connectors (a record and its
-    // kinematics are about 0.7 kB) copies them and doubles the peak memory.
-    const auto connectors = static_cast<std::size_t>(
+    for (std::size_t s = 0; s < model_.sections.connector_sections.size(); ++s) {
+      plan_.section_stops.push_back(stops_of_section(static_cast<std::int32_t>(s)));
+    }
+    plan_.connector_total = static_cast<std::size_t>(
         std::count_if(model_.elements.begin(), model_.elements.end(),
                       [](const Element& element) { return is_connector(element.type); }));
-    plan_.connectors.reserve(connectors);
-    plan_.kinematics.reserve(connectors);
     plan_.spring_total = static_cast<std::size_t>(
         std::count_if(model_.elements.begin(), model_.elements.end(), [](const Element& element) {
           return element.type != ElementType::Held && !is_connector(element.type);
         }));
+    own_connectors_ = {0, plan_.connector_total};
     own_springs_ = {0, plan_.spring_total};
-    if (share_ && !plan_.energies) {
+    if (share_ && share_->ranks > 1 && !plan_.energies) {
+      plan_.shared = true;
+      own_connectors_ = share_of(plan_.connector_total, share_->rank, share_->ranks);
       own_springs_ = share_of(plan_.spring_total, share_->rank, share_->ranks);
     }
+    // Reserved up front: regrowing the vectors of a deck with 10⁵ connectors (a record and its
+    // kinematics are about 0.7 kB) copies them and doubles the peak memory.
+    plan_.connectors.reserve(own_connectors_.end - own_connectors_.begin);
+    plan_.kinematics.reserve(own_connectors_.end - own_connectors_.begin);
+    plan_.first_connector = own_connectors_.begin;
     plan_.first_spring = own_springs_.begin;
     plan_.springs.reserve(own_springs_.end - own_springs_.begin);
     for (std::size_t e = 0; e < model_.elements.size(); ++e) {
@@ -137,27 +142,31 @@ class PlanBuilder {
     return section_laws_[index];
   }
 
-  // The stops of a section's connectors on their available components, built once per section
+  // Whether every law of a section gives a symmetric tangent (AnalysisPlan::add_law's rule).
+  bool section_symmetric(std::int32_t s) {
+    const std::vector<const Behavior*>& laws = laws_of_section(s);
+    return std::all_of(laws.begin(), laws.end(), [](const Behavior* law) {
+      return law->tangent_is_symmetric() && !law->needs_connector_forces();
+    });
+  }
+
+  // The stops of a section's connectors on their available components, one table per section
   // (a table in every record took 190 bytes per connector); null when it has none.
   const ConnectorStops* stops_of_section(std::int32_t s) {
-    const auto index = static_cast<std::size_t>(s);
-    if (!section_stops_built_[index]) {
-      section_stops_built_[index] = true;
-      const ConnectorSection& section = model_.sections.connector_sections[index];
-      ConnectorStops stops;
-      bool any = false;
-      for (const ConnectorStop& stop :
-           model_.behaviors.behaviors[static_cast<std::size_t>(section.behavior_index)].stops) {
-        if (!has_component(section.available, stop.component)) continue;
-        stops[static_cast<std::size_t>(stop.component - 1)] = {stop.lower, stop.upper};
-        any = any || stop.lower || stop.upper;
-      }
-      if (any) {
-        plan_.stop_tables.push_back(std::make_unique<ConnectorStops>(stops));
-        section_stops_[index] = plan_.stop_tables.back().get();
-      }
+    const ConnectorSection& section =
+        model_.sections.connector_sections[static_cast<std::size_t>(s)];
+    if (section.behavior_index < 0) return nullptr;
+    ConnectorStops stops;
+    bool any = false;
+    for (const ConnectorStop& stop :
+         model_.behaviors.behaviors[static_cast<std::size_t>(section.behavior_index)].stops) {
+      if (!has_component(section.available, stop.component)) continue;
+      stops[static_cast<std::size_t>(stop.component - 1)] = {stop.lower, stop.upper};
+      any = any || stop.lower || stop.upper;
     }
-    return section_stops_[index];
+    if (!any) return nullptr;
+    plan_.stop_tables.push_back(std::make_unique<ConnectorStops>(stops));
+    return plan_.stop_tables.back().get();
   }
 
   bool add_connector(std::int32_t e, std::string* error) {
@@ -198,6 +207,8 @@ class PlanBuilder {
     setup.length_tolerance = length_tolerance_;
     setup.linearised = plan_.small_displacement;
     std::string why;
+    // Every rank checks every connector's kinematics, so that all of them report the same first
+    // error, and numbers every multiplier; it keeps the records of its own share.
     std::optional<ConnectorKinematics> kinematics = ConnectorKinematics::create(setup, &why);
     if (!kinematics) {
       *error = fmt::format("connector element {}: {}",
@@ -205,9 +216,15 @@ class PlanBuilder {
       return false;
     }
     plan_.length_scale = std::max(plan_.length_scale, (setup.xb0 - setup.xa0).stableNorm());
-    r.kinematics = plan_.kinematics.size();
+    plan_.all_laws_symmetric = plan_.all_laws_symmetric && section_symmetric(s);
+    const std::size_t index = next_connector_++;
+    const bool own = index >= own_connectors_.begin && index < own_connectors_.end;
+    plan_.connector_of_element[static_cast<std::size_t>(e)] = static_cast<std::int32_t>(index);
     r.reference = kinematics->initial_position();
-    plan_.kinematics.push_back(std::move(*kinematics));
+    if (own) {
+      r.kinematics = plan_.kinematics.size();
+      plan_.kinematics.push_back(std::move(*kinematics));
+    }
 
     ComponentMask multiplied = r.constrained | motions_[static_cast<std::size_t>(e)];
     if (behavior) {
@@ -219,7 +236,7 @@ class PlanBuilder {
           if (v && has_component(r.available, i + 1)) r.reference[i] = *v;
         }
       }
-      r.stops = stops_of_section(s);
+      r.stops = plan_.section_stops[static_cast<std::size_t>(s)];
       for (int i = 1; i <= 6; ++i) {
         const ConnectorStopLimits& stop = r.stop(i);
         if (stop.lower || stop.upper) multiplied |= component_bit(i);
@@ -252,8 +269,7 @@ class PlanBuilder {
           plan_.dofs.add_multiplier(i >= 4);
       plan_.has_multipliers = true;
     }
-    plan_.connector_of_element[static_cast<std::size_t>(e)] =
-        static_cast<std::int32_t>(plan_.connectors.size());
+    if (!own) return true;
     plan_.connectors.push_back(std::move(r));
     for (const Behavior* law : laws_of_section(s)) plan_.add_law(plan_.connectors.size() - 1, *law);
     return true;
@@ -271,13 +287,11 @@ class PlanBuilder {
   const Model& model_;
   AnalysisPlan& plan_;
   const PlanShare* share_;
-  ItemRange own_springs_;        // the springs whose records this plan holds
-  std::size_t next_spring_ = 0;  // in element order
+  ItemRange own_connectors_, own_springs_;  // the elements whose records this plan holds
+  std::size_t next_connector_ = 0, next_spring_ = 0;  // in element order
   std::vector<ComponentMask> motions_;
   std::vector<std::vector<const Behavior*>> section_laws_;
   std::vector<bool> section_laws_built_;
-  std::vector<const ConnectorStops*> section_stops_;
-  std::vector<bool> section_stops_built_;
   double length_tolerance_ = 1e-8;
 };
 
@@ -329,12 +343,8 @@ void AnalysisPlan::add_law(std::size_t c, const Behavior& law) {
   stack.slots[static_cast<std::size_t>(stack.count++)] = {&law, history_size};
   stack.needs_connector_forces = stack.needs_connector_forces || law.needs_connector_forces();
   stack.symmetric = stack.symmetric && law.tangent_is_symmetric() && !law.needs_connector_forces();
+  all_laws_symmetric = all_laws_symmetric && stack.symmetric;
   history_size += law.history_size();
-}
-
-bool AnalysisPlan::laws_symmetric() const {
-  return std::all_of(connectors.begin(), connectors.end(),
-                     [](const ConnectorRecord& r) { return r.laws.symmetric; });
 }
 
 std::optional<AnalysisPlan> build_analysis_plan(const Model& model, std::string* error,

@@ -138,8 +138,16 @@ struct AnalysisPlan {
   ProcedureNeeds procedure_needs;
   std::vector<std::unique_ptr<Behavior>> behaviors;          // the laws of each section's behaviour
   std::vector<std::unique_ptr<ConnectorStops>> stop_tables;  // one per section that has stops
+  // Per connector section: its stops (into stop_tables), null when it has none.
+  std::vector<const ConnectorStops*> section_stops;
+  // Every connector of the model (connector_total of them, in element order), or in a rank's plan
+  // (build_analysis_plan with a share) the connectors first_connector … first_connector +
+  // connectors.size() − 1 of them. The plan's, the state's and the system's arrays per connector
+  // follow this plan's records; a connector's global index (connector_of_element, the conditions,
+  // the history columns) is first_connector plus its place here.
   std::vector<ConnectorRecord> connectors;
-  std::vector<std::int32_t> connector_of_element;     // global element → connector record (−1)
+  std::size_t first_connector = 0, connector_total = 0;
+  std::vector<std::int32_t> connector_of_element;     // global element → global connector (−1)
   std::vector<std::optional<SpringLaw>> spring_laws;  // per *SPRING (empty when invalid)
   // Every spring of the model (spring_total of them, in element order), or in a rank's plan
   // (build_analysis_plan with a share) the springs first_spring … first_spring + springs.size()
@@ -163,21 +171,31 @@ struct AnalysisPlan {
   double length_scale = 1.0;  // L̄: largest initial connector length (keywords.md §16)
   bool two_d = false;
   bool has_multipliers = false;
+  // Every law of every connector of the model returns a symmetric tangent.
+  bool all_laws_symmetric = true;
+  // This plan holds one rank's share of the connectors and springs (build_analysis_plan).
+  bool shared = false;
 
-  // Appends `law` to the stack of connector `c`, with history of its own.
+  // Appends `law` to the stack of connector record `c`, with history of its own.
   void add_law(std::size_t c, const Behavior& law);
   // True when every law of every connector returns a symmetric tangent.
-  bool laws_symmetric() const;
-  // True when this plan holds the records of only some of the springs.
-  bool springs_shared() const { return springs.size() < spring_total; }
+  bool laws_symmetric() const { return all_laws_symmetric; }
+  bool springs_shared() const { return shared; }
+  bool connectors_shared() const { return shared; }
   const SpringRecord& spring(std::size_t s) const { return springs[s - first_spring]; }
+  // Connector `c` (global index), of those whose records this plan holds.
+  bool holds_connector(std::size_t c) const {
+    return c >= first_connector && c < first_connector + connectors.size();
+  }
+  const ConnectorRecord& connector(std::size_t c) const { return connectors[c - first_connector]; }
 };
 
 // Builds the plan of a validated model (no errors). Returns nullopt with `error` when the model
 // asks for something clinch run cannot do yet. With `share` (a distributed model under assembly
 // by rows, docs/parallel.md), the plan of rank `rank` of `ranks`: the records of its share of
-// the springs (share_of in element order), unless the run keeps the whole-model energies, whose
-// dashpot work reads every spring.
+// the connectors and of the springs (share_of of each, in element order), unless the run keeps
+// the whole-model energies (their dashpot and connector work reads every element; so does every
+// *DYNAMIC step, the only one with prescribed rates of connectors).
 // The record of spring element `e` of the model (a rank's plan holds only its share of them).
 SpringRecord spring_record(const Model& model, const DofMap& dofs, std::int32_t e);
 

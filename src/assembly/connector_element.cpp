@@ -129,7 +129,7 @@ EvalStatus ConnectorElements::evaluate(std::size_t c, const ElementContext& cont
   if (!k.ok) return {false, fmt::format("connector element {}: {}", label(c), k.message)};
 
   // The multipliers first: the laws may read the constraint forces they give.
-  const ConnectorConditions& conditions = context.conditions.connector(c);
+  const ConnectorConditions& conditions = context.conditions.connector(plan_.first_connector + c);
   const ConnectorActiveSet& set = state.active_sets[c];
   const int n = r.column_count;
   Vector6 reaction = Vector6::Zero(), gap = Vector6::Zero();
@@ -211,7 +211,7 @@ EvalStatus ConnectorElements::evaluate(std::size_t c, const ElementContext& cont
     }
     if (!out.warning.empty()) {
       state.request.warnings.push_back(
-          {c, fmt::format("connector element {}: {}", label(c), out.warning)});
+          {plan_.first_connector + c, fmt::format("connector element {}: {}", label(c), out.warning)});
     }
     law_force += out.force;
     if (slot.law->force_kind() == ForceKind::Friction) friction += out.force;

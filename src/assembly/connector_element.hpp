@@ -39,7 +39,8 @@ class ConnectorElements {
  public:
   ConnectorElements(const Model& model, const AnalysisPlan& plan) : model_(model), plan_(plan) {}
 
-  // Connector `c` at the state's trial values. The local tangent only when `want_tangent`.
+  // Connector record `c` (of the plan's records) at the state's trial values. The local tangent
+  // only when `want_tangent`.
   EvalStatus evaluate(std::size_t c, const ElementContext& context, AnalysisState& state,
                       bool want_tangent, LocalSystem& local) const;
   std::string label(std::size_t c) const;  // the element's label, for messages

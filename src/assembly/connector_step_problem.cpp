@@ -126,7 +126,9 @@ std::string ConnectorStepProblem::describe_failure(const NewtonReport& report) c
   if (named.failed_equation >= 0) {
     named.failed_equation = system_.equation_of_solved(named.failed_equation);
   }
-  return clinch::describe_failure(model_, system_.plan(), named);
+  return clinch::describe_failure(
+      model_, system_.plan(), named,
+      [&](std::vector<std::string> mine) { return system_.lines_of_every_rank(std::move(mine)); });
 }
 
 }  // namespace clinch

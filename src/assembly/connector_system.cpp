@@ -743,11 +743,17 @@ void ConnectorSystem::measure(const Eigen::VectorXd& residual, const Eigen::Vect
   norms.correction_norm = correction_norm.value();
 }
 
-bool ConnectorSystem::update_active_set() { return update_stops(plan_, conditions_, state_); }
+// Each rank of a distributed model updates the stops of its own connectors; all solve again if
+// any changed.
+bool ConnectorSystem::update_active_set() {
+  return any_rank(update_stops(plan_, conditions_, state_));
+}
 
 void ConnectorSystem::end_increment() {
   engage_locks(plan_, state_);
-  // §7.4: an element whose affected components all reached d = 1 leaves the assembly now.
+  // §7.4: an element whose affected components all reached d = 1 leaves the assembly now. A
+  // damage law keeps the whole plan on every rank (whole_tangent_need.cpp), so every rank sees
+  // every deletion.
   for (std::size_t c = 0; c < plan_.connectors.size(); ++c) {
     const ConnectorRecord& r = plan_.connectors[c];
     if (deleted_[c] || r.laws.empty() || !is_deleted(r, state_)) continue;
@@ -799,11 +805,12 @@ std::vector<std::string> ConnectorSystem::release_failed_components() {
       events.push_back(fmt::format("connector element {} failed ({})", elements_.label(c), why));
     }
   }
-  return events;
+  return lines_of_every_rank(std::move(events));
 }
 
 // What the laws' converged history adds up to over the connectors (Behavior::step_total), one
-// line per quantity in the order the laws first report it.
+// line per quantity in the order the laws first report it. Only damage laws report totals, and
+// they keep the whole plan on every rank (whole_tangent_need.cpp).
 std::vector<std::string> ConnectorSystem::step_summary() const {
   struct Sum {
     StepTotal total;
@@ -859,20 +866,32 @@ std::string ConnectorSystem::failure_note(int failed_equation, bool riks) const 
       return slot.law->damage(slot.history_in(state_.history)) >= 1.0;
     });
   };
-  for (std::size_t c = 0; node >= 0 && c < plan_.connectors.size(); ++c) {
-    const ConnectorRecord& r = plan_.connectors[c];
-    if (r.nodes[0] != node && r.nodes[1] != node) continue;
-    if (deleted_[c]) {
-      return fmt::format("after connector element {} was deleted (damage)", elements_.label(c));
+  const auto next_to_node = [&]() -> std::string {
+    for (std::size_t c = 0; node >= 0 && c < plan_.connectors.size(); ++c) {
+      const ConnectorRecord& r = plan_.connectors[c];
+      if (r.nodes[0] != node && r.nodes[1] != node) continue;
+      if (deleted_[c]) {
+        return fmt::format("after connector element {} was deleted (damage)", elements_.label(c));
+      }
+      if (state_.active_sets[c].released != 0) {
+        return fmt::format("after connector element {} failed (*CONNECTOR FAILURE)",
+                           elements_.label(c));
+      }
+      if (fully_damaged(c)) {
+        return fmt::format("connector element {} fully damaged (d=1)", elements_.label(c));
+      }
     }
-    if (state_.active_sets[c].released != 0) {
-      return fmt::format("after connector element {} failed (*CONNECTOR FAILURE)",
-                         elements_.label(c));
-    }
-    if (fully_damaged(c)) {
-      return fmt::format("connector element {} fully damaged (d=1)", elements_.label(c));
-    }
+    return {};
+  };
+  // The first connector in element order: that of the lowest rank that has one.
+  if (const std::vector<std::string> notes = lines_of_every_rank({next_to_node()});
+      !notes.empty()) {
+    const auto first = std::find_if(notes.begin(), notes.end(),
+                                    [](const std::string& note) { return !note.empty(); });
+    if (first != notes.end()) return *first;
   }
+  // Softening needs a damage law, which keeps the whole plan on every rank
+  // (whole_tangent_need.cpp).
   double largest = 0, growth = 0;
   std::size_t softening = plan_.connectors.size();
   for (std::size_t c = 0; c < plan_.connectors.size(); ++c) {
@@ -971,11 +990,12 @@ double ConnectorSystem::displacement_of_rate(int equation, int order, double rat
 
 double ConnectorSystem::converged_component(std::size_t connector, int component, int order) const {
   const int i = component - 1;
+  const std::size_t c = connector - plan_.first_connector;
   if (converged_components_.empty()) {
-    const ConnectorResult& r = state_.results[connector];
+    const ConnectorResult& r = state_.results[c];
     return order == 0 ? r.change[i] : order == 1 ? r.velocity[i] : r.acceleration[i];
   }
-  const ComponentRates& r = converged_components_[connector];
+  const ComponentRates& r = converged_components_[c];
   return order == 0 ? r.value[i] : order == 1 ? r.velocity[i] : r.acceleration[i];
 }
 
@@ -1008,7 +1028,8 @@ double ConnectorSystem::applied_load(std::int32_t node, int dof) const {
   return eq >= 0 ? conditions_.external()[eq] : 0.0;
 }
 
-ConnectorOutput ConnectorSystem::connector_output(std::size_t connector) const {
+ConnectorOutput ConnectorSystem::connector_output(std::size_t global) const {
+  const std::size_t connector = global - plan_.first_connector;
   ConnectorOutput out;
   static_cast<ConnectorResult&>(out) = state_.results[connector];
   const ConnectorRecord& r = plan_.connectors[connector];

@@ -175,11 +175,23 @@ class ConnectorSystem final : public NonlinearProblem {
   // 2) there is `rate` (*CONNECTOR MOTION, TYPE=VELOCITY or ACCELERATION; docs/dynamics.md).
   double component_value_of_rate(std::size_t connector, int component, int order,
                                  double rate) const;
-  // The converged CU (order 0), CV (1) or CA (2) of that component.
+  // The converged CU (order 0), CV (1) or CA (2) of that component (a connector whose record
+  // this rank's plan holds).
   double converged_component(std::size_t connector, int component, int order) const;
+  // Values of connector components on every rank, whichever rank holds the connector: called by
+  // every rank alike under a distributed model (the holders' values are summed).
+  struct ComponentQuery {
+    enum Quantity { Value, Velocity, Acceleration, Reaction };  // converged CU, CV, CA; last CRF
+    std::size_t connector = 0;                                  // global index
+    int component = 1;
+    Quantity quantity = Value;
+  };
+  std::vector<double> component_values(std::span<const ComponentQuery> queries) const;
   // The whole-model energies at the last converged increment (plan().energies; else zero).
   ModelEnergies energies() const;
+  // Connector `connector` (global index), of those whose records this rank's plan holds.
   ConnectorOutput connector_output(std::size_t connector) const;
+  bool holds_connector(std::size_t connector) const { return plan_.holds_connector(connector); }
   // Spring `spring` (global index), of those whose results this rank holds (holds_spring: every
   // one unless the plan holds a share of the springs).
   const SpringResult& spring_output(std::size_t spring) const {
@@ -188,6 +200,11 @@ class ConnectorSystem final : public NonlinearProblem {
   bool holds_spring(std::size_t spring) const {
     return spring >= plan_.first_spring && spring < plan_.first_spring + springs_.size();
   }
+  // Under a plan with a share of the elements, what each rank found about its own connectors,
+  // joined (every rank calls it alike): every rank's lines in rank order (element order), and
+  // whether any rank says yes. Without one, what this process found.
+  std::vector<std::string> lines_of_every_rank(std::vector<std::string> mine) const;
+  bool any_rank(bool mine) const;
   // Element-wise sums over the ranks of a distributed run, in place (nothing on one process):
   // for outputs whose parts each rank holds (history columns of springs).
   void sum_over_ranks(std::span<double> values) const {

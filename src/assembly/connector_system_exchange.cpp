@@ -61,12 +61,12 @@ void ConnectorSystem::distribute(Communicator& communicator, bool by_rows) {
   if (pattern_) throw std::logic_error("ConnectorSystem::distribute after the first assembly");
   communicator_ = &communicator;
   by_rows_ = by_rows;
+  // A plan with a share of the elements (build_analysis_plan) holds only this rank's: it
+  // evaluates all of them and keeps their results.
+  if (plan_.shared) return;
   const int size = communicator.size();
   owned_connectors_ = share_of(plan_.connectors.size(), communicator.rank(), size);
-  // A plan with a share of the springs (build_analysis_plan) already says which this rank has.
-  if (!plan_.springs_shared()) {
-    owned_springs_ = share_of(plan_.spring_total, communicator.rank(), size);
-  }
+  owned_springs_ = share_of(plan_.spring_total, communicator.rank(), size);
   // The laws' history is laid out connector by connector (AnalysisPlan::add_law): a rank's share
   // of it runs from its first connector's first slot to the next rank's.
   const auto history_start = [&](std::size_t c) {
@@ -103,15 +103,58 @@ void ConnectorSystem::exchange(SparseMatrix* tangent, EvalStatus& status) {
   element_forces_.count[1] = static_cast<int>(entries[3]);
   // Only the owner of a multiplier's connector sets its flag; the others hold 0 there.
   if (plan_.has_multipliers) comm.max(multiplier_active_);
-  comm.share(reinterpret_cast<std::byte*>(state_.results.data()), state_.results.size(),
-             sizeof(ConnectorResult));
-  comm.share_bytes(reinterpret_cast<std::byte*>(state_.history.data()), history_bytes_);
-  // A rank that holds a share of the springs keeps their results (history columns ask it).
-  if (!plan_.springs_shared()) {
+  // A plan with a share of the elements keeps its own results: the decisions that read them are
+  // taken together (update_active_set, release_failed_components, failure_note) and the history
+  // columns sum the parts of the ranks. A whole plan gets every rank's share.
+  if (!plan_.shared) {
+    comm.share(reinterpret_cast<std::byte*>(state_.results.data()), state_.results.size(),
+               sizeof(ConnectorResult));
+    comm.share_bytes(reinterpret_cast<std::byte*>(state_.history.data()), history_bytes_);
     comm.share(reinterpret_cast<std::byte*>(springs_.data()), springs_.size(),
                sizeof(SpringResult));
   }
   exchange_step_requests();
+}
+
+std::vector<std::string> ConnectorSystem::lines_of_every_rank(std::vector<std::string> mine) const {
+  if (!communicator_ || !plan_.shared) return mine;
+  std::string text;
+  for (const std::string& line : mine) text += fmt::format("{}\n{}", line.size(), line);
+  std::vector<std::string> all;
+  for (int r = 0; r < communicator_->size(); ++r) {
+    const std::string theirs = communicator_->broadcast(text, r);
+    for (std::size_t at = 0; at < theirs.size();) {
+      const std::size_t end = theirs.find('\n', at);
+      const std::size_t length = std::stoull(theirs.substr(at, end - at));
+      all.push_back(theirs.substr(end + 1, length));
+      at = end + 1 + length;
+    }
+  }
+  return all;
+}
+
+bool ConnectorSystem::any_rank(bool mine) const {
+  if (!communicator_ || !plan_.shared) return mine;
+  return communicator_->first(mine) < communicator_->size();
+}
+
+std::vector<double> ConnectorSystem::component_values(
+    std::span<const ComponentQuery> queries) const {
+  std::vector<double> values(queries.size(), 0.0);
+  for (std::size_t q = 0; q < queries.size(); ++q) {
+    const ComponentQuery& query = queries[q];
+    if (!plan_.holds_connector(query.connector)) continue;
+    const int i = query.component - 1;
+    if (query.quantity == ComponentQuery::Reaction) {
+      values[q] = state_.results[query.connector - plan_.first_connector].multiplier[i];
+    } else {
+      values[q] =
+          converged_component(query.connector, query.component, static_cast<int>(query.quantity));
+    }
+  }
+  // Each connector's rank gives its values, the others zero.
+  if (communicator_ && plan_.shared) communicator_->sum(values);
+  return values;
 }
 
 // The laws' requests (behaviors.md §7.4: a smaller increment) and warnings of every rank, merged

@@ -11,7 +11,8 @@ constexpr const char* kDofNames[] = {"", "u1", "u2", "u3", "ur1", "ur2", "ur3"};
 
 // The DOF or the multiplier behind an equation (connection-types.md §1.1, §3.8); empty when the
 // equation is not one of the plan's.
-std::string name_equation(const Model& model, const AnalysisPlan& plan, int equation) {
+std::string name_equation(const Model& model, const AnalysisPlan& plan, int equation,
+                          const LinesOfEveryRank& every_rank) {
   if (equation < 0 || equation >= plan.dofs.equations()) return {};
   const std::int32_t node = plan.dofs.node_of(equation);
   if (node >= 0) {
@@ -19,13 +20,22 @@ std::string name_equation(const Model& model, const AnalysisPlan& plan, int equa
     return fmt::format("DOF {} of node {}", kDofNames[plan.dofs.dof_of(equation)],
                        qualified_label(model, n.instance, n.label));
   }
-  for (const ConnectorRecord& r : plan.connectors) {
-    for (int j = 0; j < r.multiplier_count; ++j) {
-      if (r.local.equation[static_cast<std::size_t>(r.column_count + j)] != equation) continue;
-      const Element& e = model.elements[static_cast<std::size_t>(r.element)];
-      return fmt::format("connector {} component {}", qualified_label(model, e.instance, e.label),
-                         r.multiplier_components[static_cast<std::size_t>(j)]);
+  const auto multiplier_of = [&]() -> std::string {
+    for (const ConnectorRecord& r : plan.connectors) {
+      for (int j = 0; j < r.multiplier_count; ++j) {
+        if (r.local.equation[static_cast<std::size_t>(r.column_count + j)] != equation) continue;
+        const Element& e = model.elements[static_cast<std::size_t>(r.element)];
+        return fmt::format("connector {} component {}",
+                           qualified_label(model, e.instance, e.label),
+                           r.multiplier_components[static_cast<std::size_t>(j)]);
+      }
     }
+    return {};
+  };
+  if (!plan.connectors_shared() || !every_rank) return multiplier_of();
+  // The rank whose share holds the multiplier's connector names it.
+  for (std::string& name : every_rank({multiplier_of()})) {
+    if (!name.empty()) return std::move(name);
   }
   return {};
 }
@@ -65,7 +75,8 @@ struct Holding {
   std::size_t count = 0;
   std::string names;
 };
-Holding elements_holding(const Model& model, const AnalysisPlan& plan, int equation) {
+Holding elements_holding(const Model& model, const AnalysisPlan& plan, int equation,
+                         const LinesOfEveryRank& every_rank) {
   std::vector<std::pair<std::string, std::string>> found;  // kind, label
   const auto add = [&](std::string kind, std::int32_t element) {
     const Element& e = model.elements[static_cast<std::size_t>(element)];
@@ -77,6 +88,15 @@ Holding elements_holding(const Model& model, const AnalysisPlan& plan, int equat
           connector_holds(plan, r, r.columns[static_cast<std::size_t>(k)])) {
         add("connector", r.element);
       }
+    }
+  }
+  if (plan.connectors_shared() && every_rank) {
+    // The connectors of every rank's share, in element order.
+    std::vector<std::string> labels;
+    for (auto& [kind, label] : found) labels.push_back(std::move(label));
+    found.clear();
+    for (std::string& label : every_rank(std::move(labels))) {
+      found.emplace_back("connector", std::move(label));
     }
   }
   const auto add_spring = [&](const SpringRecord& s) {
@@ -131,15 +151,15 @@ bool has_boundary(const Model& model, std::int32_t node, int dof) {
 }  // namespace
 
 std::string describe_failure(const Model& model, const AnalysisPlan& plan,
-                             const NewtonReport& report) {
-  const std::string name = name_equation(model, plan, report.failed_equation);
+                             const NewtonReport& report, const LinesOfEveryRank& every_rank) {
+  const std::string name = name_equation(model, plan, report.failed_equation, every_rank);
   if (report.outcome == NewtonOutcome::NonFinite) {
     return name.empty() ? report.message : fmt::format("{} at {}", report.message, name);
   }
   if (name.empty()) return "the system is singular";
   const std::int32_t node = plan.dofs.node_of(report.failed_equation);
   if (node < 0) return "overconstrained " + name;
-  if (const Holding holding = elements_holding(model, plan, report.failed_equation);
+  if (const Holding holding = elements_holding(model, plan, report.failed_equation, every_rank);
       holding.count > 0) {
     return fmt::format(
         "singular system: {} has no stiffness, although {} gave it stiffness at "

@@ -8,7 +8,7 @@ IncrementConditions::IncrementConditions(const AnalysisPlan& plan)
     : prescribed_(static_cast<std::size_t>(plan.dofs.equations()), 0),
       target_(Eigen::VectorXd::Zero(plan.dofs.equations())),
       external_(target_),
-      slot_of_connector_(plan.connectors.size(), -1) {}
+      slot_of_connector_(plan.connector_total, -1) {}
 
 void IncrementConditions::clear() {
   for (int eq : prescribed_list_) prescribed_[static_cast<std::size_t>(eq)] = 0;

@@ -37,7 +37,7 @@ class IncrementConditions {
     return std::any_of(slots_.begin(), slots_.end(),
                        [](const ConnectorConditions& c) { return c.load != Vector6::Zero(); });
   }
-  // The motion and load conditions of a connector (none for most connectors).
+  // The motion and load conditions of connector `c` (global index; none for most connectors).
   const ConnectorConditions& connector(std::size_t c) const {
     const std::int32_t s = slot_of_connector_[c];
     return s < 0 ? kNone : slots_[static_cast<std::size_t>(s)];

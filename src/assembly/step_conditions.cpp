@@ -1,10 +1,28 @@
 #include "src/assembly/step_conditions.hpp"
 
+#include <ranges>
+
 namespace clinch {
 namespace {
 
+using Query = ConnectorSystem::ComponentQuery;
+
 std::int64_t component_key(std::int32_t connector, int component) {
   return static_cast<std::int64_t>(connector) * 8 + component;
+}
+
+// The values of the keyed connector components on every rank (a distributed model holds each
+// connector on one rank only: ConnectorSystem::component_values); `quantity(k)` says which value
+// of the k-th key.
+template <class Keys, class Quantity>
+std::vector<double> component_values(const ConnectorSystem& system, const Keys& keys,
+                                     const Quantity& quantity) {
+  std::vector<ConnectorSystem::ComponentQuery> queries;
+  for (const std::int64_t key : keys) {
+    queries.push_back({static_cast<std::size_t>(key / 8), static_cast<int>(key % 8),
+                       quantity(queries.size())});
+  }
+  return system.component_values(queries);
 }
 
 }  // namespace
@@ -143,11 +161,12 @@ void StepConditions::begin_step(std::size_t s, ConnectorSystem& system) {
     }
   }
   if (step.replaces(ConditionKind::Motion)) {
+    const std::vector<double> reactions = component_values(
+        system, std::views::keys(motions_), [](std::size_t) { return Query::Reaction; });
+    std::size_t k = 0;
     for (const auto& [key, c] : motions_) {
-      const ConnectorOutput out = system.connector_output(static_cast<std::size_t>(key / 8));
       // The constraint force λ enters CTF as +λ; a connector load enters as −CCF.
-      released_connector_loads_[key] =
-          Condition{Mode::Ramp, -out.multiplier[static_cast<int>(key % 8) - 1], 0.0, -1};
+      released_connector_loads_[key] = Condition{Mode::Ramp, -reactions[k++], 0.0, -1};
     }
   }
   carry_over(boundaries_, step.replaces(ConditionKind::Boundary), false, step, released_loads_);
@@ -183,6 +202,22 @@ void StepConditions::begin_step(std::size_t s, ConnectorSystem& system) {
   }
   auto connector_conditions = [&](const std::vector<ConnectorCondition>& list, Table& table,
                                   bool motion) {
+    // A motion starts from the component's converged value, a prescribed rate from the rate it
+    // has (docs/dynamics.md): asked for all of the step's motions at once.
+    std::vector<std::int64_t> keys;
+    std::vector<Query::Quantity> quantities;
+    for (const ConnectorCondition& cc : list) {
+      const ConditionBlock& block = step.blocks[static_cast<std::size_t>(cc.block)];
+      for (std::int32_t e : cc.resolved) {
+        const std::int32_t c = plan_.connector_of_element[static_cast<std::size_t>(e)];
+        if (c < 0 || !motion) continue;
+        keys.push_back(component_key(c, cc.component));
+        quantities.push_back(static_cast<Query::Quantity>(block.rate_order));
+      }
+    }
+    const std::vector<double> starts =
+        component_values(system, keys, [&](std::size_t k) { return quantities[k]; });
+    std::size_t k = 0;
     for (const ConnectorCondition& cc : list) {
       const ConditionBlock& block = step.blocks[static_cast<std::size_t>(cc.block)];
       for (std::int32_t e : cc.resolved) {
@@ -191,9 +226,7 @@ void StepConditions::begin_step(std::size_t s, ConnectorSystem& system) {
         const std::int64_t key = component_key(c, cc.component);
         double start = 0.0;
         if (motion) {
-          // A prescribed rate starts from the rate the component has (docs/dynamics.md).
-          start = system.converged_component(static_cast<std::size_t>(c), cc.component,
-                                             block.rate_order);
+          start = starts[k++];
           released_connector_loads_.erase(key);
         } else {
           start = load_start(table, key);
@@ -245,10 +278,11 @@ void StepConditions::begin_perturbation(const Step& step, ConnectorSystem& syste
     boundaries_.clear();
   }
   if (step.replaces(ConditionKind::Motion)) {
+    const std::vector<double> reactions = component_values(
+        system, std::views::keys(motions_), [](std::size_t) { return Query::Reaction; });
+    std::size_t k = 0;
     for (const auto& [key, c] : motions_) {
-      const ConnectorOutput out = system.connector_output(static_cast<std::size_t>(key / 8));
-      released_connector_loads_[key] =
-          Condition{Mode::Hold, 0.0, -out.multiplier[static_cast<int>(key % 8) - 1], -1};
+      released_connector_loads_[key] = Condition{Mode::Hold, 0.0, -reactions[k++], -1};
     }
     motions_.clear();
   }
@@ -275,6 +309,7 @@ void StepConditions::begin_perturbation(const Step& step, ConnectorSystem& syste
       const std::int32_t c = plan_.connector_of_element[static_cast<std::size_t>(e)];
       if (c < 0) continue;
       const std::int64_t key = component_key(c, m.component);
+      // A perturbation step keeps the whole plan on every rank (whole_tangent_need.cpp).
       const double base =
           system.connector_output(static_cast<std::size_t>(c)).change[m.component - 1];
       motions_[key] = perturbed(base, block.fixed ? 0.0 : m.magnitude);

@@ -182,7 +182,7 @@ int run_deck(const RunCommandOptions& options) {
   const double read_seconds = seconds_since(start);
   const auto plan_start = std::chrono::steady_clock::now();
   // Under mpirun each rank assembles its part of the tangent and the PETSc backend sums the
-  // parts, and the plan holds the rank's share of the springs, unless another backend or a
+  // parts, and the plan holds the rank's share of the connectors and springs, unless another backend or a
   // feature needs the whole tangent on every rank (docs/parallel.md).
   std::string whole_tangent;
   std::optional<PlanShare> share;
@@ -209,7 +209,7 @@ int run_deck(const RunCommandOptions& options) {
                                : fmt::format(" (and {} at the centres of mass of rigid "
                                              "bodies' elements)",
                                              centres),
-                  plan->connectors.size(), plan->spring_total, node_equations,
+                  plan->connector_total, plan->spring_total, node_equations,
                   model.nodes.empty() ? 0.0 : double(node_equations) / model.nodes.size(),
                   plan->dofs.equations() - node_equations));
   if (!plan->dependents.empty()) {
@@ -226,7 +226,7 @@ int run_deck(const RunCommandOptions& options) {
         fmt::format("distributed over {} processes: each evaluates about {} connectors and "
                     "{} springs; {}",
                     communicator->size(),
-                    (plan->connectors.size() + communicator->size() - 1) / communicator->size(),
+                    (plan->connector_total + communicator->size() - 1) / communicator->size(),
                     (plan->spring_total + communicator->size() - 1) / communicator->size(),
                     whole_tangent.empty()
                         ? "each assembles its part of the tangent, which PETSc sums"

@@ -155,14 +155,15 @@ std::vector<HistoryColumns::Request> HistoryColumns::expand_step(
         if (plan_.connector_of_element[static_cast<std::size_t>(e)] >= 0) connectors.push_back(e);
       }
     } else {
-      connectors.reserve(plan_.connectors.size());
-      for (const ConnectorRecord& r : plan_.connectors) connectors.push_back(r.element);
+      connectors.reserve(plan_.connector_total);
+      for (std::size_t e = 0; e < plan_.connector_of_element.size(); ++e) {
+        if (plan_.connector_of_element[e] >= 0) connectors.push_back(static_cast<std::int32_t>(e));
+      }
     }
     std::size_t least = names_.size();  // CTF and CU of every component
     for (std::int32_t e : connectors) {
-      const ConnectorRecord& r = plan_.connectors[static_cast<std::size_t>(
-          plan_.connector_of_element[static_cast<std::size_t>(e)])];
-      const auto components = static_cast<unsigned>(r.available | r.constrained);
+      const ConnectorSection& section = section_of(e);
+      const auto components = static_cast<unsigned>(section.available | section.constrained);
       least += 2 * static_cast<std::size_t>(std::popcount(components));
     }
     // Reserved once rather than regrown (and rehashed) step by step over 10⁶ connectors.
@@ -190,10 +191,8 @@ std::vector<HistoryColumns::Request> HistoryColumns::expand_step(
     std::vector<const char*> variables;
     OutputIdentifier id;
     for (std::int32_t e : connectors) {
-      const ConnectorRecord& r = plan_.connectors[static_cast<std::size_t>(
-          plan_.connector_of_element[static_cast<std::size_t>(e)])];
-      const std::int32_t b =
-          model_.sections.connector_sections[static_cast<std::size_t>(r.section)].behavior_index;
+      const std::int32_t s = model_.sections.section_of_element[static_cast<std::size_t>(e)];
+      const std::int32_t b = section_of(e).behavior_index;
       if (b >= 0 && !features_of[static_cast<std::size_t>(b)]) {
         features_of[static_cast<std::size_t>(b)] =
             behavior_features(model_.behaviors.behaviors[static_cast<std::size_t>(b)]);
@@ -207,8 +206,8 @@ std::vector<HistoryColumns::Request> HistoryColumns::expand_step(
       if (features.force_criterion) variables.push_back("CDIF");
       if (features.motion_criterion) variables.push_back("CDIM");
       if (features.plastic_motion_criterion) variables.push_back("CDIP");
-      bool stops = !r.locks.empty();
-      stops |= r.stops != nullptr;
+      bool stops = b >= 0 && !model_.behaviors.behaviors[static_cast<std::size_t>(b)].locks.empty();
+      stops |= plan_.section_stops[static_cast<std::size_t>(s)] != nullptr;
       if (stops)
         variables.insert(variables.end(), {"CRF", "CSLST"});
       else if (driven[static_cast<std::size_t>(e)])
@@ -315,7 +314,7 @@ void HistoryColumns::element_columns(const OutputIdentifier& id,
     }
     const std::int32_t c = plan_.connector_of_element[static_cast<std::size_t>(e)];
     if (c < 0) continue;
-    const ConnectorRecord& r = plan_.connectors[static_cast<std::size_t>(c)];
+    const ConnectorSection& section = section_of(e);
     const Term term{Source::Connector, c};
     if (id.components == 0) {
       if (!totals_only) {
@@ -323,7 +322,7 @@ void HistoryColumns::element_columns(const OutputIdentifier& id,
       }
       continue;
     }
-    const ComponentMask defined = r.available | r.constrained;
+    const ComponentMask defined = section.available | section.constrained;
     for (int k = 1; k <= 6; ++k) {
       if (!(id.components & defined & (1u << (k - 1)))) continue;
       if (totals) sums[static_cast<std::size_t>(k)].push_back(term);
@@ -344,9 +343,7 @@ void HistoryColumns::derived_columns(const OutputIdentifier& id,
   for (std::int32_t e : elements) {
     const std::int32_t c = plan_.connector_of_element[static_cast<std::size_t>(e)];
     if (c < 0) continue;
-    const ConnectorRecord& r = plan_.connectors[static_cast<std::size_t>(c)];
-    const std::int32_t b =
-        model_.sections.connector_sections[static_cast<std::size_t>(r.section)].behavior_index;
+    const std::int32_t b = section_of(e).behavior_index;
     if (b < 0) continue;
     const ConnectorBehavior& behavior = model_.behaviors.behaviors[static_cast<std::size_t>(b)];
     std::vector<std::int32_t> terms;
@@ -436,41 +433,46 @@ bool HistoryColumns::due(int increment, double step_time, bool last) const {
                      [&](const Request& r) { return r.due(increment, step_time, last); });
 }
 
-double HistoryColumns::value(const Column& c, ConnectorSystem& system, SpringPart& springs) {
+// A connector's contribution to column `c`.
+double HistoryColumns::connector_term(const Column& c, const ConnectorOutput& out) const {
+  if (c.derived >= 0) {
+    // §4: CDERF on the force of the context (plasticity: the elastic-plastic force), CDERU on
+    // the constitutive motions.
+    const DerivedComponent& g = derived_[static_cast<std::size_t>(c.derived)];
+    if (c.variable != "CDERF") return g.value(out.constitutive);
+    if (c.derived_force == Column::DerivedForce::Friction) return g.value(out.friction);
+    if (c.derived_force == Column::DerivedForce::Connector) {
+      return g.value(out.elastic + out.viscous + out.friction + out.multiplier);
+    }
+    return g.value(out.elastic);
+  }
+  return connector_value(out, c.variable, c.component);
+}
+
+double HistoryColumns::value(const Column& c, ConnectorSystem& system, RankPart& part) {
   double sum = 0;
   for (const Term& t : std::span(terms_).subspan(c.first_term, c.term_count)) {
     switch (t.source) {
       case Source::Connector: {
+        // Under a plan with a share of the connectors only the rank that holds one has its
+        // results.
+        const bool shared = plan_.connectors_shared();
+        part.present = part.present || shared;
+        if (!system.holds_connector(static_cast<std::size_t>(t.index))) break;
         // The connector's results once per run of its columns: an element has many.
         if (t.index != output_connector_) {
           output_ = system.connector_output(static_cast<std::size_t>(t.index));
           output_connector_ = t.index;
         }
-        const ConnectorOutput& out = output_;
-        if (c.derived >= 0) {
-          // §4: CDERF on the force of the context (plasticity: the elastic-plastic force),
-          // CDERU on the constitutive motions.
-          const DerivedComponent& g = derived_[static_cast<std::size_t>(c.derived)];
-          if (c.variable != "CDERF") {
-            sum += g.value(out.constitutive);
-          } else if (c.derived_force == Column::DerivedForce::Friction) {
-            sum += g.value(out.friction);
-          } else if (c.derived_force == Column::DerivedForce::Connector) {
-            sum += g.value(out.elastic + out.viscous + out.friction + out.multiplier);
-          } else {
-            sum += g.value(out.elastic);
-          }
-        } else {
-          sum += connector_value(out, c.variable, c.component);
-        }
+        (shared ? part.sum : sum) += connector_term(c, output_);
         break;
       }
       case Source::Spring: {
         // Only the rank that evaluates a spring holds its result (a distributed model).
-        springs.present = true;
+        part.present = true;
         if (!system.holds_spring(static_cast<std::size_t>(t.index))) break;
         const SpringResult& spring = system.spring_output(static_cast<std::size_t>(t.index));
-        springs.sum += c.variable == "S" ? spring.force : c.variable == "E" ? spring.delta : 0.0;
+        part.sum += c.variable == "S" ? spring.force : c.variable == "E" ? spring.delta : 0.0;
         break;
       }
       case Source::Node:
@@ -498,23 +500,28 @@ void HistoryColumns::evaluate(ConnectorSystem& system, int increment, double ste
                               std::vector<double>& values) {
   values.resize(columns_.size(), 0.0);
   output_connector_ = -1;  // the state has changed since the last row
-  spring_columns_.clear();
-  spring_sums_.clear();
+  part_columns_.clear();
+  part_sums_.clear();
+  // Requests share columns (a PRESELECT request and one that lists CU): each is evaluated once.
+  evaluated_in_row_.resize(columns_.size(), 0);
+  ++row_;
   for (const Request& r : step_requests_[step_]) {
     if (!r.due(increment, step_time, last)) continue;
     for (std::size_t c : r.columns) {
-      SpringPart springs;
-      values[c] = value(columns_[c], system, springs);
-      if (!springs.present) continue;
-      spring_columns_.push_back(c);
-      spring_sums_.push_back(springs.sum);
+      if (evaluated_in_row_[c] == row_) continue;
+      evaluated_in_row_[c] = row_;
+      RankPart part;
+      values[c] = value(columns_[c], system, part);
+      if (!part.present) continue;
+      part_columns_.push_back(c);
+      part_sums_.push_back(part.sum);
     }
   }
-  // Each rank holds the results of its own springs under a distributed model: the spring parts
+  // Each rank holds the results of its own elements under a distributed model: the rank parts
   // of the due columns, and only those, are summed over the ranks (docs/parallel.md).
-  if (system.plan().springs_shared()) system.sum_over_ranks(spring_sums_);
-  for (std::size_t k = 0; k < spring_columns_.size(); ++k) {
-    values[spring_columns_[k]] += spring_sums_[k];
+  if (plan_.shared) system.sum_over_ranks(part_sums_);
+  for (std::size_t k = 0; k < part_columns_.size(); ++k) {
+    values[part_columns_[k]] += part_sums_[k];
   }
 }
 

@@ -43,7 +43,7 @@ class HistoryColumns {
   enum class Source : std::uint8_t { Connector, Spring, Node, Model };
   struct Term {  // one contribution to a column (a total sums several)
     Source source = Source::Connector;
-    std::int32_t index = 0;  // connector record, spring record, or global node
+    std::int32_t index = 0;  // connector, spring (global indices), or global node
   };
   struct Column {
     std::string_view variable;  // canonical identifier (OutputVariableInfo::name)
@@ -101,16 +101,25 @@ class HistoryColumns {
                     Request& request, bool totals, bool totals_only, const std::string& set);
   void total_columns(std::string_view variable, const std::array<std::vector<Term>, 7>& sums,
                      Request& request, const std::string& set);
-  // The springs' part of a column: whether it has one, and the sum of the springs this rank
-  // evaluates.
-  struct SpringPart {
+  // The part of a column from elements a distributed model holds on one rank each (springs, and
+  // connectors under a plan with a share of them): whether it has one, and the sum of those this
+  // rank holds.
+  struct RankPart {
     bool present = false;
     double sum = 0.0;
   };
-  // A column's value but for its springs' part, which goes to `springs`.
-  double value(const Column& column, ConnectorSystem& system, SpringPart& springs);
-  std::vector<std::size_t> spring_columns_;  // of the row being evaluated, with their sums
-  std::vector<double> spring_sums_;
+  // A column's value but for its rank part, which goes to `part`.
+  double value(const Column& column, ConnectorSystem& system, RankPart& part);
+  double connector_term(const Column& column, const ConnectorOutput& out) const;
+  std::vector<std::size_t> part_columns_;  // of the row being evaluated, with their sums
+  std::vector<double> part_sums_;
+  std::vector<std::uint64_t> evaluated_in_row_;  // per column: the row_ that last evaluated it
+  std::uint64_t row_ = 0;
+  // The section of connector element `e`.
+  const ConnectorSection& section_of(std::int32_t e) const {
+    return model_.sections.connector_sections[static_cast<std::size_t>(
+        model_.sections.section_of_element[static_cast<std::size_t>(e)])];
+  }
 
   const Model& model_;
   const AnalysisPlan& plan_;
