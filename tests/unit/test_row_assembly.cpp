@@ -1,5 +1,5 @@
-// Assembly by rows (docs/parallel.md): a rank's plan holds its share of the springs, and its
-// pattern the entries of those springs and the diagonals of the rows it owns. Over the ranks the
+// Assembly by rows (docs/parallel.md): a rank's plan holds its share of the connectors and
+// springs, and its pattern the entries of those elements and the diagonals of the rows it owns. Over the ranks the
 // shares are the whole plan and the parts cover the whole pattern, entry for entry.
 #include <gtest/gtest.h>
 
@@ -38,7 +38,8 @@ TEST(SparsityBuilder, PresetDiagonalsOnlyForTheGivenRowsAndForCoupledEquations) 
 }
 
 // Eight SPRINGA elements around and across a square of four free nodes, each also tied to the
-// ground node 5 by a SPRING1 on DOF 3.
+// ground node 5 by a SPRING1 on DOF 3; three connectors across it: an elastic AXIAL, a
+// CARTESIAN with a stop on component 1 and a JOIN (multipliers of its own).
 std::string square_deck() {
   return "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n3, 1., 1., 0.\n4, 0., 1., 0.\n5, 2., 2., 0.\n"
          "*ELEMENT, TYPE=SPRINGA, ELSET=A\n1, 1, 2\n2, 2, 3\n3, 3, 4\n4, 4, 1\n5, 1, 3\n6, 2, 4\n"
@@ -46,6 +47,16 @@ std::string square_deck() {
          "*SPRING, ELSET=A\n\n100.\n"
          "*ELEMENT, TYPE=SPRING1, ELSET=Z\n11, 1\n12, 2\n13, 3\n14, 4\n"
          "*SPRING, ELSET=Z\n3\n10.\n"
+         "*ELEMENT, TYPE=CONN3D2, ELSET=CA\n21, 1, 3\n"
+         "*ELEMENT, TYPE=CONN3D2, ELSET=CC\n22, 2, 4\n"
+         "*ELEMENT, TYPE=CONN3D2, ELSET=CJ\n23, 4, 5\n"
+         "*CONNECTOR SECTION, ELSET=CA, BEHAVIOR=AX\nAXIAL,\n"
+         "*CONNECTOR SECTION, ELSET=CC, BEHAVIOR=CT\nCARTESIAN,\n"
+         "*CONNECTOR SECTION, ELSET=CJ\nJOIN,\n"
+         "*CONNECTOR BEHAVIOR, NAME=AX\n*CONNECTOR ELASTICITY, COMPONENT=1\n50.\n"
+         "*CONNECTOR BEHAVIOR, NAME=CT\n*CONNECTOR ELASTICITY, COMPONENT=1\n20.\n"
+         "*CONNECTOR ELASTICITY, COMPONENT=2\n30.\n*CONNECTOR ELASTICITY, COMPONENT=3\n40.\n"
+         "*CONNECTOR STOP, COMPONENT=1\n-2., 2.\n"
          "*BOUNDARY\n5, 1, 3\n*STEP\n*STATIC\n*CLOAD\n3, 1, 1.\n*END STEP\n";
 }
 
@@ -62,7 +73,7 @@ struct Square {
   }
 };
 
-TEST(RowAssembly, RankSharesOfTheSpringsAndPatternPartsMakeTheWhole) {
+TEST(RowAssembly, RankSharesOfTheElementsAndPatternPartsMakeTheWhole) {
   const Square square;
   ASSERT_TRUE(square.whole);
   const CheckedDeck& deck = square.deck;
@@ -76,6 +87,7 @@ TEST(RowAssembly, RankSharesOfTheSpringsAndPatternPartsMakeTheWhole) {
   std::vector<std::int32_t> elements;
   Entries covered;
   int next_row = 0;
+  std::size_t history = 0;
   for (int rank = 0; rank < kRanks; ++rank) {
     const PlanShare share{rank, kRanks};
     const std::optional<AnalysisPlan> plan = build_analysis_plan(deck.model, &error, &share);
@@ -85,13 +97,13 @@ TEST(RowAssembly, RankSharesOfTheSpringsAndPatternPartsMakeTheWhole) {
     EXPECT_TRUE(plan->springs_shared());
     for (const SpringRecord& s : plan->springs) elements.push_back(s.element);
     const ItemRange springs{plan->first_spring, plan->first_spring + plan->springs.size()};
-    const RowAssemblyShare rows{{0, 0}, springs, rank, kRanks};
+    const RowAssemblyShare rows{{0, plan->connectors.size()}, springs, rank, kRanks};
     const AssemblyPattern part = build_assembly_pattern(*plan, true, &rows);
     validate_pattern(part.matrix);
     ASSERT_TRUE(part.matrix.partial());
-    // The ranks own consecutive rows, whole nodes of three DOFs each.
+    // The ranks own consecutive rows (with multipliers in the system, in blocks of one row:
+    // DofMap::uniform_node_block).
     EXPECT_EQ(part.matrix.first_owned_row, next_row);
-    EXPECT_EQ(part.matrix.owned_rows % 3, 0);
     next_row += part.matrix.owned_rows;
     for (int i = 0; i < n; ++i) {
       if (part.matrix.owns_row(i)) EXPECT_GE(part.diagonal[static_cast<std::size_t>(i)], 0) << i;
@@ -101,9 +113,26 @@ TEST(RowAssembly, RankSharesOfTheSpringsAndPatternPartsMakeTheWhole) {
     covered.insert(mine.begin(), mine.end());
     // Each spring's positions are in its rank's part.
     EXPECT_EQ(part.spring_offset.size(), plan->springs.size());
+    // One connector each; the multipliers numbered as in the whole plan, and the whole model's
+    // decisions (symmetric laws, multipliers) the same on every rank.
+    ASSERT_EQ(plan->connectors.size(), 1u);
+    EXPECT_EQ(plan->connector_total, 3u);
+    EXPECT_EQ(plan->first_connector, static_cast<std::size_t>(rank));
+    const ConnectorRecord& mine_record = plan->connectors[0];
+    const ConnectorRecord& whole_record = whole->connectors[static_cast<std::size_t>(rank)];
+    EXPECT_EQ(mine_record.element, whole_record.element);
+    EXPECT_EQ(mine_record.local.equation, whole_record.local.equation);
+    EXPECT_EQ(mine_record.laws.count, whole_record.laws.count);
+    EXPECT_EQ(plan->dofs.equations(), whole->dofs.equations());
+    EXPECT_EQ(plan->laws_symmetric(), whole->laws_symmetric());
+    EXPECT_EQ(plan->has_multipliers, whole->has_multipliers);
+    EXPECT_EQ(plan->connector_of_element, whole->connector_of_element);
+    history += plan->history_size;
+    EXPECT_EQ(part.connector_offset.size(), 1u);
   }
   EXPECT_EQ(next_row, n);
   EXPECT_EQ(covered, entries_of(whole_pattern.matrix));
+  EXPECT_EQ(history, whole->history_size);
   std::vector<std::int32_t> all;
   for (const SpringRecord& s : whole->springs) all.push_back(s.element);
   EXPECT_EQ(elements, all);
