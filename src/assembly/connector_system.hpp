@@ -127,11 +127,12 @@ class ConnectorSystem final : public NonlinearProblem {
 
   // ---- distributed runs (docs/parallel.md) ----
   // From the next evaluation on, evaluates only this rank's share of the connectors and springs
-  // and exchanges the results after each evaluation (connector_system_exchange.cpp), so that
-  // every rank holds what a serial evaluation gives. Without it every element is evaluated here.
-  // `by_rows`: the tangent is this rank's part (SparseMatrix::partial), which the distributed
-  // solver sums; otherwise the ranks sum the whole tangent and each holds it. Called before the
-  // first evaluation.
+  // and sums the forces over the ranks after each evaluation (connector_system_exchange.cpp).
+  // A plan with a share of the elements holds the rank's own, whose results stay here; with a
+  // whole plan the ranks also exchange the results, so that every rank holds what a serial
+  // evaluation gives. Without it every element is evaluated here. `by_rows`: the tangent is
+  // this rank's part (SparseMatrix::partial), which the distributed solver sums; otherwise the
+  // ranks sum the whole tangent and each holds it. Called before the first evaluation.
   void distribute(Communicator& communicator, bool by_rows);
   bool assembled_by_rows() const { return by_rows_; }
 
@@ -193,7 +194,7 @@ class ConnectorSystem final : public NonlinearProblem {
   ConnectorOutput connector_output(std::size_t connector) const;
   bool holds_connector(std::size_t connector) const { return plan_.holds_connector(connector); }
   // Spring `spring` (global index), of those whose results this rank holds (holds_spring: every
-  // one unless the plan holds a share of the springs).
+  // one unless the plan holds a share of the elements).
   const SpringResult& spring_output(std::size_t spring) const {
     return springs_[spring - plan_.first_spring];
   }

@@ -1,7 +1,9 @@
-// The exchange after a distributed evaluation (docs/parallel.md): each rank evaluated its share
-// of the elements into zeroed arrays, so sums give the whole residual and tangent; each rank's
-// share of the results and of the laws' trial history is sent to the others. Every rank then
-// holds the state a serial evaluation gives, up to the order of the sums' additions.
+// The exchange after a distributed evaluation and the decisions taken together (docs/parallel.md):
+// each rank evaluated its share of the elements into zeroed arrays, so sums give the whole
+// residual and tangent. With a whole plan each rank's share of the results and of the laws'
+// trial history is sent to the others, and every rank then holds the state a serial evaluation
+// gives, up to the order of the sums' additions; a plan with a share of the elements keeps its
+// results, and what is decided from them is joined over the ranks.
 #include <fmt/format.h>
 
 #include <cstring>

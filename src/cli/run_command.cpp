@@ -182,8 +182,8 @@ int run_deck(const RunCommandOptions& options) {
   const double read_seconds = seconds_since(start);
   const auto plan_start = std::chrono::steady_clock::now();
   // Under mpirun each rank assembles its part of the tangent and the PETSc backend sums the
-  // parts, and the plan holds the rank's share of the connectors and springs, unless another backend or a
-  // feature needs the whole tangent on every rank (docs/parallel.md).
+  // parts, and the plan holds the rank's share of the connectors and springs, unless another
+  // backend or a feature needs the whole tangent on every rank (docs/parallel.md).
   std::string whole_tangent;
   std::optional<PlanShare> share;
   if (communicator) {
@@ -213,10 +213,13 @@ int run_deck(const RunCommandOptions& options) {
                   model.nodes.empty() ? 0.0 : double(node_equations) / model.nodes.size(),
                   plan->dofs.equations() - node_equations));
   if (!plan->dependents.empty()) {
+    // A rank's plan holds the condensed elements of its own share.
+    double condensed = static_cast<double>(plan->expansions.size());
+    if (plan->shared) communicator->sum({&condensed, 1});
     log.info(
         fmt::format("{} of the active DOFs follow others through kinematic constraints "
                     "(eliminated: {} condensed elements)",
-                    plan->dependents.dofs.size(), plan->expansions.size()));
+                    plan->dependents.dofs.size(), condensed));
   }
   if (auto stick = default_stick_stiffness_summary(model.behaviors)) log.info(*stick);
   ConnectorSystem system(model, *plan);

@@ -1,8 +1,7 @@
 // The ranks of a run (docs/parallel.md). Under `mpirun -n P` every rank reads the deck and holds
-// the whole model and state; each evaluates its own share of the elements, and after every
-// evaluation the ranks exchange what they computed, so that each holds the state a serial run
-// would and takes the same decisions (convergence, cutbacks, active sets) without further
-// messages. A run on one process uses no communicator.
+// the whole model; each evaluates its own share of the elements, the ranks sum the forces after
+// every evaluation, and they take the same decisions (convergence, cutbacks, active sets) from
+// what they sum, exchange or join. A run on one process uses no communicator.
 #pragma once
 
 #include <cstddef>
