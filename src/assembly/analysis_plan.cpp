@@ -287,7 +287,7 @@ class PlanBuilder {
   const Model& model_;
   AnalysisPlan& plan_;
   const PlanShare* share_;
-  ItemRange own_connectors_, own_springs_;  // the elements whose records this plan holds
+  ItemRange own_connectors_, own_springs_;            // the elements whose records this plan holds
   std::size_t next_connector_ = 0, next_spring_ = 0;  // in element order
   std::vector<ComponentMask> motions_;
   std::vector<std::vector<const Behavior*>> section_laws_;

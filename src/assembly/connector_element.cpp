@@ -211,7 +211,8 @@ EvalStatus ConnectorElements::evaluate(std::size_t c, const ElementContext& cont
     }
     if (!out.warning.empty()) {
       state.request.warnings.push_back(
-          {plan_.first_connector + c, fmt::format("connector element {}: {}", label(c), out.warning)});
+          {plan_.first_connector + c,
+           fmt::format("connector element {}: {}", label(c), out.warning)});
     }
     law_force += out.force;
     if (slot.law->force_kind() == ForceKind::Friction) friction += out.force;

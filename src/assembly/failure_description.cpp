@@ -25,8 +25,7 @@ std::string name_equation(const Model& model, const AnalysisPlan& plan, int equa
       for (int j = 0; j < r.multiplier_count; ++j) {
         if (r.local.equation[static_cast<std::size_t>(r.column_count + j)] != equation) continue;
         const Element& e = model.elements[static_cast<std::size_t>(r.element)];
-        return fmt::format("connector {} component {}",
-                           qualified_label(model, e.instance, e.label),
+        return fmt::format("connector {} component {}", qualified_label(model, e.instance, e.label),
                            r.multiplier_components[static_cast<std::size_t>(j)]);
       }
     }

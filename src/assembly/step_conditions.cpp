@@ -19,8 +19,8 @@ std::vector<double> component_values(const ConnectorSystem& system, const Keys& 
                                      const Quantity& quantity) {
   std::vector<ConnectorSystem::ComponentQuery> queries;
   for (const std::int64_t key : keys) {
-    queries.push_back({static_cast<std::size_t>(key / 8), static_cast<int>(key % 8),
-                       quantity(queries.size())});
+    queries.push_back(
+        {static_cast<std::size_t>(key / 8), static_cast<int>(key % 8), quantity(queries.size())});
   }
   return system.component_values(queries);
 }

@@ -225,15 +225,17 @@ int run_deck(const RunCommandOptions& options) {
   ConnectorSystem system(model, *plan);
   if (communicator) {
     system.distribute(*communicator, whole_tangent.empty());
-    log.info(
-        fmt::format("distributed over {} processes: each evaluates about {} connectors and "
-                    "{} springs; {}",
-                    communicator->size(),
-                    (plan->connector_total + communicator->size() - 1) / communicator->size(),
-                    (plan->spring_total + communicator->size() - 1) / communicator->size(),
-                    whole_tangent.empty()
-                        ? "each assembles its part of the tangent, which PETSc sums"
-                        : "each rank holds the whole tangent: " + whole_tangent));
+    std::string held = "each rank holds the whole tangent: " + whole_tangent;
+    if (whole_tangent.empty()) {
+      held = plan->shared ? "each holds the records and results of its own elements"
+                          : "each holds every element's results (whole-model energies)";
+      held += " and assembles its part of the tangent, which PETSc sums";
+    }
+    log.info(fmt::format(
+        "distributed over {} processes: each evaluates about {} connectors and {} springs; {}",
+        communicator->size(),
+        (plan->connector_total + communicator->size() - 1) / communicator->size(),
+        (plan->spring_total + communicator->size() - 1) / communicator->size(), held));
   }
   if (stopped_before_analysis("while planning the analysis", output_path(".sta"), log)) {
     return kExitStopped;

@@ -1,6 +1,7 @@
 // Assembly by rows (docs/parallel.md): a rank's plan holds its share of the connectors and
-// springs, and its pattern the entries of those elements and the diagonals of the rows it owns. Over the ranks the
-// shares are the whole plan and the parts cover the whole pattern, entry for entry.
+// springs, and its pattern the entries of those elements and the diagonals of the rows it owns.
+// Over the ranks the shares are the whole plan and the parts cover the whole pattern, entry for
+// entry.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
