@@ -5,8 +5,11 @@ say on stderr which file could not be written at which step and increment, never
 completion, and leave a history whose complete rows are the converged increments of the same
 run on a normal disk, with the status file not ahead of it.
 
-usage: full_disk.py CLINCH WORKDIR; exits with 77 (CTest SKIP_RETURN_CODE) when no size-limited
-filesystem can be mounted here."""
+With `--mpi N` both runs are `mpirun -n N ... --solver petsc` (a distributed model): rank 0
+writes the outputs, fails alone, and stops every rank at the same point (docs/parallel.md).
+
+usage: full_disk.py CLINCH WORKDIR [--mpi N]; exits with 77 (CTest SKIP_RETURN_CODE) when no
+size-limited filesystem can be mounted here."""
 
 import os
 import re
@@ -18,20 +21,23 @@ from run_output_lib import (check_history, job_files, last_line, read_lines, sta
                             write_chain_deck)
 
 SKIP = 77
-# Mounts a 64 kB tmpfs on $1, runs clinch ($2, deck $3, job full) into it, and copies what the
-# run wrote to $4 before the namespace and its mount go away.
+# Mounts a 64 kB tmpfs on $1, runs the command that follows $2 (clinch run and its deck) into it
+# (job full), and copies what the run wrote to $2 before the namespace and its mount go away.
 INSIDE = """
 mount -t tmpfs -o size=64k tmpfs "$1" || exit 125
-"$2" run --quiet --out "$1" --job full "$3" 2>"$4/stderr"
+mnt=$1 kept=$2
+shift 2
+"$@" --out "$mnt" --job full 2>"$kept/stderr"
 status=$?
-cp "$1"/full.* "$4"/
+cp "$mnt"/full.* "$kept"/
 exit $status
 """
 
 
-def fill(clinch, work, deck_options):
-    """Runs the deck that `deck_options` describe on a normal disk and on the small one; returns
-    the problems (a list), or None when no small filesystem can be mounted."""
+def fill(clinch, work, deck_options, launcher):
+    """Runs the deck that `deck_options` describe on a normal disk and on the small one, each
+    through `launcher` (a list: nothing, or mpirun and its options); returns the problems (a
+    list), or None when no small filesystem can be mounted."""
     shutil.rmtree(work, ignore_errors=True)
     mount_point, kept, normal = (os.path.join(work, d) for d in ("mnt", "kept", "normal"))
     for d in (mount_point, kept, normal):
@@ -39,9 +45,12 @@ def fill(clinch, work, deck_options):
     deck = os.path.join(work, "chain.inp")
     write_chain_deck(deck, **deck_options)
 
-    env = dict(os.environ, OPENBLAS_NUM_THREADS="1")
-    reference = subprocess.run([clinch, "run", "--quiet", "--out", normal, "--job", "full", deck],
-                               env=env)
+    env = dict(os.environ, OPENBLAS_NUM_THREADS="1", OMPI_ALLOW_RUN_AS_ROOT="1",
+               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    command = launcher + [clinch, "run", "--quiet", deck]
+    if launcher:
+        command += ["--solver", "petsc"]
+    reference = subprocess.run(command + ["--out", normal, "--job", "full"], env=env, timeout=600)
     if reference.returncode != 0:
         return [f"the run on a normal disk exited with {reference.returncode}"]
     reference_lines, _ = read_lines(job_files(normal, "full")["history.csv"])
@@ -50,8 +59,8 @@ def fill(clinch, work, deck_options):
     for unshare in (["unshare", "-m"], ["unshare", "-r", "-m"]):
         if shutil.which(unshare[0]) is None:
             break
-        run = subprocess.run(unshare + ["sh", "-c", INSIDE, "sh", mount_point, clinch, deck, kept],
-                             env=env, stderr=subprocess.DEVNULL)
+        run = subprocess.run(unshare + ["sh", "-c", INSIDE, "sh", mount_point, kept] + command,
+                             env=env, stderr=subprocess.DEVNULL, timeout=600)
         if run.returncode != 125 and os.path.exists(os.path.join(kept, "stderr")):
             status = run.returncode
             break
@@ -87,13 +96,16 @@ def fill(clinch, work, deck_options):
 
 def main():
     clinch, work = sys.argv[1], sys.argv[2]
+    launcher = []
+    if sys.argv[3:4] == ["--mpi"]:
+        launcher = ["mpirun", "--oversubscribe", "-n", sys.argv[4]]
     problems = []
     # A wide history fills the disk first; then a narrow one, written every 10 increments, where
     # the log and the status file do.
     for name, deck_options in (("wide", dict(connectors=40, increment=1e-3)),
                                ("narrow", dict(connectors=40, increment=1e-3, first_only=True,
                                                frequency=10))):
-        found = fill(clinch, os.path.join(work, name), deck_options)
+        found = fill(clinch, os.path.join(work, name), deck_options, launcher)
         if found is None:
             print("SKIP: cannot mount a size-limited tmpfs in a new mount namespace here "
                   "(needs root or unprivileged user namespaces)")
