@@ -169,6 +169,44 @@ class PlanBuilder {
     return plan_.stop_tables.back().get();
   }
 
+  // The components of connector element `e` that own a multiplier: constrained, prescribed by a
+  // connector motion, RIGID, with a stop or that a lock can hold.
+  ComponentMask multiplied_components(std::int32_t e, std::int32_t s,
+                                      const ConnectorSection& section,
+                                      const ConnectorBehavior* behavior) const {
+    ComponentMask multiplied = section.constrained | motions_[static_cast<std::size_t>(e)];
+    if (!behavior) return multiplied;
+    multiplied |= rigid_components(*behavior, section.available);
+    if (const ConnectorStops* stops = plan_.section_stops[static_cast<std::size_t>(s)]) {
+      for (int i = 1; i <= 6; ++i) {
+        const ConnectorStopLimits& stop = (*stops)[static_cast<std::size_t>(i - 1)];
+        if (stop.lower || stop.upper) multiplied |= component_bit(i);
+      }
+    }
+    for (const ConnectorLock& lock : behavior->locks) {
+      multiplied |= locked_components(lock, section.available);
+    }
+    return multiplied;
+  }
+
+  static ComponentMask locked_components(const ConnectorLock& lock, ComponentMask available) {
+    return lock.locked == 0 ? available : (component_bit(lock.locked) & available);
+  }
+
+  // One multiplier equation per component of `multiplied`, numbered in element order on every
+  // rank; `r` (null for another rank's connector) records them.
+  void number_multipliers(ComponentMask multiplied, ConnectorRecord* r) {
+    for (int i = 1; i <= 6; ++i) {
+      if (!has_component(multiplied, i)) continue;
+      const int eq = plan_.dofs.add_multiplier(i >= 4);
+      plan_.has_multipliers = true;
+      if (!r) continue;
+      r->multiplier_components[static_cast<std::size_t>(r->multiplier_count++)] =
+          static_cast<std::int8_t>(i);
+      r->local.equation[static_cast<std::size_t>(r->local.count++)] = eq;
+    }
+  }
+
   bool add_connector(std::int32_t e, std::string* error) {
     const Element& element = model_.elements[static_cast<std::size_t>(e)];
     const std::int32_t s = model_.sections.section_of_element[static_cast<std::size_t>(e)];
@@ -178,6 +216,20 @@ class PlanBuilder {
         section.behavior_index >= 0
             ? &model_.behaviors.behaviors[static_cast<std::size_t>(section.behavior_index)]
             : nullptr;
+    const std::size_t index = next_connector_++;
+    plan_.connector_of_element[static_cast<std::size_t>(e)] = static_cast<std::int32_t>(index);
+    const std::int32_t a = element.nodes[0], b = element.nodes[1];
+    const Vector3 xa = a >= 0 ? to_vector(model_.nodes[static_cast<std::size_t>(a)].x) : Vector3{};
+    const Vector3 xb = b >= 0 ? to_vector(model_.nodes[static_cast<std::size_t>(b)].x) : xa;
+    const Vector3 xa0 = a >= 0 ? xa : xb;  // a ground end sits at the other node (§1.2)
+    // What the whole model decides, from every connector on every rank.
+    plan_.length_scale = std::max(plan_.length_scale, (xb - xa0).stableNorm());
+    plan_.all_laws_symmetric = plan_.all_laws_symmetric && section_symmetric(s);
+    if (index < own_connectors_.begin || index >= own_connectors_.end) {
+      // Another rank's connector: only its multipliers, so that every rank numbers them alike.
+      number_multipliers(multiplied_components(e, s, section, behavior), nullptr);
+      return true;
+    }
     ConnectorRecord r;
     r.element = e;
     r.section = s;
@@ -187,10 +239,7 @@ class PlanBuilder {
 
     ConnectorSetup setup;
     setup.type_names = section.type_names;
-    const std::int32_t a = element.nodes[0], b = element.nodes[1];
-    const Vector3 xa = a >= 0 ? to_vector(model_.nodes[static_cast<std::size_t>(a)].x) : Vector3{};
-    const Vector3 xb = b >= 0 ? to_vector(model_.nodes[static_cast<std::size_t>(b)].x) : xa;
-    setup.xa0 = a >= 0 ? xa : xb;  // a ground end sits at the other node (connection-types.md §1.2)
+    setup.xa0 = xa0;
     setup.xb0 = xb;
     setup.ea0 = Matrix3::Identity();
     for (int end = 0; end < 2; ++end) {
@@ -207,29 +256,20 @@ class PlanBuilder {
     setup.length_tolerance = length_tolerance_;
     setup.linearised = plan_.small_displacement;
     std::string why;
-    // Every rank checks every connector's kinematics, so that all of them report the same first
-    // error, and numbers every multiplier; it keeps the records of its own share.
+    // A rank checks the kinematics of its own connectors: the first error of the model is that
+    // of the lowest rank that meets one (run_command.cpp).
     std::optional<ConnectorKinematics> kinematics = ConnectorKinematics::create(setup, &why);
     if (!kinematics) {
       *error = fmt::format("connector element {}: {}",
                            qualified_label(model_, element.instance, element.label), why);
       return false;
     }
-    plan_.length_scale = std::max(plan_.length_scale, (setup.xb0 - setup.xa0).stableNorm());
-    plan_.all_laws_symmetric = plan_.all_laws_symmetric && section_symmetric(s);
-    const std::size_t index = next_connector_++;
-    const bool own = index >= own_connectors_.begin && index < own_connectors_.end;
-    plan_.connector_of_element[static_cast<std::size_t>(e)] = static_cast<std::int32_t>(index);
+    r.kinematics = plan_.kinematics.size();
     r.reference = kinematics->initial_position();
-    if (own) {
-      r.kinematics = plan_.kinematics.size();
-      plan_.kinematics.push_back(std::move(*kinematics));
-    }
+    plan_.kinematics.push_back(std::move(*kinematics));
 
-    ComponentMask multiplied = r.constrained | motions_[static_cast<std::size_t>(e)];
     if (behavior) {
       r.rigid = rigid_components(*behavior, r.available);
-      multiplied |= r.rigid;
       if (behavior->reference) {
         for (int i = 0; i < 6; ++i) {
           const auto& v = behavior->reference->value[static_cast<std::size_t>(i)];
@@ -237,15 +277,8 @@ class PlanBuilder {
         }
       }
       r.stops = plan_.section_stops[static_cast<std::size_t>(s)];
-      for (int i = 1; i <= 6; ++i) {
-        const ConnectorStopLimits& stop = r.stop(i);
-        if (stop.lower || stop.upper) multiplied |= component_bit(i);
-      }
       for (const ConnectorLock& lock : behavior->locks) {
-        const ComponentMask locks =
-            lock.locked == 0 ? r.available : (component_bit(lock.locked) & r.available);
-        r.locks.push_back({lock.component, locks, lock.bounds});
-        multiplied |= locks;
+        r.locks.push_back({lock.component, locked_components(lock, r.available), lock.bounds});
       }
       // §5.3: RELEASE=ALL frees every available component, never a constrained one.
       for (const ConnectorFailure& failure : behavior->failures) {
@@ -261,15 +294,7 @@ class PlanBuilder {
       r.columns[static_cast<std::size_t>(r.column_count++)] = static_cast<std::int8_t>(c);
       r.local.equation[static_cast<std::size_t>(r.local.count++)] = eq;
     }
-    for (int i = 1; i <= 6; ++i) {
-      if (!has_component(multiplied, i)) continue;
-      r.multiplier_components[static_cast<std::size_t>(r.multiplier_count++)] =
-          static_cast<std::int8_t>(i);
-      r.local.equation[static_cast<std::size_t>(r.local.count++)] =
-          plan_.dofs.add_multiplier(i >= 4);
-      plan_.has_multipliers = true;
-    }
-    if (!own) return true;
+    number_multipliers(multiplied_components(e, s, section, behavior), &r);
     plan_.connectors.push_back(std::move(r));
     for (const Behavior* law : laws_of_section(s)) plan_.add_law(plan_.connectors.size() - 1, *law);
     return true;

@@ -194,6 +194,14 @@ int run_deck(const RunCommandOptions& options) {
     if (whole_tangent.empty()) share = PlanShare{communicator->rank(), communicator->size()};
   }
   std::optional<AnalysisPlan> plan = build_analysis_plan(model, &error, share ? &*share : nullptr);
+  if (share) {
+    // Each rank checked the connectors of its own share, in element order: the model's first
+    // error is that of the lowest rank that met one.
+    if (const int failing = communicator->first(!plan); failing < communicator->size()) {
+      error = communicator->broadcast(error, failing);
+      plan.reset();
+    }
+  }
   if (!plan) {
     log.error(fmt::format("{}: error: {}", deck_name, error));
     return kExitDeckErrors;

@@ -107,7 +107,9 @@ TEST(RowAssembly, RankSharesOfTheElementsAndPatternPartsMakeTheWhole) {
     EXPECT_EQ(part.matrix.first_owned_row, next_row);
     next_row += part.matrix.owned_rows;
     for (int i = 0; i < n; ++i) {
-      if (part.matrix.owns_row(i)) EXPECT_GE(part.diagonal[static_cast<std::size_t>(i)], 0) << i;
+      if (part.matrix.owns_row(i)) {
+        EXPECT_GE(part.diagonal[static_cast<std::size_t>(i)], 0) << i;
+      }
     }
     const Entries mine = entries_of(part.matrix);
     for (const auto& entry : mine) EXPECT_TRUE(entries_of(whole_pattern.matrix).count(entry));
@@ -137,6 +139,34 @@ TEST(RowAssembly, RankSharesOfTheElementsAndPatternPartsMakeTheWhole) {
   std::vector<std::int32_t> all;
   for (const SpringRecord& s : whole->springs) all.push_back(s.element);
   EXPECT_EQ(elements, all);
+}
+
+// A connector that cannot be set up (a LINK of zero length, which `check` reports first) stops
+// only the plan of the rank that holds it, with the error the whole plan gives: the run takes
+// that of the lowest failing rank (run_command.cpp), the first in element order.
+TEST(RowAssembly, AConnectorThatCannotBeSetUpFailsTheRankThatHoldsIt) {
+  CheckedDeck deck;
+  read_deck_text("link.inp",
+                 "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n3, 1., 0., 0.\n"
+                 "*ELEMENT, TYPE=CONN3D2, ELSET=A\n1, 1, 2\n2, 1, 3\n"
+                 "*ELEMENT, TYPE=CONN3D2, ELSET=L\n3, 2, 3\n"
+                 "*CONNECTOR SECTION, ELSET=A\nAXIAL,\n*CONNECTOR SECTION, ELSET=L\nLINK,\n"
+                 "*BOUNDARY\n1, 1, 3\n*STEP\n*STATIC\n*END STEP\n",
+                 deck.sources, deck.model, deck.sink);
+  ASSERT_TRUE(deck.first(DiagCode::link_zero_length)) << deck.dump();
+  std::string whole_error;
+  ASSERT_FALSE(build_analysis_plan(deck.model, &whole_error));
+  EXPECT_NE(whole_error.find("connector element 3: link-zero-length"), std::string::npos)
+      << whole_error;
+  for (int rank = 0; rank < 3; ++rank) {
+    const PlanShare share{rank, 3};
+    std::string error;
+    const std::optional<AnalysisPlan> plan = build_analysis_plan(deck.model, &error, &share);
+    EXPECT_EQ(plan.has_value(), rank != 2) << rank;
+    if (!plan) {
+      EXPECT_EQ(error, whole_error);
+    }
+  }
 }
 
 // Rank `rank` of `ranks` with nothing to exchange: each system keeps what its own elements put
