@@ -91,7 +91,7 @@ class PlanBuilder {
         }));
     own_connectors_ = {0, plan_.connector_total};
     own_springs_ = {0, plan_.spring_total};
-    if (share_ && share_->ranks > 1 && !plan_.energies) {
+    if (share_ && share_->ranks > 1) {
       plan_.shared = true;
       own_connectors_ = share_of(plan_.connector_total, share_->rank, share_->ranks);
       own_springs_ = share_of(plan_.spring_total, share_->rank, share_->ranks);

@@ -193,9 +193,7 @@ struct AnalysisPlan {
 // Builds the plan of a validated model (no errors). Returns nullopt with `error` when the model
 // asks for something clinch run cannot do yet. With `share` (a distributed model under assembly
 // by rows, docs/parallel.md), the plan of rank `rank` of `ranks`: the records of its share of
-// the connectors and of the springs (share_of of each, in element order), unless the run keeps
-// the whole-model energies (their dashpot and connector work reads every element; so does every
-// *DYNAMIC step, the only one with prescribed rates of connectors).
+// the connectors and of the springs (share_of of each, in element order).
 // The record of spring element `e` of the model (a rank's plan holds only its share of them).
 SpringRecord spring_record(const Model& model, const DofMap& dofs, std::int32_t e);
 

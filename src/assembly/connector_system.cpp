@@ -999,12 +999,10 @@ double ConnectorSystem::converged_component(std::size_t connector, int component
   return order == 0 ? r.value[i] : order == 1 ? r.velocity[i] : r.acceleration[i];
 }
 
-double ConnectorSystem::component_value_of_rate(std::size_t connector, int component, int order,
-                                                double rate) const {
-  const double u0 = converged_component(connector, component, 0);
+double ConnectorSystem::value_of_rate(double u0, double v0, double a0, int order,
+                                      double rate) const {
   if (!newmark_ || newmark_->dt <= 0.0) return u0;
-  return newmark_->value_of_rate(u0, converged_component(connector, component, 1),
-                                 converged_component(connector, component, 2), order, rate);
+  return newmark_->value_of_rate(u0, v0, a0, order, rate);
 }
 
 ModelEnergies ConnectorSystem::energies() const {

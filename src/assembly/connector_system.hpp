@@ -171,11 +171,10 @@ class ConnectorSystem final : public NonlinearProblem {
   // TYPE=VELOCITY or ACCELERATION; docs/dynamics.md); the converged value outside a dynamic
   // increment.
   double displacement_of_rate(int equation, int order, double rate) const;
-  // The same for component `component` (1–6) of `connector`, whose value is its CU: the CU at
-  // the end of the increment whose relative velocity (CV, order 1) or acceleration (CA, order
-  // 2) there is `rate` (*CONNECTOR MOTION, TYPE=VELOCITY or ACCELERATION; docs/dynamics.md).
-  double component_value_of_rate(std::size_t connector, int component, int order,
-                                 double rate) const;
+  // The same for a quantity whose converged value, rate and acceleration are u0, v0 and a0: a
+  // connector component's CU, CV and CA (*CONNECTOR MOTION, TYPE=VELOCITY or ACCELERATION;
+  // docs/dynamics.md; component_values asks for them).
+  double value_of_rate(double u0, double v0, double a0, int order, double rate) const;
   // The converged CU (order 0), CV (1) or CA (2) of that component (a connector whose record
   // this rank's plan holds).
   double converged_component(std::size_t connector, int component, int order) const;

@@ -65,7 +65,10 @@ void ConnectorSystem::distribute(Communicator& communicator, bool by_rows) {
   by_rows_ = by_rows;
   // A plan with a share of the elements (build_analysis_plan) holds only this rank's: it
   // evaluates all of them and keeps their results.
-  if (plan_.shared) return;
+  if (plan_.shared) {
+    if (energy_) energy_->share_elements(communicator);
+    return;
+  }
   const int size = communicator.size();
   owned_connectors_ = share_of(plan_.connectors.size(), communicator.rank(), size);
   owned_springs_ = share_of(plan_.spring_total, communicator.rank(), size);

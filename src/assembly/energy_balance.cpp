@@ -5,8 +5,7 @@
 
 namespace clinch {
 
-EnergyBalance::EnergyBalance(int node_equations, std::size_t connectors,
-                             std::vector<bool> dashpots)
+EnergyBalance::EnergyBalance(int node_equations, std::size_t connectors, std::vector<bool> dashpots)
     : dashpots_(std::move(dashpots)),
       internal_n_(Eigen::VectorXd::Zero(node_equations)),
       external_n_(internal_n_),
@@ -31,6 +30,12 @@ void EnergyBalance::add_increment(const Eigen::VectorXd& dx, const EnergyForces&
     if (!dashpots_[s]) continue;
     viscous += 0.5 * (springs_n_[s].force + now.springs[s].force) *
                (now.springs[s].delta - springs_n_[s].delta);
+  }
+  if (ranks_) {
+    double parts[2] = {frictional, viscous};
+    ranks_->sum(parts);
+    frictional = parts[0];
+    viscous = parts[1];
   }
   if (now.stabilization) {
     energies_.stabilization +=

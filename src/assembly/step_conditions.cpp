@@ -393,14 +393,26 @@ void StepConditions::push(ConnectorSystem& system, const Value& value) const {
     const int eq = plan_.dofs.equation(p.node, d + 1);
     if (eq >= 0) conditions.add_load(eq, p.mass[d] * value(c));
   }
+  // A prescribed rate (a *DYNAMIC step's TYPE=VELOCITY or ACCELERATION) moves the component
+  // from its converged CU, CV and CA, asked for all of them at once.
+  std::vector<std::int64_t> rate_keys;
   for (const auto& [key, c] : motions_) {
-    const auto connector = static_cast<std::size_t>(key / 8);
-    const int component = static_cast<int>(key % 8);
-    conditions.prescribe_motion(
-        static_cast<int>(connector), component,
-        c.rate_order == 0
-            ? value(c)
-            : system.component_value_of_rate(connector, component, c.rate_order, value(c)));
+    if (c.rate_order != 0) rate_keys.insert(rate_keys.end(), {key, key, key});
+  }
+  const std::vector<double> converged =
+      rate_keys.empty() ? std::vector<double>()
+                        : component_values(system, rate_keys, [](std::size_t k) {
+                            return static_cast<Query::Quantity>(k % 3);
+                          });
+  std::size_t k = 0;
+  for (const auto& [key, c] : motions_) {
+    double target = value(c);
+    if (c.rate_order != 0) {
+      target = system.value_of_rate(converged[k], converged[k + 1], converged[k + 2], c.rate_order,
+                                    target);
+      k += 3;
+    }
+    conditions.prescribe_motion(static_cast<int>(key / 8), static_cast<int>(key % 8), target);
   }
   for (const Table* table : {&connector_loads_, &released_connector_loads_}) {
     for (const auto& [key, c] : *table) {

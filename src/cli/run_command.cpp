@@ -233,12 +233,11 @@ int run_deck(const RunCommandOptions& options) {
   ConnectorSystem system(model, *plan);
   if (communicator) {
     system.distribute(*communicator, whole_tangent.empty());
-    std::string held = "each rank holds the whole tangent: " + whole_tangent;
-    if (whole_tangent.empty()) {
-      held = plan->shared ? "each holds the records and results of its own elements"
-                          : "each holds every element's results (whole-model energies)";
-      held += " and assembles its part of the tangent, which PETSc sums";
-    }
+    const std::string held =
+        whole_tangent.empty()
+            ? "each holds the records and results of its own elements and assembles its part of "
+              "the tangent, which PETSc sums"
+            : "each rank holds the whole tangent: " + whole_tangent;
     log.info(fmt::format(
         "distributed over {} processes: each evaluates about {} connectors and {} springs; {}",
         communicator->size(),
