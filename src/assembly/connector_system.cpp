@@ -884,12 +884,10 @@ std::string ConnectorSystem::failure_note(int failed_equation, bool riks) const 
     return {};
   };
   // The first connector in element order: that of the lowest rank that has one.
-  if (const std::vector<std::string> notes = lines_of_every_rank({next_to_node()});
-      !notes.empty()) {
-    const auto first = std::find_if(notes.begin(), notes.end(),
-                                    [](const std::string& note) { return !note.empty(); });
-    if (first != notes.end()) return *first;
-  }
+  const std::vector<std::string> notes = lines_of_every_rank({next_to_node()});
+  const auto first = std::find_if(notes.begin(), notes.end(),
+                                  [](const std::string& note) { return !note.empty(); });
+  if (first != notes.end()) return *first;
   // Softening needs a damage law, which keeps the whole plan on every rank
   // (whole_tangent_need.cpp).
   double largest = 0, growth = 0;
