@@ -180,26 +180,23 @@ struct AnalysisPlan {
   void add_law(std::size_t c, const Behavior& law);
   // True when every law of every connector returns a symmetric tangent.
   bool laws_symmetric() const { return all_laws_symmetric; }
-  bool springs_shared() const { return shared; }
-  bool connectors_shared() const { return shared; }
   const SpringRecord& spring(std::size_t s) const { return springs[s - first_spring]; }
   // Connector `c` (global index), of those whose records this plan holds.
   bool holds_connector(std::size_t c) const {
     return c >= first_connector && c < first_connector + connectors.size();
   }
-  const ConnectorRecord& connector(std::size_t c) const { return connectors[c - first_connector]; }
 };
 
-// Builds the plan of a validated model (no errors). Returns nullopt with `error` when the model
-// asks for something clinch run cannot do yet. With `share` (a distributed model under assembly
-// by rows, docs/parallel.md), the plan of rank `rank` of `ranks`: the records of its share of
-// the connectors and of the springs (share_of of each, in element order).
 // The record of spring element `e` of the model (a rank's plan holds only its share of them).
 SpringRecord spring_record(const Model& model, const DofMap& dofs, std::int32_t e);
 
 struct PlanShare {
   int rank = 0, ranks = 1;
 };
+// Builds the plan of a validated model (no errors). Returns nullopt with `error` when the model
+// asks for something clinch run cannot do yet. With `share` (a distributed model under assembly
+// by rows, docs/parallel.md), the plan of rank `rank` of `ranks`: the records of its share of
+// the connectors and of the springs (share_of of each, in element order).
 std::optional<AnalysisPlan> build_analysis_plan(const Model& model, std::string* error,
                                                 const PlanShare* share = nullptr);
 

@@ -18,7 +18,7 @@ AssemblyPattern build_assembly_pattern(const AnalysisPlan& plan, bool symmetric,
   const DependentDofs& dependents = plan.dependents;
   const int n = dependents.solved_count(plan.dofs);
   const int node_block = dependents.solved_node_block(plan.dofs);
-  if (!share && plan.springs_shared()) {
+  if (!share && plan.shared) {
     throw std::logic_error("build_assembly_pattern: the whole pattern of a rank's plan");
   }
   const ItemRange rows = share ? owned_rows(n, node_block, share->rank, share->ranks)

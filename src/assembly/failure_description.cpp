@@ -31,7 +31,7 @@ std::string name_equation(const Model& model, const AnalysisPlan& plan, int equa
     }
     return {};
   };
-  if (!plan.connectors_shared() || !every_rank) return multiplier_of();
+  if (!plan.shared || !every_rank) return multiplier_of();
   // The rank whose share holds the multiplier's connector names it.
   for (std::string& name : every_rank({multiplier_of()})) {
     if (!name.empty()) return std::move(name);
@@ -89,7 +89,7 @@ Holding elements_holding(const Model& model, const AnalysisPlan& plan, int equat
       }
     }
   }
-  if (plan.connectors_shared() && every_rank) {
+  if (plan.shared && every_rank) {
     // The connectors of every rank's share, in element order.
     std::vector<std::string> labels;
     for (auto& [kind, label] : found) labels.push_back(std::move(label));
@@ -106,7 +106,7 @@ Holding elements_holding(const Model& model, const AnalysisPlan& plan, int equat
       }
     }
   };
-  if (plan.springs_shared()) {
+  if (plan.shared) {
     // A rank's plan holds only its share of the springs: every rank names them all, from the
     // model, so that the ranks agree on the message.
     for (std::size_t e = 0; e < plan.spring_of_element.size(); ++e) {

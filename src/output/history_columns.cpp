@@ -456,7 +456,7 @@ double HistoryColumns::value(const Column& c, ConnectorSystem& system, RankPart&
       case Source::Connector: {
         // Under a plan with a share of the connectors only the rank that holds one has its
         // results.
-        const bool shared = plan_.connectors_shared();
+        const bool shared = plan_.shared;
         part.present = part.present || shared;
         if (!system.holds_connector(static_cast<std::size_t>(t.index))) break;
         // The connector's results once per run of its columns: an element has many.

@@ -81,7 +81,7 @@ TEST(RowAssembly, RankSharesOfTheElementsAndPatternPartsMakeTheWhole) {
   const std::optional<AnalysisPlan>& whole = square.whole;
   std::string error;
   ASSERT_EQ(whole->spring_total, 12u);
-  ASSERT_FALSE(whole->springs_shared());
+  ASSERT_FALSE(whole->shared);
   const AssemblyPattern whole_pattern = build_assembly_pattern(*whole, true);
   const int n = whole_pattern.matrix.n;
   constexpr int kRanks = 3;
@@ -95,7 +95,7 @@ TEST(RowAssembly, RankSharesOfTheElementsAndPatternPartsMakeTheWhole) {
     ASSERT_TRUE(plan) << error;
     EXPECT_EQ(plan->spring_total, whole->spring_total);
     EXPECT_EQ(plan->springs.size(), 4u);  // 12 springs over 3 ranks
-    EXPECT_TRUE(plan->springs_shared());
+    EXPECT_TRUE(plan->shared);
     for (const SpringRecord& s : plan->springs) elements.push_back(s.element);
     const ItemRange springs{plan->first_spring, plan->first_spring + plan->springs.size()};
     const RowAssemblyShare rows{{0, plan->connectors.size()}, springs, rank, kRanks};
