@@ -4,6 +4,7 @@
 // zero norm. A NaN makes the norm NaN and an infinity makes it infinite.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -25,6 +26,31 @@ class ScaledNorm {
       const double r = a / scale_;
       sum_ += r * r;
     }
+  }
+  // The norm of this one's values and those `other` was given (another process's share).
+  void merge(const ScaledNorm& other) {
+    nan_ = nan_ || other.nan_;
+    infinite_ = infinite_ || other.infinite_;
+    if (other.scale_ > scale_) {
+      const double r = scale_ / other.scale_;
+      sum_ = other.sum_ + sum_ * r * r;
+      scale_ = other.scale_;
+    } else if (other.scale_ > 0.0) {
+      const double r = other.scale_ / scale_;
+      sum_ += other.sum_ * r * r;
+    }
+  }
+  // The state as four numbers, and back (to send it to another process).
+  std::array<double, 4> parts() const {
+    return {scale_, sum_, nan_ ? 1.0 : 0.0, infinite_ ? 1.0 : 0.0};
+  }
+  static ScaledNorm of_parts(const double* parts) {
+    ScaledNorm n;
+    n.scale_ = parts[0];
+    n.sum_ = parts[1];
+    n.nan_ = parts[2] != 0.0;
+    n.infinite_ = parts[3] != 0.0;
+    return n;
   }
   double value() const {
     if (nan_) return std::numeric_limits<double>::quiet_NaN();

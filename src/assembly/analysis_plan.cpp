@@ -378,6 +378,9 @@ std::optional<AnalysisPlan> build_analysis_plan(const Model& model, std::string*
   if (!PlanBuilder(model, plan, share).build(error)) return std::nullopt;
   if (!build_dependent_dofs(model, plan.dofs, plan.dependents, error)) return std::nullopt;
   expand_constrained_elements(plan);
+  if (share && share->ranks > 1 && share->local_vectors && whole_vectors_need(plan).empty()) {
+    localize_equations(plan, share->rank, share->ranks);
+  }
   return plan;
 }
 

@@ -15,6 +15,7 @@
 
 #include "src/assembly/dependent_dofs.hpp"
 #include "src/assembly/dof_map.hpp"
+#include "src/assembly/equation_layout.hpp"
 #include "src/assembly/nodal_inertia.hpp"
 #include "src/behavior/behavior.hpp"
 #include "src/behavior/elastic/spring_law.hpp"
@@ -175,6 +176,9 @@ struct AnalysisPlan {
   bool all_laws_symmetric = true;
   // This plan holds one rank's share of the connectors and springs (build_analysis_plan).
   bool shared = false;
+  // Which equations the vectors of this rank run over: with layout.local, those of its own rows
+  // and the ghosts its elements read, numbered by `dofs` (equation_layout.hpp).
+  EquationLayout layout;
 
   // Appends `law` to the stack of connector record `c`, with history of its own.
   void add_law(std::size_t c, const Behavior& law);
@@ -192,11 +196,14 @@ SpringRecord spring_record(const Model& model, const DofMap& dofs, std::int32_t 
 
 struct PlanShare {
   int rank = 0, ranks = 1;
+  // The vectors by rows too, where nothing needs them whole (whole_vectors_need).
+  bool local_vectors = false;
 };
 // Builds the plan of a validated model (no errors). Returns nullopt with `error` when the model
 // asks for something clinch run cannot do yet. With `share` (a distributed model under assembly
 // by rows, docs/parallel.md), the plan of rank `rank` of `ranks`: the records of its share of
-// the connectors and of the springs (share_of of each, in element order).
+// the connectors and of the springs (share_of of each, in element order), over the rank's own
+// equations when the share asks for local vectors and nothing needs them whole.
 std::optional<AnalysisPlan> build_analysis_plan(const Model& model, std::string* error,
                                                 const PlanShare* share = nullptr);
 

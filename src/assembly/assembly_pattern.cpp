@@ -21,8 +21,11 @@ AssemblyPattern build_assembly_pattern(const AnalysisPlan& plan, bool symmetric,
   if (!share && plan.shared) {
     throw std::logic_error("build_assembly_pattern: the whole pattern of a rank's plan");
   }
-  const ItemRange rows = share ? owned_rows(n, node_block, share->rank, share->ranks)
-                               : ItemRange{0, static_cast<std::size_t>(n)};
+  // Over a rank's local equations its owned rows come first (equation_layout.hpp).
+  const EquationLayout& layout = plan.layout;
+  const ItemRange rows = layout.local ? ItemRange{0, static_cast<std::size_t>(layout.owned)}
+                         : share      ? owned_rows(n, node_block, share->rank, share->ranks)
+                                      : ItemRange{0, static_cast<std::size_t>(n)};
   const ItemRange connectors = share ? share->connectors : ItemRange{0, plan.connectors.size()};
   const ItemRange springs =
       share ? share->springs
@@ -88,10 +91,16 @@ AssemblyPattern build_assembly_pattern(const AnalysisPlan& plan, bool symmetric,
     if (owns_some(solved_read)) builder.couple(solved_read);
   }
   p.matrix = builder.build();
-  p.matrix.node_block = node_block;
+  p.matrix.node_block = layout.local ? layout.node_block : node_block;
   if (share) {
     p.matrix.first_owned_row = static_cast<int>(rows.begin);
     p.matrix.owned_rows = static_cast<int>(rows.end - rows.begin);
+  }
+  if (layout.local) {
+    p.matrix.global_equation.resize(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) p.matrix.global_equation[static_cast<std::size_t>(i)] = layout.global_of(i);
+    p.matrix.global_n = layout.global_count;
+    p.matrix.global_first_row = layout.first_owned;
   }
   p.positions.reserve(local_entries);
   auto place = [&](std::span<const int> l) {

@@ -121,14 +121,33 @@ std::string ConnectorStepProblem::check_tangent(int step, int increment) {
   return clinch::check_tangent(system_, step, increment);
 }
 
+int ConnectorStepProblem::equation_named(int solved) const {
+  if (solved < 0) return -1;
+  if (system_.vectors_by_rows()) return system_.plan().layout.local_of(solved);
+  return system_.equation_of_solved(solved);
+}
+
 std::string ConnectorStepProblem::describe_failure(const NewtonReport& report) const {
-  NewtonReport named = report;  // Newton names a solved equation
-  if (named.failed_equation >= 0) {
-    named.failed_equation = system_.equation_of_solved(named.failed_equation);
+  NewtonReport named = report;
+  named.failed_equation = equation_named(report.failed_equation);
+  if (!system_.vectors_by_rows()) {
+    return clinch::describe_failure(
+        model_, system_.plan(), named,
+        [&](std::vector<std::string> mine) { return system_.lines_of_every_rank(std::move(mine)); });
   }
-  return clinch::describe_failure(
-      model_, system_.plan(), named,
-      [&](std::vector<std::string> mine) { return system_.lines_of_every_rank(std::move(mine)); });
+  // Under vectors by rows the rank that owns the equation's row describes it from what it holds,
+  // and every rank reports that description.
+  const auto as_held = [](std::vector<std::string> mine) { return mine; };
+  const EquationLayout& layout = system_.plan().layout;
+  const bool owner = named.failed_equation >= 0 && layout.owns(named.failed_equation);
+  if (!owner) named.failed_equation = -1;
+  const std::string mine =
+      owner ? clinch::describe_failure(model_, system_.plan(), named, as_held) : std::string();
+  for (std::string& line : system_.lines_of_every_rank({mine})) {
+    if (!line.empty()) return std::move(line);
+  }
+  named.failed_equation = -1;
+  return clinch::describe_failure(model_, system_.plan(), named, as_held);
 }
 
 }  // namespace clinch

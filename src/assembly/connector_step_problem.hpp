@@ -53,10 +53,10 @@ class ConnectorStepProblem final : public StepProblem {
   StepRequest step_request() const override { return system_.step_request(); }
 
   std::string describe_failure(const NewtonReport& report) const override;
-  // Newton names a solved equation (connector_system.hpp).
+  // Newton names a solved equation (connector_system.hpp), by its global number under vectors by
+  // rows.
   std::string failure_note(int failed_equation) const override {
-    return system_.failure_note(
-        failed_equation < 0 ? failed_equation : system_.equation_of_solved(failed_equation), riks_);
+    return system_.failure_note(equation_named(failed_equation), riks_);
   }
 
  private:
@@ -71,6 +71,9 @@ class ConnectorStepProblem final : public StepProblem {
   double step_time_ = 0.0;              // the same in the step
   // The step time `step_time` with the analysis time it falls at.
   StepConditions::Time time_of(double step_time) const;
+  // The equation of this rank's plan Newton's solved equation `solved` stands for (−1 when none,
+  // or when under vectors by rows this rank does not hold it).
+  int equation_named(int solved) const;
   double load_factor_ = 1.0;  // τ where the step's conditions end (1 but in a Riks step)
 };
 

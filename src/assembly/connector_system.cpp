@@ -361,6 +361,8 @@ void ConnectorSystem::update_prescribed_predictor() {
   for (int eq : conditions_.prescribed()) {
     predicting_ = predicting_ || state_.x[eq] != conditions_.target(eq);
   }
+  // Under vectors by rows a rank holds the prescribed DOFs of its own rows and ghosts only.
+  if (halo_) predicting_ = communicator_->first(predicting_) < communicator_->size();
 }
 
 void ConnectorSystem::snap_prescribed_rotations() {
@@ -701,13 +703,16 @@ void ConnectorSystem::finish_prescribed_correction(const Eigen::VectorXd& dx) {
 void ConnectorSystem::measure(const Eigen::VectorXd& residual, const Eigen::VectorXd* correction,
                               IterationNorms& norms) const {
   // q̃ (keywords.md §16 field 1): the entries of the elements, then the applied loads.
-  ForceEntries entries = element_forces_;
+  // Under vectors by rows each rank measures its own rows, the loads on them among the entries,
+  // and join_norms joins the ranks' measures.
+  ForceEntries entries = element_forces_, own_loads;
+  ForceEntries& loads = halo_ ? own_loads : entries;
   ScaledNorm residual_norm, correction_norm;
   const DependentDofs& dependents = plan_.dependents;
   for (const DependentDof& d : dependents.dofs) {  // loads on dependent DOFs, which have no row
     entries.add(force_field(d.equation), std::abs(conditions_.external()[d.equation]));
   }
-  for (int i = 0; i < size(); ++i) {
+  for (int i = 0; i < owned_size(); ++i) {
     const int eq = dependents.equation(i);
     const EquationField field = plan_.dofs.field(eq);
     if (field == EquationField::TranslationalMultiplier ||
@@ -721,7 +726,7 @@ void ConnectorSystem::measure(const Eigen::VectorXd& residual, const Eigen::Vect
       continue;
     }
     const int f = field == EquationField::Translation ? 0 : 1;
-    entries.add(f, std::abs(conditions_.external()[eq]));
+    loads.add(f, std::abs(conditions_.external()[eq]));
     if (conditions_.is_prescribed(eq)) continue;
     norms.largest_residual[f] = max_keeping_nan(norms.largest_residual[f], std::abs(residual[i]));
     residual_norm.add(residual[i]);
@@ -731,6 +736,13 @@ void ConnectorSystem::measure(const Eigen::VectorXd& residual, const Eigen::Vect
       const double dx = (*correction)[i];
       norms.largest_correction[f] = max_keeping_nan(norms.largest_correction[f], std::abs(dx));
       correction_norm.add(dx);
+    }
+  }
+  if (halo_) {
+    join_norms(norms, own_loads, residual_norm, correction_norm);
+    for (int f = 0; f < 2; ++f) {
+      entries.sum[f] += own_loads.sum[f];
+      entries.count[f] += own_loads.count[f];
     }
   }
   for (int f = 0; f < 2; ++f) norms.flux[f] = entries.mean(f);
@@ -953,12 +965,12 @@ NonlinearProblem::DamageChange ConnectorSystem::damage_change() const {
 
 double ConnectorSystem::nodal_value(std::int32_t node, int dof) const {
   const int eq = plan_.dofs.equation(node, dof);
-  return eq >= 0 ? state_.x[eq] : 0.0;
+  return reports(eq) ? state_.x[eq] : 0.0;
 }
 
 double ConnectorSystem::reaction(std::int32_t node, int dof) const {
   const int eq = plan_.dofs.equation(node, dof);
-  if (eq < 0 || !conditions_.is_prescribed(eq)) return 0.0;
+  if (!reports(eq) || !conditions_.is_prescribed(eq)) return 0.0;
   return holding_force(eq) - conditions_.external()[eq];
 }
 
@@ -971,7 +983,7 @@ double ConnectorSystem::holding_force(int eq) const {
 double ConnectorSystem::nodal_rate(std::int32_t node, int dof, int order) const {
   const int eq = plan_.dofs.equation(node, dof);
   const Eigen::VectorXd& rate = order == 1 ? state_.v : state_.a;
-  return eq >= 0 && eq < rate.size() ? rate[eq] : 0.0;
+  return reports(eq) && eq < rate.size() ? rate[eq] : 0.0;
 }
 
 double ConnectorSystem::converged_rate(int equation, int order) const {
@@ -1021,7 +1033,7 @@ EnergyForces ConnectorSystem::energy_forces() {
 
 double ConnectorSystem::applied_load(std::int32_t node, int dof) const {
   const int eq = plan_.dofs.equation(node, dof);
-  return eq >= 0 ? conditions_.external()[eq] : 0.0;
+  return reports(eq) ? conditions_.external()[eq] : 0.0;
 }
 
 ConnectorOutput ConnectorSystem::connector_output(std::size_t global) const {

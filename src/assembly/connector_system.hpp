@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "base/scaled_norm.hpp"
 #include "src/assembly/analysis_state.hpp"
 #include "src/assembly/assembly_pattern.hpp"
 #include "src/assembly/connector_element.hpp"
@@ -21,6 +22,7 @@
 #include "src/assembly/spring_element.hpp"
 #include "src/assembly/stabilization_damping.hpp"
 #include "src/parallel/communicator.hpp"
+#include "src/parallel/halo_exchange.hpp"
 #include "src/solver/nonlinear_problem.hpp"
 
 namespace clinch {
@@ -106,6 +108,12 @@ class ConnectorSystem final : public NonlinearProblem {
   bool moving_prescribed() const override { return predicting_; }
   void measure(const Eigen::VectorXd& residual, const Eigen::VectorXd* correction,
                IterationNorms& norms) const override;
+  // Vectors by rows (docs/parallel.md): the owned rows of this rank, the reductions over the
+  // ranks and the global number of a solved equation.
+  int owned_size() const override { return halo_ ? halo_->owned() : size(); }
+  double sum_over_ranks(double mine) const override;
+  double max_over_ranks(double mine) const override;
+  int global_equation(int solved) const override { return plan_.layout.global_of(solved); }
   // Translations count as they are, rotations times L̄, multipliers not at all (docs/riks.md).
   void path_weights(Eigen::VectorXd& weights) const override;
   // The LPF history column (docs/riks.md): a Riks step's load proportionality factor; in other
@@ -135,6 +143,9 @@ class ConnectorSystem final : public NonlinearProblem {
   // ranks sum the whole tangent and each holds it. Called before the first evaluation.
   void distribute(Communicator& communicator, bool by_rows);
   bool assembled_by_rows() const { return by_rows_; }
+  // The vectors run over this rank's own rows and ghosts (AnalysisPlan::layout): a nodal output
+  // is the owner's, the others give 0 (history columns sum the ranks' parts).
+  bool vectors_by_rows() const { return halo_.has_value(); }
 
   // ---- diagnostics ----
   // Everything an evaluation, a correction or a change of the conditions can change: the state,
@@ -243,6 +254,12 @@ class ConnectorSystem final : public NonlinearProblem {
   // results and requests of all ranks.
   void exchange(SparseMatrix* tangent, EvalStatus& status);
   void exchange_step_requests();
+  // Vectors by rows: the norms of this rank's rows joined with the other ranks' (measure), the
+  // loads' entries of q̃ among them.
+  void join_norms(IterationNorms& norms, ForceEntries& loads, ScaledNorm& residual_norm,
+                  ScaledNorm& correction_norm) const;
+  // Whether a nodal equation is this rank's to report (the owner's, under vectors by rows).
+  bool reports(int equation) const { return equation >= 0 && plan_.layout.owns(equation); }
 
   const Model& model_;
   const AnalysisPlan& plan_;
@@ -267,6 +284,7 @@ class ConnectorSystem final : public NonlinearProblem {
   bool predicting_ = false;
   std::vector<std::uint8_t> deleted_;           // per connector: deleted by damage (§7.4)
   Communicator* communicator_ = nullptr;        // null: a serial run
+  std::optional<HaloExchange> halo_;            // vectors by rows: their ghost entries
   bool by_rows_ = false;                        // the tangent is this rank's part
   ItemRange owned_connectors_, owned_springs_;  // the elements this process evaluates
   std::vector<std::size_t> history_bytes_;      // per rank: the bytes of its connectors' history

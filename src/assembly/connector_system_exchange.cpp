@@ -6,6 +6,7 @@
 // results, and what is decided from them is joined over the ranks.
 #include <fmt/format.h>
 
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 #include <type_traits>
@@ -67,6 +68,8 @@ void ConnectorSystem::distribute(Communicator& communicator, bool by_rows) {
   // evaluates all of them and keeps their results.
   if (plan_.shared) {
     if (energy_) energy_->share_elements(communicator);
+    const EquationLayout& layout = plan_.layout;
+    if (layout.local) halo_.emplace(communicator, layout.first_owned, layout.owned, layout.ghost_global);
     return;
   }
   const int size = communicator.size();
@@ -94,8 +97,16 @@ void ConnectorSystem::exchange(SparseMatrix* tangent, EvalStatus& status) {
     status = {false, comm.broadcast(status.message, failing)};
     return;
   }
-  comm.sum({internal_.data(), static_cast<std::size_t>(internal_.size())});
-  if (predicting_) comm.sum({predictor_.data(), static_cast<std::size_t>(predictor_.size())});
+  if (halo_) {
+    // Vectors by rows: each owner adds what the other ranks' elements put on its rows.
+    halo_->add_to_owners({internal_.data(), static_cast<std::size_t>(internal_.size())});
+    if (predicting_) {
+      halo_->add_to_owners({predictor_.data(), static_cast<std::size_t>(predictor_.size())});
+    }
+  } else {
+    comm.sum({internal_.data(), static_cast<std::size_t>(internal_.size())});
+    if (predicting_) comm.sum({predictor_.data(), static_cast<std::size_t>(predictor_.size())});
+  }
   // Assembled by rows, the solver sums the ranks' parts of the tangent.
   if (tangent && !by_rows_) comm.sum(tangent->values);
   double entries[4] = {element_forces_.sum[0], element_forces_.sum[1],
@@ -170,6 +181,59 @@ void ConnectorSystem::exchange_step_requests() {
   StepRequest merged;
   for (int r = 0; r < comm.size(); ++r) merge_encoded(comm.broadcast(mine, r), merged);
   state_.request = std::move(merged);
+}
+
+double ConnectorSystem::sum_over_ranks(double mine) const {
+  if (halo_) communicator_->sum({&mine, 1});
+  return mine;
+}
+
+double ConnectorSystem::max_over_ranks(double mine) const {
+  if (!halo_) return mine;
+  // The ranks' values side by side, summed: a NaN stays a NaN wherever it is.
+  std::vector<double> all(static_cast<std::size_t>(communicator_->size()), 0.0);
+  all[static_cast<std::size_t>(communicator_->rank())] = mine;
+  communicator_->sum(all);
+  double largest = all[0];
+  for (const double v : all) largest = std::isnan(v) || v > largest ? v : largest;
+  return largest;
+}
+
+void ConnectorSystem::join_norms(IterationNorms& norms, ForceEntries& loads,
+                                 ScaledNorm& residual_norm, ScaledNorm& correction_norm) const {
+  // Each rank's values in its own slot, summed: one reduction of a few numbers per rank.
+  constexpr std::size_t kSlot = 18;
+  const auto ranks = static_cast<std::size_t>(communicator_->size());
+  std::vector<double> all(kSlot * ranks, 0.0);
+  double* mine = all.data() + kSlot * static_cast<std::size_t>(communicator_->rank());
+  for (int f = 0; f < 2; ++f) {
+    mine[f] = norms.largest_residual[f];
+    mine[2 + f] = norms.largest_increment[f];
+    mine[4 + f] = norms.largest_correction[f];
+    mine[6 + f] = loads.sum[f];
+    mine[8 + f] = loads.count[f];
+  }
+  const std::array<double, 4> r = residual_norm.parts(), c = correction_norm.parts();
+  std::copy(r.begin(), r.end(), mine + 10);
+  std::copy(c.begin(), c.end(), mine + 14);
+  communicator_->sum(all);
+  norms = {};
+  loads = {};
+  residual_norm = {};
+  correction_norm = {};
+  const auto largest = [](double a, double b) { return std::isnan(b) || b > a ? b : a; };
+  for (std::size_t rank = 0; rank < ranks; ++rank) {
+    const double* theirs = all.data() + kSlot * rank;
+    for (int f = 0; f < 2; ++f) {
+      norms.largest_residual[f] = largest(norms.largest_residual[f], theirs[f]);
+      norms.largest_increment[f] = largest(norms.largest_increment[f], theirs[2 + f]);
+      norms.largest_correction[f] = largest(norms.largest_correction[f], theirs[4 + f]);
+      loads.sum[f] += theirs[6 + f];
+      loads.count[f] += static_cast<int>(theirs[8 + f]);
+    }
+    residual_norm.merge(ScaledNorm::of_parts(theirs + 10));
+    correction_norm.merge(ScaledNorm::of_parts(theirs + 14));
+  }
 }
 
 }  // namespace clinch

@@ -4,14 +4,23 @@ namespace clinch {
 
 DofMap::DofMap(std::vector<DofMask> active) : active_(std::move(active)) {
   first_.resize(active_.size(), -1);
-  for (std::size_t n = 0; n < active_.size(); ++n) {
-    first_[n] = node_equations_;
-    for (int dof = 1; dof <= 6; ++dof) {
-      if (!(active_[n] & (1u << (dof - 1)))) continue;
-      node_of_.push_back(static_cast<std::int32_t>(n));
-      field_.push_back(dof <= 3 ? EquationField::Translation : EquationField::Rotation);
-      ++node_equations_;
-    }
+  for (std::size_t n = 0; n < active_.size(); ++n) number(static_cast<std::int32_t>(n));
+}
+
+DofMap::DofMap(std::vector<DofMask> active, const std::vector<std::int32_t>& order)
+    : active_(std::move(active)) {
+  first_.resize(active_.size(), -1);
+  for (const std::int32_t n : order) number(n);
+}
+
+void DofMap::number(std::int32_t node) {
+  const auto n = static_cast<std::size_t>(node);
+  first_[n] = node_equations_;
+  for (int dof = 1; dof <= 6; ++dof) {
+    if (!(active_[n] & (1u << (dof - 1)))) continue;
+    node_of_.push_back(node);
+    field_.push_back(dof <= 3 ? EquationField::Translation : EquationField::Rotation);
+    ++node_equations_;
   }
 }
 

@@ -18,6 +18,9 @@ class DofMap {
  public:
   DofMap() = default;
   explicit DofMap(std::vector<DofMask> active);
+  // The equations of the nodes in `order` only, numbered in that order (a rank's local equations,
+  // equation_layout.hpp); every other node has none.
+  DofMap(std::vector<DofMask> active, const std::vector<std::int32_t>& order);
 
   // Equation of DOF `dof` (1…6) of global node `node`, or −1 when the DOF is not active.
   int equation(std::int32_t node, int dof) const {
@@ -43,6 +46,7 @@ class DofMap {
   int uniform_node_block() const;
 
  private:
+  void number(std::int32_t node);  // the next equations are the active DOFs of `node`
   std::vector<DofMask> active_;
   std::vector<int> first_;
   std::vector<std::int32_t> node_of_;

@@ -191,7 +191,7 @@ int run_deck(const RunCommandOptions& options) {
         options.solver == SolverChoice::Automatic || options.solver == SolverChoice::Petsc
             ? whole_tangent_need(model)
             : std::string("the --solver asked for solves the whole system on every rank");
-    if (whole_tangent.empty()) share = PlanShare{communicator->rank(), communicator->size()};
+    if (whole_tangent.empty()) share = PlanShare{communicator->rank(), communicator->size(), true};
   }
   std::optional<AnalysisPlan> plan = build_analysis_plan(model, &error, share ? &*share : nullptr);
   if (share) {
@@ -206,7 +206,10 @@ int run_deck(const RunCommandOptions& options) {
     log.error(fmt::format("{}: error: {}", deck_name, error));
     return kExitDeckErrors;
   }
-  const int node_equations = plan->dofs.node_equations();
+  // A rank's plan over its own equations numbers only those (equation_layout.hpp).
+  const int node_equations =
+      plan->layout.local ? plan->layout.global_node_equations : plan->dofs.node_equations();
+  const int equations = plan->layout.local ? plan->layout.global_count : plan->dofs.equations();
   // The nodes clinch adds at the centres of mass of rigid bodies' elements are not the deck's.
   const std::size_t centres = model.constraints.element_masses.size();
   log.info(
@@ -219,7 +222,7 @@ int run_deck(const RunCommandOptions& options) {
                                              centres),
                   plan->connector_total, plan->spring_total, node_equations,
                   model.nodes.empty() ? 0.0 : double(node_equations) / model.nodes.size(),
-                  plan->dofs.equations() - node_equations));
+                  equations - node_equations));
   if (!plan->dependents.empty()) {
     // A rank's plan holds the condensed elements of its own share.
     double condensed = static_cast<double>(plan->expansions.size());
@@ -233,10 +236,15 @@ int run_deck(const RunCommandOptions& options) {
   ConnectorSystem system(model, *plan);
   if (communicator) {
     system.distribute(*communicator, whole_tangent.empty());
+    const std::string vectors =
+        plan->layout.local ? "; the vectors run over each rank's own rows and the ghosts its "
+                             "elements read"
+                           : "; each rank holds the vectors over every equation: " +
+                                 whole_vectors_need(*plan);
     const std::string held =
         whole_tangent.empty()
             ? "each holds the records and results of its own elements and assembles its part of "
-              "the tangent, which PETSc sums"
+              "the tangent, which PETSc sums" + vectors
             : "each rank holds the whole tangent: " + whole_tangent;
     log.info(fmt::format(
         "distributed over {} processes: each evaluates about {} connectors and {} springs; {}",

@@ -192,8 +192,10 @@ LinearStatus PetscSolver::analyze(const SparseMatrix& pattern, std::string* mess
     col_idx_ = std::move(full.idx);
     source_ = std::move(full.source);
   }
-  if (n == 0) {
+  // A part over a rank's local equations may be empty while the summed system is not.
+  if (pattern.summed_size() == 0) {
     n_ = 0;
+    summed_rows_ = 0;
     return LinearStatus::Ok;
   }
   if (const PetscErrorCode code = summed_        ? create_summed_objects(pattern)
@@ -247,6 +249,7 @@ PetscErrorCode PetscSolver::create_distributed_objects() {
   const ItemRange rows = owned_rows(static_cast<int>(n), node_block_, rank, ranks);
   first_row_ = static_cast<int>(rows.begin);
   local_rows_ = static_cast<int>(rows.end - rows.begin);
+  rhs_first_ = first_row_;
   const int offset = row_ptr_[first_row_];
   std::vector<PetscInt> local_row_ptr(local_rows_ + 1);
   for (int r = 0; r <= local_rows_; ++r) local_row_ptr[r] = row_ptr_[first_row_ + r] - offset;
@@ -315,7 +318,7 @@ LinearStatus PetscSolver::factorize(const SparseMatrix& k, std::string* message)
   }
   factorized_ = false;
   failed_pivot_ = -1;
-  if (n_ == 0) {
+  if (summed_ ? summed_rows_ == 0 : n_ == 0) {
     factorized_ = true;
     return LinearStatus::Ok;
   }
@@ -364,12 +367,12 @@ LinearStatus PetscSolver::factorize_summed(const SparseMatrix& part, std::string
     set_message(message, text);
     return LinearStatus::Failure;
   }
-  int zero_row = n_;
+  int zero_row = summed_rows_;
   bool indefinite = false;
   PetscErrorCode code = sum_parts(part);
   if (code == 0) code = classify_owned_rows(zero_row, indefinite);
   if (code != 0) return petsc_failure(code, "matrix assembly", message);
-  if (zero_row < n_) {
+  if (zero_row < summed_rows_) {
     failed_pivot_ = zero_row;
     set_message(message, pivot_message(LinearStatus::Singular, failed_pivot_, name()));
     return LinearStatus::Singular;
@@ -513,10 +516,10 @@ LinearStatus PetscSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x,
     throw std::logic_error("PetscSolver::solve: no factorization of this size");
   }
   x.resize(n_);
-  if (n_ == 0) return LinearStatus::Ok;
+  if (summed_ ? summed_rows_ == 0 : n_ == 0) return LinearStatus::Ok;
   // KSPSolve reads b only; PETSc's vector interface has no const array. Distributed: this rank's
   // share of b, and a solution of its own gathered into x at the end.
-  PetscErrorCode code = VecPlaceArray(rhs_, const_cast<double*>(b.data()) + first_row_);
+  PetscErrorCode code = VecPlaceArray(rhs_, const_cast<double*>(b.data()) + rhs_first_);
   if (code == 0) code = VecPlaceArray(distributed_ ? whole_solution_ : solution_, x.data());
   if (code != 0) return petsc_failure(code, "vector setup", message);
   const auto reset = [&] {
@@ -568,7 +571,7 @@ LinearStatus PetscSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x,
     code = VecGetArray(solution_, &owned);
     if (code == 0) {
       for (const auto& [line, diagonal] : decoupled_lines_) {
-        owned[line - first_row_] = b[line] / diagonal;
+        owned[line - first_row_] = b[rhs_first_ + line - first_row_] / diagonal;
       }
       code = VecRestoreArray(solution_, &owned);
     }

@@ -96,6 +96,9 @@ class PetscSolver final : public LinearSolver {
   // assembled by rows), and the scatter that gives every rank the whole solution.
   bool distributed_ = false;
   int first_row_ = 0, local_rows_ = 0;
+  // Where the owned rows start in the caller's vectors: first_row_ when they run over every
+  // equation, 0 over a rank's local equations (owned rows first: SparseMatrix::global_equation).
+  int rhs_first_ = 0;
   // Assembled by rows (SparseMatrix::partial, petsc_summed_matrix.cpp): for each entry of this
   // rank's part (both triangles of upper storage) its place in the values of the owned rows'
   // diagonal block (2k) or off-diagonal block (2k + 1), or when its row is another rank's the
@@ -108,8 +111,11 @@ class PetscSolver final : public LinearSolver {
   PetscSF diagonal_forest_ = nullptr, off_diagonal_forest_ = nullptr;
   std::string assembly_summary_;
   std::vector<double> local_values_;
+  // The scatter of the solution to the caller's vector: the whole of it, or over a rank's local
+  // equations its owned and ghost entries; and the size of the summed system.
   PetscSF gather_ = nullptr;
   Vec whole_solution_ = nullptr;
+  int summed_rows_ = 0;
   Mat matrix_ = nullptr;
   KSP ksp_ = nullptr;
   Vec rhs_ = nullptr, solution_ = nullptr, work_ = nullptr;

@@ -24,16 +24,31 @@ namespace {
 // entry_place_ of an entry in another rank's rows: the block of that rank it goes to.
 constexpr int kSentToDiagonal = -1, kSentToOffDiagonal = -2;
 
-// Calls `entry(i, j, p)` for every entry (i, j) of the matrix `part` stands for, with p its index
-// in part.values, in a fixed order: each stored entry, then, in upper storage, its mirror when it
-// lies off the diagonal.
+// The global equation of row or column i of `part` (a part over a rank's local equations maps
+// them; SparseMatrix::global_equation), and the global rows the part owns.
+int global_index(const SparseMatrix& part, int i) {
+  return part.global_equation.empty() ? i : part.global_equation[static_cast<std::size_t>(i)];
+}
+int global_first_row(const SparseMatrix& part) {
+  return part.global_equation.empty() ? part.first_owned_row : part.global_first_row;
+}
+bool owns_global_row(const SparseMatrix& part, int i) {
+  const int first = global_first_row(part);
+  return i >= first && i < first + part.owned_rows;
+}
+
+// Calls `entry(i, j, p)` for every entry (i, j) of the matrix `part` stands for, in global
+// equations, with p its index in part.values, in a fixed order: each stored entry, then, in
+// upper storage, its mirror when it lies off the diagonal.
 template <typename Entry>
 void for_each_entry(const SparseMatrix& part, Entry entry) {
   for (int j = 0; j < part.n; ++j) {
+    const int gj = global_index(part, j);
     for (int p = part.col_ptr[j]; p < part.col_ptr[j + 1]; ++p) {
       const int i = part.row_idx[p];
-      entry(i, j, p);
-      if (part.symmetric_upper && i != j) entry(j, i, p);
+      const int gi = global_index(part, i);
+      entry(gi, gj, p);
+      if (part.symmetric_upper && i != j) entry(gj, gi, p);
     }
   }
 }
@@ -48,7 +63,7 @@ CompressedRows compress_owned_rows(const SparseMatrix& part, int first_row, int 
                                    const std::vector<int>& received) {
   std::vector<int> count(static_cast<std::size_t>(rows) + 1, 0);
   for_each_entry(part, [&](int i, int, int) {
-    if (part.owns_row(i)) ++count[static_cast<std::size_t>(i - first_row) + 1];
+    if (owns_global_row(part, i)) ++count[static_cast<std::size_t>(i - first_row) + 1];
   });
   for (std::size_t q = 0; q < received.size(); q += 2) {
     ++count[static_cast<std::size_t>(received[q] - first_row) + 1];
@@ -59,7 +74,7 @@ CompressedRows compress_owned_rows(const SparseMatrix& part, int first_row, int 
   {
     std::vector<int> fill(count.begin(), count.end() - 1);
     for_each_entry(part, [&](int i, int j, int) {
-      if (part.owns_row(i)) out.columns[static_cast<std::size_t>(fill[i - first_row]++)] = j;
+      if (owns_global_row(part, i)) out.columns[static_cast<std::size_t>(fill[i - first_row]++)] = j;
     });
     for (std::size_t q = 0; q < received.size(); q += 2) {
       out.columns[static_cast<std::size_t>(fill[received[q] - first_row]++)] = received[q + 1];
@@ -83,11 +98,11 @@ CompressedRows compress_owned_rows(const SparseMatrix& part, int first_row, int 
 }  // namespace
 
 PetscErrorCode PetscSolver::create_summed_objects(const SparseMatrix& part) {
-  const int n = part.n;
+  const int n = part.summed_size();
   int rank = 0, ranks = 1;
   PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
   PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &ranks));
-  first_row_ = part.first_owned_row;
+  first_row_ = global_first_row(part);
   local_rows_ = part.owned_rows;
   // The first row of every rank (and n): the owner of row i is the last rank starting at or
   // before it.
@@ -101,7 +116,7 @@ PetscErrorCode PetscSolver::create_summed_objects(const SparseMatrix& part) {
   // The entries in rows owned elsewhere, grouped by owner, as (row, column) pairs.
   std::vector<int> send_counts(static_cast<std::size_t>(ranks), 0);
   for_each_entry(part, [&](int i, int, int) {
-    if (!part.owns_row(i)) send_counts[static_cast<std::size_t>(owner(i))] += 2;
+    if (!owns_global_row(part, i)) send_counts[static_cast<std::size_t>(owner(i))] += 2;
   });
   std::vector<int> send_offsets(static_cast<std::size_t>(ranks) + 1, 0);
   for (int r = 0; r < ranks; ++r) send_offsets[r + 1] = send_offsets[r] + send_counts[r];
@@ -109,7 +124,7 @@ PetscErrorCode PetscSolver::create_summed_objects(const SparseMatrix& part) {
   {
     std::vector<int> fill(send_offsets.begin(), send_offsets.end() - 1);
     for_each_entry(part, [&](int i, int j, int) {
-      if (part.owns_row(i)) return;
+      if (owns_global_row(part, i)) return;
       int& at = fill[static_cast<std::size_t>(owner(i))];
       sent[static_cast<std::size_t>(at++)] = i;
       sent[static_cast<std::size_t>(at++)] = j;
@@ -152,7 +167,7 @@ PetscErrorCode PetscSolver::create_summed_objects(const SparseMatrix& part) {
   entry_place_.clear();
   entry_place_.reserve(entries);
   for_each_entry(part, [&](int i, int j, int) {
-    entry_place_.push_back(part.owns_row(i) ? place(i, j) : -1);
+    entry_place_.push_back(owns_global_row(part, i) ? place(i, j) : -1);
   });
   // The places of the received entries, sent back: the roots of the sent values.
   std::vector<int> received_places(received.size() / 2);
@@ -179,7 +194,7 @@ PetscErrorCode PetscSolver::create_summed_objects(const SparseMatrix& part) {
     std::size_t entry = 0;
     for_each_entry(part, [&](int i, int, int) {
       const std::size_t e = entry++;
-      if (part.owns_row(i)) return;
+      if (owns_global_row(part, i)) return;
       const int r = owner(i);
       const int at = sent_places[static_cast<std::size_t>(fill[r]++)];
       if (at % 2 == 0) {
@@ -237,7 +252,23 @@ PetscErrorCode PetscSolver::create_summed_objects(const SparseMatrix& part) {
   }
   PetscCall(VecCreateMPIWithArray(PETSC_COMM_WORLD, 1, local_rows_, n, nullptr, &rhs_));
   PetscCall(MatCreateVecs(matrix_, &solution_, &work_));
-  PetscCall(VecScatterCreateToAll(solution_, &gather_, &whole_solution_));
+  summed_rows_ = n;
+  if (part.global_equation.empty()) {
+    // The solution gathered whole to every rank.
+    PetscCall(VecScatterCreateToAll(solution_, &gather_, &whole_solution_));
+    rhs_first_ = first_row_;
+  } else {
+    // Vectors by rows: a rank's right-hand side is its owned rows, and it gets the solution of
+    // its owned and ghost equations only (docs/parallel.md "Vectors by rows").
+    const std::vector<PetscInt> held(part.global_equation.begin(), part.global_equation.end());
+    IS from = nullptr;
+    PetscCall(ISCreateGeneral(PETSC_COMM_SELF, static_cast<PetscInt>(held.size()), held.data(),
+                              PETSC_COPY_VALUES, &from));
+    PetscCall(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, part.n, nullptr, &whole_solution_));
+    PetscCall(VecScatterCreate(solution_, from, whole_solution_, nullptr, &gather_));
+    PetscCall(ISDestroy(&from));
+    rhs_first_ = 0;
+  }
   return direct_ ? use_direct() : configure_iterative();
 }
 
@@ -283,7 +314,7 @@ PetscErrorCode PetscSolver::classify_owned_rows(int& zero_row, bool& indefinite)
   // (solved exactly after an iterative solve), a diagonal that is not positive (not definite):
   // each rank reads its own rows, and the ranks agree on the first zero row and on definiteness.
   decoupled_lines_.clear();
-  int my_zero = n_, my_indefinite = 0;
+  int my_zero = summed_rows_, my_indefinite = 0;
   for (PetscInt row = first_row_; row < first_row_ + local_rows_; ++row) {
     PetscInt count = 0;
     const PetscInt* columns = nullptr;

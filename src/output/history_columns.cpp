@@ -475,19 +475,24 @@ double HistoryColumns::value(const Column& c, ConnectorSystem& system, RankPart&
         part.sum += c.variable == "S" ? spring.force : c.variable == "E" ? spring.delta : 0.0;
         break;
       }
-      case Source::Node:
+      case Source::Node: {
+        // Under vectors by rows only the rank that owns a node's rows gives its values.
+        const bool by_rows = system.vectors_by_rows();
+        part.present = part.present || by_rows;
+        double& into = by_rows ? part.sum : sum;
         if (c.variable == "U" || c.variable == "UT" || c.variable == "UR") {
-          sum += system.nodal_value(t.index, c.component);
+          into += system.nodal_value(t.index, c.component);
         } else if (c.variable == "RF" || c.variable == "RT" || c.variable == "RM") {
-          sum += system.reaction(t.index, c.component);
+          into += system.reaction(t.index, c.component);
         } else if (c.variable == "CF" || c.variable == "CM") {
-          sum += system.applied_load(t.index, c.component);
+          into += system.applied_load(t.index, c.component);
         } else if (c.variable == "V" || c.variable == "VT" || c.variable == "VR") {
-          sum += system.nodal_rate(t.index, c.component, 1);
+          into += system.nodal_rate(t.index, c.component, 1);
         } else if (c.variable == "A" || c.variable == "AT" || c.variable == "AR") {
-          sum += system.nodal_rate(t.index, c.component, 2);
+          into += system.nodal_rate(t.index, c.component, 2);
         }
         break;
+      }
       case Source::Model:
         sum += model_value(c.variable, system);
         break;
@@ -519,7 +524,7 @@ void HistoryColumns::evaluate(ConnectorSystem& system, int increment, double ste
   }
   // Each rank holds the results of its own elements under a distributed model: the rank parts
   // of the due columns, and only those, are summed over the ranks (docs/parallel.md).
-  if (plan_.shared) system.sum_over_ranks(part_sums_);
+  if (plan_.shared) system.sum_over_ranks(std::span<double>(part_sums_));
   for (std::size_t k = 0; k < part_columns_.size(); ++k) {
     values[part_columns_[k]] += part_sums_[k];
   }

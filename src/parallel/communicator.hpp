@@ -9,6 +9,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace clinch {
 
@@ -24,6 +25,13 @@ ItemRange share_of(std::size_t count, int rank, int size);
 // (SparseMatrix::node_block).
 ItemRange owned_rows(int n, int node_block, int rank, int size);
 
+// The items an exchange between every pair of ranks moves (MPI_Alltoallv): to rank r,
+// send_count[r] items from send_offset[r]; from rank r, receive_count[r] items to
+// receive_offset[r].
+struct AllToAll {
+  std::vector<int> send_count, send_offset, receive_count, receive_offset;
+};
+
 class Communicator {
  public:
   virtual ~Communicator() = default;
@@ -38,6 +46,13 @@ class Communicator {
   // The same for an array whose shares have the byte sizes `bytes[r]` (r = 0…size−1), in rank
   // order.
   virtual void share_bytes(std::byte* all, std::span<const std::size_t> bytes) = 0;
+  // Every rank's `mine`, in rank order.
+  virtual std::vector<int> gather(int mine) = 0;
+  // The exchange `plan` describes (halo_exchange.hpp).
+  virtual void all_to_all(const AllToAll& plan, std::span<const double> send,
+                          std::span<double> receive) = 0;
+  virtual void all_to_all(const AllToAll& plan, std::span<const int> send,
+                          std::span<int> receive) = 0;
   // The lowest rank for which `mine` is true, size() when none is.
   virtual int first(bool mine) = 0;
   // Rank `root`'s text, on every rank.

@@ -59,6 +59,23 @@ class MpiCommunicator final : public Communicator {
       offset += total;
     }
   }
+  std::vector<int> gather(int mine) override {
+    std::vector<int> all(static_cast<std::size_t>(size_));
+    MPI_Allgather(&mine, 1, MPI_INT, all.data(), 1, MPI_INT, MPI_COMM_WORLD);
+    return all;
+  }
+  void all_to_all(const AllToAll& plan, std::span<const double> send,
+                  std::span<double> receive) override {
+    MPI_Alltoallv(send.data(), plan.send_count.data(), plan.send_offset.data(), MPI_DOUBLE,
+                  receive.data(), plan.receive_count.data(), plan.receive_offset.data(),
+                  MPI_DOUBLE, MPI_COMM_WORLD);
+  }
+  void all_to_all(const AllToAll& plan, std::span<const int> send,
+                  std::span<int> receive) override {
+    MPI_Alltoallv(send.data(), plan.send_count.data(), plan.send_offset.data(), MPI_INT,
+                  receive.data(), plan.receive_count.data(), plan.receive_offset.data(), MPI_INT,
+                  MPI_COMM_WORLD);
+  }
   int first(bool mine) override {
     int candidate = mine ? rank_ : size_;
     MPI_Allreduce(MPI_IN_PLACE, &candidate, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);

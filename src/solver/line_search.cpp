@@ -9,22 +9,30 @@ EvalStatus search_line(NonlinearProblem& problem, Eigen::VectorXd& direction,
                        Eigen::VectorXd& residual, const LineSearchControls& controls) {
   // Only ratios of the projections g(s) = d·r(s) matter: they are taken on d and r scaled by
   // their largest entries at s = 0, so that residuals past 1e154 do not overflow them.
-  const auto inverse_of_largest = [](const Eigen::VectorXd& v) {
-    const double largest = v.size() > 0 ? v.cwiseAbs().maxCoeff() : 0.0;
+  // Over the owned entries of every process of a problem shared by rows (nonlinear_problem.hpp).
+  const Eigen::Index owned = problem.owned_size();
+  const auto inverse_of_largest = [&](const Eigen::VectorXd& v) {
+    const double largest = problem.max_over_ranks(owned > 0 ? v.head(owned).cwiseAbs().maxCoeff()
+                                                            : 0.0);
     return largest > 0 && std::isfinite(largest) ? 1.0 / largest : 1.0;
   };
   const double direction_scale = inverse_of_largest(direction);
   const double residual_scale = inverse_of_largest(residual);
   const auto projection = [&] {
-    return ((direction.array() * direction_scale) * (residual.array() * residual_scale)).sum();
+    return problem.sum_over_ranks(((direction.head(owned).array() * direction_scale) *
+                                   (residual.head(owned).array() * residual_scale))
+                                      .sum());
   };
   const double g0 = projection();
   // A correction orthogonal to the residual, as when the only imbalance is a load on a
   // constrained direction and the multiplier alone restores it (d has no entry where R has one),
   // gives g(0) = 0 up to round-off: g then says nothing about the step, whose sign would come from
   // round-off elsewhere, and the full step is kept.
+  const auto norm = [&](const Eigen::VectorXd& v, double scale) {
+    return std::sqrt(problem.sum_over_ranks((v.head(owned) * scale).squaredNorm()));
+  };
   const double informative =
-      1e-10 * (direction * direction_scale).norm() * (residual * residual_scale).norm();
+      1e-10 * norm(direction, direction_scale) * norm(residual, residual_scale);
   EvalStatus status = problem.evaluate(residual, nullptr);
   // Only a descent direction (g(0) < 0) has a step that reduces the projected residual.
   if (!status.ok || !(g0 < -informative)) return status;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "src/solver/forcing_term.hpp"
 
@@ -25,15 +26,32 @@ bool diverging(const std::vector<IterationNorms>& history, int check_from) {
 // flux, so a value that is not finite ends the attempt before the convergence tests see it
 // (ARCHITECTURE.md principle 8). Returns false and fills `report` for the entry to blame: the
 // first overflow, else the first NaN (often 0·∞ in the substitutions, far from the overflow).
-bool finite(const Eigen::VectorXd& values, const char* what, NewtonReport& report) {
-  if (values.allFinite()) return true;
+// Over the owned entries of every process of a problem shared by rows, which all agree on it.
+bool finite(const NonlinearProblem& problem, const Eigen::VectorXd& values, const char* what,
+            NewtonReport& report) {
+  const Eigen::Index count = problem.owned_size();
+  if (problem.max_over_ranks(values.head(count).allFinite() ? 0.0 : 1.0) == 0.0) return true;
   const double* begin = values.data();
-  const double* end = begin + values.size();
-  const double* at = std::find_if(begin, end, [](double v) { return std::isinf(v); });
-  if (at == end) at = std::find_if(begin, end, [](double v) { return std::isnan(v); });
+  const double* end = begin + count;
+  // The first entry of each kind, by global equation (the largest double when none).
+  constexpr double kNone = std::numeric_limits<double>::max();
+  const auto first = [&](auto is_kind) {
+    const double* at = std::find_if(begin, end, is_kind);
+    const double mine =
+        at == end ? kNone : static_cast<double>(problem.global_equation(static_cast<int>(at - begin)));
+    return -problem.max_over_ranks(-mine);
+  };
+  const double overflow = first([](double v) { return v == std::numeric_limits<double>::infinity(); });
+  const double underflow =
+      first([](double v) { return v == -std::numeric_limits<double>::infinity(); });
+  const double nan = first([](double v) { return std::isnan(v); });
+  const double blamed = std::min(overflow, underflow) < kNone ? std::min(overflow, underflow) : nan;
+  const double value = blamed == overflow    ? std::numeric_limits<double>::infinity()
+                       : blamed == underflow ? -std::numeric_limits<double>::infinity()
+                                             : std::numeric_limits<double>::quiet_NaN();
   report.outcome = NewtonOutcome::NonFinite;
-  report.failed_equation = static_cast<int>(at - begin);
-  report.message = fmt::format("the {} is {}", what, *at);
+  report.failed_equation = static_cast<int>(blamed);
+  report.message = fmt::format("the {} is {}", what, value);
   return false;
 }
 
@@ -66,7 +84,7 @@ NewtonReport solve_increment(NonlinearProblem& problem, LinearSolver& solver,
       report.message = status.message;
       return report;
     }
-    if (!finite(residual, "residual", report)) return report;
+    if (!finite(problem, residual, "residual", report)) return report;
     IterationNorms& norms = report.iterations.emplace_back();
     problem.measure(residual, last_correction, norms);
     const bool predictor = problem.moving_prescribed();
@@ -105,7 +123,7 @@ NewtonReport solve_increment(NonlinearProblem& problem, LinearSolver& solver,
       report.message = message;
       return report;
     }
-    if (!finite(correction, "correction", report)) return report;
+    if (!finite(problem, correction, "correction", report)) return report;
     if (options.break_cycles && revisited(report.iterations)) correction *= 0.5;
     problem.apply_correction(correction);
     if (options.line_search.max_iterations > 0 && !predictor) {

@@ -92,6 +92,15 @@ class NonlinearProblem {
   // is non-null.
   virtual void measure(const Eigen::VectorXd& residual, const Eigen::VectorXd* correction,
                        IterationNorms& norms) const = 0;
+  // A problem shared by rows between processes (docs/parallel.md "Vectors by rows"): its
+  // vectors hold the entries of this process's rows, the first owned_size() of them, then ghost
+  // entries that copy other processes' rows. What Newton and the line search sum or compare over
+  // the entries is taken over the owned entries of every process through these, and an equation
+  // Newton names is given by its global number. One process: as given.
+  virtual int owned_size() const { return size(); }
+  virtual double sum_over_ranks(double mine) const { return mine; }
+  virtual double max_over_ranks(double mine) const { return mine; }
+  virtual int global_equation(int equation) const { return equation; }
   // How much a change of each equation counts as motion in the arc length of a Riks step
   // (docs/riks.md): 1 for every equation unless the problem knows its fields.
   virtual void path_weights(Eigen::VectorXd& weights) const { weights.setOnes(size()); }

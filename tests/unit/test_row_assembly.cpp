@@ -180,6 +180,11 @@ class PartCommunicator final : public Communicator {
   void max(std::span<std::uint8_t>) override {}
   void share(std::byte*, std::size_t, std::size_t) override {}
   void share_bytes(std::byte*, std::span<const std::size_t>) override {}
+  std::vector<int> gather(int mine) override {
+    return std::vector<int>(static_cast<std::size_t>(ranks_), mine);
+  }
+  void all_to_all(const AllToAll&, std::span<const double>, std::span<double>) override {}
+  void all_to_all(const AllToAll&, std::span<const int>, std::span<int>) override {}
   int first(bool mine) override { return mine ? rank_ : ranks_; }
   std::string broadcast(const std::string& text, int) override { return text; }
   [[noreturn]] void abort(int) override { std::abort(); }
