@@ -27,10 +27,10 @@ constexpr int kSentToDiagonal = -1, kSentToOffDiagonal = -2;
 // The global equation of row or column i of `part` (a part over a rank's local equations maps
 // them; SparseMatrix::global_equation), and the global rows the part owns.
 int global_index(const SparseMatrix& part, int i) {
-  return part.global_equation.empty() ? i : part.global_equation[static_cast<std::size_t>(i)];
+  return part.over_local_equations() ? part.global_equation[static_cast<std::size_t>(i)] : i;
 }
 int global_first_row(const SparseMatrix& part) {
-  return part.global_equation.empty() ? part.first_owned_row : part.global_first_row;
+  return part.over_local_equations() ? part.global_first_row : part.first_owned_row;
 }
 bool owns_global_row(const SparseMatrix& part, int i) {
   const int first = global_first_row(part);
@@ -253,7 +253,7 @@ PetscErrorCode PetscSolver::create_summed_objects(const SparseMatrix& part) {
   PetscCall(VecCreateMPIWithArray(PETSC_COMM_WORLD, 1, local_rows_, n, nullptr, &rhs_));
   PetscCall(MatCreateVecs(matrix_, &solution_, &work_));
   summed_rows_ = n;
-  if (part.global_equation.empty()) {
+  if (!part.over_local_equations()) {
     // The solution gathered whole to every rank.
     PetscCall(VecScatterCreateToAll(solution_, &gather_, &whole_solution_));
     rhs_first_ = first_row_;

@@ -27,13 +27,15 @@ struct SparseMatrix {
   int first_owned_row = 0, owned_rows = -1;
   // A part over the rank's local equations (vectors by rows, docs/parallel.md): the global
   // equation of each row and column, its owned rows first; empty when the part is over the
-  // global equations. global_n is then the size of the summed system.
+  // global equations. global_n (0 for a part over the global equations) is then the size of the
+  // summed system, and global_first_row the global number of the first owned row.
   std::vector<int> global_equation;
   int global_n = 0, global_first_row = 0;
 
   int nonzeros() const { return col_ptr.empty() ? 0 : col_ptr.back(); }
   // The size of the system the parts sum to (n unless the part is over local equations).
-  int summed_size() const { return global_equation.empty() ? n : global_n; }
+  bool over_local_equations() const { return global_n > 0; }
+  int summed_size() const { return over_local_equations() ? global_n : n; }
   bool partial() const { return owned_rows >= 0; }
   // Whether this part adds what belongs to row i alone (every row of a whole matrix).
   bool owns_row(int i) const {

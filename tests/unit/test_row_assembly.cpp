@@ -15,6 +15,7 @@
 #include "src/assembly/connector_system.hpp"
 #include "src/assembly/sparsity_pattern.hpp"
 #include "tests/unit/checked_deck.hpp"
+#include "tests/unit/part_communicator.hpp"
 
 namespace clinch {
 namespace {
@@ -168,30 +169,6 @@ TEST(RowAssembly, AConnectorThatCannotBeSetUpFailsTheRankThatHoldsIt) {
     }
   }
 }
-
-// Rank `rank` of `ranks` with nothing to exchange: each system keeps what its own elements put
-// in its part of the tangent, which is what the PETSc backend sums.
-class PartCommunicator final : public Communicator {
- public:
-  PartCommunicator(int rank, int ranks) : rank_(rank), ranks_(ranks) {}
-  int rank() const override { return rank_; }
-  int size() const override { return ranks_; }
-  void sum(std::span<double>) override {}
-  void max(std::span<std::uint8_t>) override {}
-  void share(std::byte*, std::size_t, std::size_t) override {}
-  void share_bytes(std::byte*, std::span<const std::size_t>) override {}
-  std::vector<int> gather(int mine) override {
-    return std::vector<int>(static_cast<std::size_t>(ranks_), mine);
-  }
-  void all_to_all(const AllToAll&, std::span<const double>, std::span<double>) override {}
-  void all_to_all(const AllToAll&, std::span<const int>, std::span<int>) override {}
-  int first(bool mine) override { return mine ? rank_ : ranks_; }
-  std::string broadcast(const std::string& text, int) override { return text; }
-  [[noreturn]] void abort(int) override { std::abort(); }
-
- private:
-  int rank_, ranks_;
-};
 
 // The matrix `m` stands for, dense.
 Eigen::MatrixXd dense(const SparseMatrix& m) {
