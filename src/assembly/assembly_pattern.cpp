@@ -98,7 +98,8 @@ AssemblyPattern build_assembly_pattern(const AnalysisPlan& plan, bool symmetric,
   }
   if (layout.local) {
     p.matrix.global_equation.resize(static_cast<std::size_t>(n));
-    for (int i = 0; i < n; ++i) p.matrix.global_equation[static_cast<std::size_t>(i)] = layout.global_of(i);
+    for (int i = 0; i < n; ++i)
+      p.matrix.global_equation[static_cast<std::size_t>(i)] = layout.global_of(i);
     p.matrix.global_n = layout.global_count;
     p.matrix.global_first_row = layout.first_owned;
   }

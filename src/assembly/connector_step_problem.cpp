@@ -131,9 +131,10 @@ std::string ConnectorStepProblem::describe_failure(const NewtonReport& report) c
   NewtonReport named = report;
   named.failed_equation = equation_named(report.failed_equation);
   if (!system_.vectors_by_rows()) {
-    return clinch::describe_failure(
-        model_, system_.plan(), named,
-        [&](std::vector<std::string> mine) { return system_.lines_of_every_rank(std::move(mine)); });
+    return clinch::describe_failure(model_, system_.plan(), named,
+                                    [&](std::vector<std::string> mine) {
+                                      return system_.lines_of_every_rank(std::move(mine));
+                                    });
   }
   // Under vectors by rows the rank that owns the equation's row describes it from what it holds,
   // and every rank reports that description.

@@ -69,7 +69,8 @@ void ConnectorSystem::distribute(Communicator& communicator, bool by_rows) {
   if (plan_.shared) {
     if (energy_) energy_->share_elements(communicator);
     const EquationLayout& layout = plan_.layout;
-    if (layout.local) halo_.emplace(communicator, layout.first_owned, layout.owned, layout.ghost_global);
+    if (layout.local)
+      halo_.emplace(communicator, layout.first_owned, layout.owned, layout.ghost_global);
     return;
   }
   const int size = communicator.size();

@@ -11,8 +11,12 @@
 
 namespace clinch {
 
-enum class EquationField : std::uint8_t { Translation, Rotation, TranslationalMultiplier,
-                                          RotationalMultiplier };
+enum class EquationField : std::uint8_t {
+  Translation,
+  Rotation,
+  TranslationalMultiplier,
+  RotationalMultiplier
+};
 
 class DofMap {
  public:

@@ -16,9 +16,9 @@ struct AnalysisPlan;
 struct EquationLayout {
   bool local = false;  // the plan's equations are this rank's (else the whole model's)
   int global_count = 0, global_node_equations = 0;
-  int node_block = 1;    // of the global system (SparseMatrix::node_block)
-  int first_owned = 0;   // global number of local equation 0
-  int owned = 0;         // local equations [0, owned) are the owned rows, in global order
+  int node_block = 1;             // of the global system (SparseMatrix::node_block)
+  int first_owned = 0;            // global number of local equation 0
+  int owned = 0;                  // local equations [0, owned) are the owned rows, in global order
   std::vector<int> ghost_global;  // local equation owned + k is global ghost_global[k] (ascending)
 
   bool owns(int local_equation) const { return !local || local_equation < owned; }

@@ -74,7 +74,8 @@ CompressedRows compress_owned_rows(const SparseMatrix& part, int first_row, int 
   {
     std::vector<int> fill(count.begin(), count.end() - 1);
     for_each_entry(part, [&](int i, int j, int) {
-      if (owns_global_row(part, i)) out.columns[static_cast<std::size_t>(fill[i - first_row]++)] = j;
+      if (owns_global_row(part, i))
+        out.columns[static_cast<std::size_t>(fill[i - first_row]++)] = j;
     });
     for (std::size_t q = 0; q < received.size(); q += 2) {
       out.columns[static_cast<std::size_t>(fill[received[q] - first_row]++)] = received[q + 1];

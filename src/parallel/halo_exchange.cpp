@@ -38,9 +38,9 @@ HaloExchange::HaloExchange(Communicator& communicator, int first_owned, int owne
   to_owners_.send_offset = offsets_of(asked);
   to_owners_.receive_count = exported_counts;
   to_owners_.receive_offset = offsets_of(exported_counts);
-  exported_.assign(static_cast<std::size_t>(
-                       std::accumulate(exported_counts.begin(), exported_counts.end(), 0)),
-                   0);
+  exported_.assign(
+      static_cast<std::size_t>(std::accumulate(exported_counts.begin(), exported_counts.end(), 0)),
+      0);
   communicator.all_to_all(to_owners_, std::span<const int>(ghosts), std::span<int>(exported_));
   for (int& e : exported_) e -= first_owned;  // owned entries
   to_ghosts_.send_count = to_owners_.receive_count;
@@ -60,9 +60,9 @@ void HaloExchange::import_ghosts(std::span<double> values) {
 }
 
 void HaloExchange::add_to_owners(std::span<double> values) {
-  communicator_.all_to_all(
-      to_owners_, values.subspan(static_cast<std::size_t>(owned_), ghost_values_.size()),
-      std::span<double>(owned_values_));
+  communicator_.all_to_all(to_owners_,
+                           values.subspan(static_cast<std::size_t>(owned_), ghost_values_.size()),
+                           std::span<double>(owned_values_));
   for (std::size_t k = 0; k < exported_.size(); ++k) {
     values[static_cast<std::size_t>(exported_[k])] += owned_values_[k];
   }

@@ -67,8 +67,8 @@ class MpiCommunicator final : public Communicator {
   void all_to_all(const AllToAll& plan, std::span<const double> send,
                   std::span<double> receive) override {
     MPI_Alltoallv(send.data(), plan.send_count.data(), plan.send_offset.data(), MPI_DOUBLE,
-                  receive.data(), plan.receive_count.data(), plan.receive_offset.data(),
-                  MPI_DOUBLE, MPI_COMM_WORLD);
+                  receive.data(), plan.receive_count.data(), plan.receive_offset.data(), MPI_DOUBLE,
+                  MPI_COMM_WORLD);
   }
   void all_to_all(const AllToAll& plan, std::span<const int> send,
                   std::span<int> receive) override {

@@ -12,8 +12,8 @@ EvalStatus search_line(NonlinearProblem& problem, Eigen::VectorXd& direction,
   // Over the owned entries of every process of a problem shared by rows (nonlinear_problem.hpp).
   const Eigen::Index owned = problem.owned_size();
   const auto inverse_of_largest = [&](const Eigen::VectorXd& v) {
-    const double largest = problem.max_over_ranks(owned > 0 ? v.head(owned).cwiseAbs().maxCoeff()
-                                                            : 0.0);
+    const double largest =
+        problem.max_over_ranks(owned > 0 ? v.head(owned).cwiseAbs().maxCoeff() : 0.0);
     return largest > 0 && std::isfinite(largest) ? 1.0 / largest : 1.0;
   };
   const double direction_scale = inverse_of_largest(direction);

@@ -38,10 +38,12 @@ bool finite(const NonlinearProblem& problem, const Eigen::VectorXd& values, cons
   const auto first = [&](auto is_kind) {
     const double* at = std::find_if(begin, end, is_kind);
     const double mine =
-        at == end ? kNone : static_cast<double>(problem.global_equation(static_cast<int>(at - begin)));
+        at == end ? kNone
+                  : static_cast<double>(problem.global_equation(static_cast<int>(at - begin)));
     return -problem.max_over_ranks(-mine);
   };
-  const double overflow = first([](double v) { return v == std::numeric_limits<double>::infinity(); });
+  const double overflow =
+      first([](double v) { return v == std::numeric_limits<double>::infinity(); });
   const double underflow =
       first([](double v) { return v == -std::numeric_limits<double>::infinity(); });
   const double nan = first([](double v) { return std::isnan(v); });

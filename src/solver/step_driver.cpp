@@ -529,8 +529,8 @@ class Driver {
     announced_solver_ = solver_->name();
     out_.note(step_number, 0,
               fmt::format("{} on the {} ({} equations, {} stored entries): {}", solver_->name(),
-                          symmetric ? "upper triangle" : "full pattern", problem_.pattern().summed_size(),
-                          problem_.pattern().values.size(), why));
+                          symmetric ? "upper triangle" : "full pattern",
+                          problem_.pattern().summed_size(), problem_.pattern().values.size(), why));
     return true;
   }
 

@@ -22,7 +22,9 @@ class PartCommunicator final : public Communicator {
   void share(std::byte*, std::size_t, std::size_t) override {}
   void share_bytes(std::byte*, std::span<const std::size_t>) override {}
   // No rank's value is known here: all zero, so that every row seems the last rank's.
-  std::vector<int> gather(int) override { return std::vector<int>(static_cast<std::size_t>(ranks_), 0); }
+  std::vector<int> gather(int) override {
+    return std::vector<int>(static_cast<std::size_t>(ranks_), 0);
+  }
   void all_to_all(const AllToAll&, std::span<const double>, std::span<double>) override {}
   void all_to_all(const AllToAll&, std::span<const int>, std::span<int>) override {}
   int first(bool mine) override { return mine ? rank_ : ranks_; }

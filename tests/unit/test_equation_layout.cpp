@@ -84,8 +84,8 @@ TEST(EquationLayout, TheRanksOwnEveryEquationOnceAndTheirRecordsStandForTheWhole
     for (int local = 0; local < plan->dofs.equations(); ++local) {
       const int global = layout.global_of(local);
       EXPECT_EQ(layout.local_of(global), local);
-      EXPECT_EQ(layout.owns(local), global >= layout.first_owned &&
-                                        global < layout.first_owned + layout.owned);
+      EXPECT_EQ(layout.owns(local),
+                global >= layout.first_owned && global < layout.first_owned + layout.owned);
       // The same node and DOF in both numberings.
       const std::int32_t node = plan->dofs.node_of(local);
       EXPECT_EQ(strip.whole->dofs.equation(node, plan->dofs.dof_of(local)), global);
