@@ -95,6 +95,7 @@ class PlanBuilder {
       plan_.shared = true;
       own_connectors_ = share_of(plan_.connector_total, share_->rank, share_->ranks);
       own_springs_ = share_of(plan_.spring_total, share_->rank, share_->ranks);
+      plan_.share_multipliers.assign(static_cast<std::size_t>(share_->ranks), 0);
     }
     // Reserved up front: regrowing the vectors of a deck with 10⁵ connectors (a record and its
     // kinematics are about 0.7 kB) copies them and doubles the peak memory.
@@ -193,13 +194,14 @@ class PlanBuilder {
     return lock.locked == 0 ? available : (component_bit(lock.locked) & available);
   }
 
-  // One multiplier equation per component of `multiplied`, numbered in element order on every
-  // rank; `r` (null for another rank's connector) records them.
-  void number_multipliers(ComponentMask multiplied, ConnectorRecord* r) {
+  // One multiplier equation per component of `multiplied` of connector `index`, numbered in
+  // element order on every rank; `r` (null for another rank's connector) records them.
+  void number_multipliers(std::size_t index, ComponentMask multiplied, ConnectorRecord* r) {
     for (int i = 1; i <= 6; ++i) {
       if (!has_component(multiplied, i)) continue;
       const int eq = plan_.dofs.add_multiplier(i >= 4);
       plan_.has_multipliers = true;
+      if (plan_.shared) ++plan_.share_multipliers[share_of_connector(index)];
       if (!r) continue;
       r->multiplier_components[static_cast<std::size_t>(r->multiplier_count++)] =
           static_cast<std::int8_t>(i);
@@ -227,7 +229,7 @@ class PlanBuilder {
     plan_.all_laws_symmetric = plan_.all_laws_symmetric && section_symmetric(s);
     if (index < own_connectors_.begin || index >= own_connectors_.end) {
       // Another rank's connector: only its multipliers, so that every rank numbers them alike.
-      number_multipliers(multiplied_components(e, s, section, behavior), nullptr);
+      number_multipliers(index, multiplied_components(e, s, section, behavior), nullptr);
       return true;
     }
     ConnectorRecord r;
@@ -294,7 +296,7 @@ class PlanBuilder {
       r.columns[static_cast<std::size_t>(r.column_count++)] = static_cast<std::int8_t>(c);
       r.local.equation[static_cast<std::size_t>(r.local.count++)] = eq;
     }
-    number_multipliers(multiplied_components(e, s, section, behavior), &r);
+    number_multipliers(index, multiplied_components(e, s, section, behavior), &r);
     plan_.connectors.push_back(std::move(r));
     for (const Behavior* law : laws_of_section(s)) plan_.add_law(plan_.connectors.size() - 1, *law);
     return true;
@@ -314,6 +316,14 @@ class PlanBuilder {
   const PlanShare* share_;
   ItemRange own_connectors_, own_springs_;            // the elements whose records this plan holds
   std::size_t next_connector_ = 0, next_spring_ = 0;  // in element order
+  // The rank whose share holds connector `index` (share_of, in element order).
+  std::size_t share_of_connector(std::size_t index) const {
+    std::size_t rank = 0;
+    while (share_of(plan_.connector_total, static_cast<int>(rank), share_->ranks).end <= index) {
+      ++rank;
+    }
+    return rank;
+  }
   std::vector<ComponentMask> motions_;
   std::vector<std::vector<const Behavior*>> section_laws_;
   std::vector<bool> section_laws_built_;

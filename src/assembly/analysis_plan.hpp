@@ -174,8 +174,10 @@ struct AnalysisPlan {
   bool has_multipliers = false;
   // Every law of every connector of the model returns a symmetric tangent.
   bool all_laws_symmetric = true;
-  // This plan holds one rank's share of the connectors and springs (build_analysis_plan).
+  // This plan holds one rank's share of the connectors and springs (build_analysis_plan), and
+  // how many multipliers the connectors of each rank's share have.
   bool shared = false;
+  std::vector<int> share_multipliers;
   // Which equations the vectors of this rank run over: with layout.local, those of its own rows
   // and the ghosts its elements read, numbered by `dofs` (equation_layout.hpp).
   EquationLayout layout;

@@ -329,8 +329,8 @@ void ConnectorSystem::start_increment(double extrapolate_scale) {
   if (extrapolate_scale != 0) {
     // Prescribed DOFs too, so that the extrapolated state is consistent; what is left of their
     // increment (none under a steady ramp) the first correction takes.
-    for (int eq = 0; eq < plan_.dofs.node_equations(); ++eq) {
-      if (is_finite_rotation(eq)) continue;
+    for (int eq = 0; eq < plan_.dofs.equations(); ++eq) {
+      if (plan_.dofs.node_of(eq) < 0 || is_finite_rotation(eq)) continue;  // not a multiplier
       const double before = state_.x[eq];
       state_.x[eq] += extrapolate_scale * state_.dx_n[eq];
       if (conditions_.is_prescribed(eq)) snap_to_target(eq, before);

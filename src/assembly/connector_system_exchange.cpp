@@ -118,8 +118,9 @@ void ConnectorSystem::exchange(SparseMatrix* tangent, EvalStatus& status) {
   element_forces_.sum[1] = entries[1];
   element_forces_.count[0] = static_cast<int>(entries[2]);
   element_forces_.count[1] = static_cast<int>(entries[3]);
-  // Only the owner of a multiplier's connector sets its flag; the others hold 0 there.
-  if (plan_.has_multipliers) comm.max(multiplier_active_);
+  // Only the owner of a multiplier's connector sets its flag; the others hold 0 there. Under
+  // vectors by rows a multiplier is a row of its connector's rank only.
+  if (plan_.has_multipliers && !halo_) comm.max(multiplier_active_);
   // A plan with a share of the elements keeps its own results: the decisions that read them are
   // taken together (update_active_set, release_failed_components, failure_note) and the history
   // columns sum the parts of the ranks. A whole plan gets every rank's share.
@@ -203,7 +204,7 @@ double ConnectorSystem::max_over_ranks(double mine) const {
 void ConnectorSystem::join_norms(IterationNorms& norms, ForceEntries& loads,
                                  ScaledNorm& residual_norm, ScaledNorm& correction_norm) const {
   // Each rank's values in its own slot, summed: one reduction of a few numbers per rank.
-  constexpr std::size_t kSlot = 18;
+  constexpr std::size_t kSlot = 19;
   const auto ranks = static_cast<std::size_t>(communicator_->size());
   std::vector<double> all(kSlot * ranks, 0.0);
   double* mine = all.data() + kSlot * static_cast<std::size_t>(communicator_->rank());
@@ -217,6 +218,7 @@ void ConnectorSystem::join_norms(IterationNorms& norms, ForceEntries& loads,
   const std::array<double, 4> r = residual_norm.parts(), c = correction_norm.parts();
   std::copy(r.begin(), r.end(), mine + 10);
   std::copy(c.begin(), c.end(), mine + 14);
+  mine[18] = norms.constraint_violation;
   communicator_->sum(all);
   norms = {};
   loads = {};
@@ -232,6 +234,7 @@ void ConnectorSystem::join_norms(IterationNorms& norms, ForceEntries& loads,
       loads.sum[f] += theirs[6 + f];
       loads.count[f] += static_cast<int>(theirs[8 + f]);
     }
+    norms.constraint_violation = largest(norms.constraint_violation, theirs[18]);
     residual_norm.merge(ScaledNorm::of_parts(theirs + 10));
     correction_norm.merge(ScaledNorm::of_parts(theirs + 14));
   }

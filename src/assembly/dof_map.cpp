@@ -13,9 +13,13 @@ DofMap::DofMap(std::vector<DofMask> active, const std::vector<std::int32_t>& ord
   for (const std::int32_t n : order) number(n);
 }
 
+void DofMap::add_nodes(const std::vector<std::int32_t>& order) {
+  for (const std::int32_t n : order) number(n);
+}
+
 void DofMap::number(std::int32_t node) {
   const auto n = static_cast<std::size_t>(node);
-  first_[n] = node_equations_;
+  first_[n] = equations();
   for (int dof = 1; dof <= 6; ++dof) {
     if (!(active_[n] & (1u << (dof - 1)))) continue;
     node_of_.push_back(node);

@@ -23,8 +23,10 @@ class DofMap {
   DofMap() = default;
   explicit DofMap(std::vector<DofMask> active);
   // The equations of the nodes in `order` only, numbered in that order (a rank's local equations,
-  // equation_layout.hpp); every other node has none.
+  // equation_layout.hpp); every other node has none until add_nodes numbers it.
   DofMap(std::vector<DofMask> active, const std::vector<std::int32_t>& order);
+  // Numbers the nodes of `order` next, after any multiplier (a rank's ghost nodes).
+  void add_nodes(const std::vector<std::int32_t>& order);
 
   // Equation of DOF `dof` (1…6) of global node `node`, or −1 when the DOF is not active.
   int equation(std::int32_t node, int dof) const {
@@ -36,6 +38,8 @@ class DofMap {
            std::popcount(static_cast<unsigned>(mask & (bit - 1)));
   }
   DofMask active(std::int32_t node) const { return active_[static_cast<std::size_t>(node)]; }
+  // How many equations are nodal: the first ones, but in a rank's local numbering, whose ghost
+  // nodes follow its multipliers (equation_layout.hpp).
   int node_equations() const { return node_equations_; }
   int equations() const { return static_cast<int>(field_.size()); }
   // Appends a multiplier equation and returns its number.

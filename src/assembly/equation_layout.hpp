@@ -1,9 +1,9 @@
 // The equations a rank of a distributed model holds (docs/parallel.md "Vectors by rows"): the
-// rows it owns in the solver's partition and, after them, the ghost equations its own elements
-// read that other ranks own. The state, the forces and Newton's vectors of such a rank run over
-// these local equations only; the plan's DofMap numbers them, so that elements, conditions and
-// outputs find a node's local equations as they would its global ones, and a node the rank does
-// not hold has none.
+// rows it owns in the solver's partition (the equations of its nodes, then the multipliers of its
+// connectors) and, after them, the ghost equations its own elements read that other ranks own. The
+// state, the forces and Newton's vectors of such a rank run over these local equations only; the
+// plan's DofMap numbers them, so that elements, conditions and outputs find a node's local
+// equations as they would its global ones, and a node the rank does not hold has none.
 #pragma once
 
 #include <string>
@@ -16,7 +16,8 @@ struct AnalysisPlan;
 struct EquationLayout {
   bool local = false;  // the plan's equations are this rank's (else the whole model's)
   int global_count = 0, global_node_equations = 0;
-  int node_block = 1;             // of the global system (SparseMatrix::node_block)
+  int node_block = 1;  // of the global system (SparseMatrix::node_block)
+  // Global numbers are the solver's: each rank's owned rows are consecutive, in rank order.
   int first_owned = 0;            // global number of local equation 0
   int owned = 0;                  // local equations [0, owned) are the owned rows, in global order
   std::vector<int> ghost_global;  // local equation owned + k is global ghost_global[k] (ascending)
@@ -33,12 +34,13 @@ struct EquationLayout {
 
 // What keeps the vectors over every equation on every rank, for the run log; empty when the
 // plan's records allow vectors by rows: dependent DOFs (a constraint's map reads equations of
-// any rank), multipliers, nodal inertia, the whole-model energies, STABILIZE.
+// any rank), nodal inertia, the whole-model energies, STABILIZE.
 std::string whole_vectors_need(const AnalysisPlan& plan);
 
 // Renumbers a rank's plan (build_analysis_plan with a share) over the equations of the rank:
-// the nodes of the rows it owns among `ranks` (owned_rows over the node blocks), then the other
-// nodes its connectors and springs touch, as ghosts. Only for a plan whose whole_vectors_need is
+// the nodes whose first equation lies in its share of the node equations (owned_rows over the
+// node blocks), the multipliers of its connectors, then the other nodes its connectors and
+// springs touch, as ghosts. Only for a plan whose whole_vectors_need is
 // empty.
 void localize_equations(AnalysisPlan& plan, int rank, int ranks);
 

@@ -115,11 +115,56 @@ TEST(EquationLayout, TheRanksOwnEveryEquationOnceAndTheirRecordsStandForTheWhole
   EXPECT_GT(ghosts, 0u);
 }
 
-TEST(EquationLayout, WholeVectorsWhereAFeatureNeedsThem) {
+// A JOIN's three multipliers are rows of the rank that holds the connector, after its nodes'
+// equations; the solver's numbering gives each rank consecutive rows.
+TEST(EquationLayout, MultipliersAreRowsOfTheirConnectorsRank) {
   CheckedDeck deck;
   read_deck_text("join.inp",
-                 "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n*ELEMENT, TYPE=CONN3D2, ELSET=C\n1, 1, 2\n"
+                 "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n3, 2., 0., 0.\n"
+                 "*ELEMENT, TYPE=SPRINGA, ELSET=S\n1, 2, 3\n*SPRING, ELSET=S\n\n10.\n"
+                 "*ELEMENT, TYPE=CONN3D2, ELSET=C\n2, 1, 2\n"
                  "*CONNECTOR SECTION, ELSET=C\nJOIN,\n*BOUNDARY\n1, 1, 3\n*STEP\n*STATIC\n"
+                 "*CLOAD\n3, 1, 1.\n*END STEP\n",
+                 deck.sources, deck.model, deck.sink);
+  ASSERT_FALSE(deck.sink.has_errors()) << deck.dump();
+  int next = 0;
+  for (int rank = 0; rank < 2; ++rank) {
+    const PlanShare share{rank, 2, true};
+    std::string error;
+    const std::optional<AnalysisPlan> plan = build_analysis_plan(deck.model, &error, &share);
+    ASSERT_TRUE(plan) << error;
+    EXPECT_EQ(whole_vectors_need(*plan), "");
+    const EquationLayout& layout = plan->layout;
+    ASSERT_TRUE(layout.local);
+    EXPECT_EQ(layout.global_count, 12);  // nine nodal equations and three multipliers
+    EXPECT_EQ(layout.first_owned, next);
+    next += layout.owned;
+    // Rank 0 holds the JOIN (one connector over two ranks: shares of one and none) and owns
+    // nodes 1 and 2 (the node equations split 6 and 3): six nodal rows, then the multipliers.
+    const int multipliers = rank == 0 ? 3 : 0;
+    EXPECT_EQ(layout.owned, (rank == 0 ? 6 : 3) + multipliers) << rank;
+    for (int k = 0; k < multipliers; ++k) {
+      EXPECT_LT(plan->dofs.node_of(6 + k), 0);
+      EXPECT_EQ(plan->dofs.field(6 + k), EquationField::TranslationalMultiplier);
+    }
+    if (rank == 0) {
+      const ConnectorRecord& join = plan->connectors.at(0);
+      EXPECT_EQ(join.multiplier_count, 3);
+      EXPECT_EQ(join.local.equation[static_cast<std::size_t>(join.column_count)], 6);
+    }
+    // Each rank's ghosts: rank 0's spring reads node 3 of rank 1; rank 1 holds no element.
+    EXPECT_EQ(layout.ghost_global.size(), rank == 0 ? 3u : 0u);
+    if (rank == 0) EXPECT_EQ(layout.ghost_global.front(), 9);
+  }
+  EXPECT_EQ(next, 12);
+}
+
+TEST(EquationLayout, WholeVectorsWhereAFeatureNeedsThem) {
+  CheckedDeck deck;
+  read_deck_text("dynamic.inp",
+                 "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n*ELEMENT, TYPE=SPRINGA, ELSET=S\n1, 1, 2\n"
+                 "*SPRING, ELSET=S\n\n10.\n*ELEMENT, TYPE=MASS, ELSET=M\n2, 2\n"
+                 "*MASS, ELSET=M\n1.\n*BOUNDARY\n1, 1, 3\n*STEP\n*DYNAMIC\n0.1, 1.\n"
                  "*CLOAD\n2, 1, 1.\n*END STEP\n",
                  deck.sources, deck.model, deck.sink);
   ASSERT_FALSE(deck.sink.has_errors()) << deck.dump();
@@ -127,9 +172,9 @@ TEST(EquationLayout, WholeVectorsWhereAFeatureNeedsThem) {
   std::string error;
   const std::optional<AnalysisPlan> plan = build_analysis_plan(deck.model, &error, &share);
   ASSERT_TRUE(plan) << error;
-  EXPECT_EQ(whole_vectors_need(*plan), "connector multipliers");
+  EXPECT_EQ(whole_vectors_need(*plan), "a dynamic or *FREQUENCY step");
   EXPECT_FALSE(plan->layout.local);
-  EXPECT_EQ(plan->dofs.equations(), 9);  // six nodal equations and three multipliers
+  EXPECT_EQ(plan->dofs.equations(), 6);
 }
 
 // The matrix `m` stands for, dense, over the global equations.
