@@ -91,23 +91,18 @@ TEST(EquationLayout, TheRanksOwnEveryEquationOnceAndTheirRecordsStandForTheWhole
       EXPECT_EQ(strip.whole->dofs.equation(node, plan->dofs.dof_of(local)), global);
     }
     // The records' local equations are the whole plan's, renumbered.
-    for (std::size_t s = 0; s < plan->springs.size(); ++s) {
-      const SpringRecord& mine = plan->springs[s];
-      const SpringRecord& theirs = strip.whole->springs[plan->first_spring + s];
-      ASSERT_EQ(mine.local.count, theirs.local.count);
-      for (int k = 0; k < mine.local.count; ++k) {
-        EXPECT_EQ(layout.global_of(mine.local.equation[static_cast<std::size_t>(k)]),
-                  theirs.local.equation[static_cast<std::size_t>(k)]);
+    const auto same_equations = [&](const LocalEquations& mine, const LocalEquations& theirs) {
+      ASSERT_EQ(mine.count, theirs.count);
+      for (std::size_t k = 0; k < static_cast<std::size_t>(mine.count); ++k) {
+        EXPECT_EQ(layout.global_of(mine.equation[k]), theirs.equation[k]);
       }
+    };
+    for (std::size_t s = 0; s < plan->springs.size(); ++s) {
+      same_equations(plan->springs[s].local, strip.whole->springs[plan->first_spring + s].local);
     }
     for (std::size_t c = 0; c < plan->connectors.size(); ++c) {
-      const ConnectorRecord& mine = plan->connectors[c];
-      const ConnectorRecord& theirs = strip.whole->connectors[plan->first_connector + c];
-      ASSERT_EQ(mine.local.count, theirs.local.count);
-      for (int k = 0; k < mine.local.count; ++k) {
-        EXPECT_EQ(layout.global_of(mine.local.equation[static_cast<std::size_t>(k)]),
-                  theirs.local.equation[static_cast<std::size_t>(k)]);
-      }
+      same_equations(plan->connectors[c].local,
+                     strip.whole->connectors[plan->first_connector + c].local);
     }
     ghosts += layout.ghost_global.size();
   }
