@@ -712,7 +712,8 @@ void ConnectorSystem::measure(const Eigen::VectorXd& residual, const Eigen::Vect
   for (const DependentDof& d : dependents.dofs) {  // loads on dependent DOFs, which have no row
     entries.add(force_field(d.equation), std::abs(conditions_.external()[d.equation]));
   }
-  for (int i = 0; i < owned_size(); ++i) {
+  const int rows = owned_size();
+  for (int i = 0; i < rows; ++i) {
     const int eq = dependents.equation(i);
     const EquationField field = plan_.dofs.field(eq);
     if (field == EquationField::TranslationalMultiplier ||

@@ -16,7 +16,7 @@ std::vector<int> offsets_of(const std::vector<int>& counts) {
 
 HaloExchange::HaloExchange(Communicator& communicator, int first_owned, int owned,
                            std::vector<int> ghosts)
-    : communicator_(communicator), owned_(owned) {
+    : communicator_(communicator), owned_(owned), ghosts_(ghosts.size()) {
   const int ranks = communicator.size();
   // The ranks' first rows ascend: a row's owner is the last rank starting at or before it.
   const std::vector<int> starts = communicator.gather(first_owned);
@@ -43,28 +43,14 @@ HaloExchange::HaloExchange(Communicator& communicator, int first_owned, int owne
       0);
   communicator.all_to_all(to_owners_, std::span<const int>(ghosts), std::span<int>(exported_));
   for (int& e : exported_) e -= first_owned;  // owned entries
-  to_ghosts_.send_count = to_owners_.receive_count;
-  to_ghosts_.send_offset = to_owners_.receive_offset;
-  to_ghosts_.receive_count = to_owners_.send_count;
-  to_ghosts_.receive_offset = to_owners_.send_offset;
-  owned_values_.resize(exported_.size());
-  ghost_values_.resize(ghosts.size());
-}
-
-void HaloExchange::import_ghosts(std::span<double> values) {
-  for (std::size_t k = 0; k < exported_.size(); ++k) {
-    owned_values_[k] = values[static_cast<std::size_t>(exported_[k])];
-  }
-  communicator_.all_to_all(to_ghosts_, std::span<const double>(owned_values_),
-                           values.subspan(static_cast<std::size_t>(owned_), ghost_values_.size()));
+  received_.resize(exported_.size());
 }
 
 void HaloExchange::add_to_owners(std::span<double> values) {
-  communicator_.all_to_all(to_owners_,
-                           values.subspan(static_cast<std::size_t>(owned_), ghost_values_.size()),
-                           std::span<double>(owned_values_));
+  communicator_.all_to_all(to_owners_, values.subspan(static_cast<std::size_t>(owned_), ghosts_),
+                           std::span<double>(received_));
   for (std::size_t k = 0; k < exported_.size(); ++k) {
-    values[static_cast<std::size_t>(exported_[k])] += owned_values_[k];
+    values[static_cast<std::size_t>(exported_[k])] += received_[k];
   }
 }
 

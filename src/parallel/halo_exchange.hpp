@@ -1,9 +1,9 @@
 // The ghost values of vectors by rows (docs/parallel.md "Vectors by rows"): a rank holds the
 // entries of the rows it owns and, after them, ghost entries for the equations of other ranks
-// that its elements read. Two exchanges keep them: the owners' values into the ghosts (after a
-// correction), and the ghosts' contributions added to their owners' entries (after an
-// evaluation, each rank having added its own elements' forces). Each moves one value per ghost
-// entry, in one message per pair of ranks that share a boundary.
+// that its elements read. After an evaluation, each rank having added its own elements' forces,
+// the ghosts' contributions are added to their owners' entries: one value per ghost entry, in one
+// message per pair of ranks that share a boundary. (The owners' values reach the ghosts through
+// the solver, which scatters the solution to each rank's own and ghost equations.)
 #pragma once
 
 #include <span>
@@ -20,8 +20,6 @@ class HaloExchange {
   // rank alike.
   HaloExchange(Communicator& communicator, int first_owned, int owned, std::vector<int> ghosts);
 
-  // values[owned + k] ← the owner's value of ghosts[k].
-  void import_ghosts(std::span<double> values);
   // Each owned entry gains the ghost entries the other ranks hold of it; the ghost entries are
   // left as they were.
   void add_to_owners(std::span<double> values);
@@ -30,11 +28,12 @@ class HaloExchange {
  private:
   Communicator& communicator_;
   int owned_;
-  // Owners to ghosts: what each rank sends is its owned entries exported_[...] in the order the
-  // ghost holder asked for them.
-  AllToAll to_ghosts_, to_owners_;
+  // Ghosts to owners: each owner receives, rank by rank, values for its owned entries exported_
+  // in the order the ghost holder asked for them.
+  AllToAll to_owners_;
   std::vector<int> exported_;
-  std::vector<double> owned_values_, ghost_values_;
+  std::vector<double> received_;
+  std::size_t ghosts_ = 0;
 };
 
 }  // namespace clinch

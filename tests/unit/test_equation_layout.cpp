@@ -40,11 +40,12 @@ std::string strip_deck() {
   return deck;
 }
 
-struct Strip {
+// A deck read and checked, with the plan of the whole model and those of the ranks.
+struct PlannedDeck {
   CheckedDeck deck;
   std::optional<AnalysisPlan> whole;
-  Strip() {
-    read_deck_text("strip.inp", strip_deck(), deck.sources, deck.model, deck.sink);
+  explicit PlannedDeck(const std::string& text) {
+    read_deck_text("deck.inp", text, deck.sources, deck.model, deck.sink);
     EXPECT_FALSE(deck.sink.has_errors()) << deck.dump();
     std::string error;
     whole = build_analysis_plan(deck.model, &error);
@@ -60,7 +61,7 @@ struct Strip {
 };
 
 TEST(EquationLayout, TheRanksOwnEveryEquationOnceAndTheirRecordsStandForTheWholePlans) {
-  const Strip strip;
+  const PlannedDeck strip(strip_deck());
   ASSERT_TRUE(strip.whole);
   EXPECT_EQ(whole_vectors_need(*strip.whole), "");
   const int n = strip.whole->dofs.equations();
@@ -113,21 +114,16 @@ TEST(EquationLayout, TheRanksOwnEveryEquationOnceAndTheirRecordsStandForTheWhole
 // A JOIN's three multipliers are rows of the rank that holds the connector, after its nodes'
 // equations; the solver's numbering gives each rank consecutive rows.
 TEST(EquationLayout, MultipliersAreRowsOfTheirConnectorsRank) {
-  CheckedDeck deck;
-  read_deck_text("join.inp",
-                 "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n3, 2., 0., 0.\n"
-                 "*ELEMENT, TYPE=SPRINGA, ELSET=S\n1, 2, 3\n*SPRING, ELSET=S\n\n10.\n"
-                 "*ELEMENT, TYPE=CONN3D2, ELSET=C\n2, 1, 2\n"
-                 "*CONNECTOR SECTION, ELSET=C\nJOIN,\n*BOUNDARY\n1, 1, 3\n*STEP\n*STATIC\n"
-                 "*CLOAD\n3, 1, 1.\n*END STEP\n",
-                 deck.sources, deck.model, deck.sink);
-  ASSERT_FALSE(deck.sink.has_errors()) << deck.dump();
+  const PlannedDeck join(
+      "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n3, 2., 0., 0.\n"
+      "*ELEMENT, TYPE=SPRINGA, ELSET=S\n1, 2, 3\n*SPRING, ELSET=S\n\n10.\n"
+      "*ELEMENT, TYPE=CONN3D2, ELSET=C\n2, 1, 2\n"
+      "*CONNECTOR SECTION, ELSET=C\nJOIN,\n*BOUNDARY\n1, 1, 3\n*STEP\n*STATIC\n"
+      "*CLOAD\n3, 1, 1.\n*END STEP\n");
   int next = 0;
   for (int rank = 0; rank < 2; ++rank) {
-    const PlanShare share{rank, 2, true};
-    std::string error;
-    const std::optional<AnalysisPlan> plan = build_analysis_plan(deck.model, &error, &share);
-    ASSERT_TRUE(plan) << error;
+    const std::optional<AnalysisPlan> plan = join.rank_plan(rank, 2);
+    ASSERT_TRUE(plan);
     EXPECT_EQ(whole_vectors_need(*plan), "");
     const EquationLayout& layout = plan->layout;
     ASSERT_TRUE(layout.local);
@@ -155,18 +151,13 @@ TEST(EquationLayout, MultipliersAreRowsOfTheirConnectorsRank) {
 }
 
 TEST(EquationLayout, WholeVectorsWhereAFeatureNeedsThem) {
-  CheckedDeck deck;
-  read_deck_text("dynamic.inp",
-                 "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n*ELEMENT, TYPE=SPRINGA, ELSET=S\n1, 1, 2\n"
-                 "*SPRING, ELSET=S\n\n10.\n*ELEMENT, TYPE=MASS, ELSET=M\n2, 2\n"
-                 "*MASS, ELSET=M\n1.\n*BOUNDARY\n1, 1, 3\n*STEP\n*DYNAMIC\n0.1, 1.\n"
-                 "*CLOAD\n2, 1, 1.\n*END STEP\n",
-                 deck.sources, deck.model, deck.sink);
-  ASSERT_FALSE(deck.sink.has_errors()) << deck.dump();
-  const PlanShare share{0, 2, true};
-  std::string error;
-  const std::optional<AnalysisPlan> plan = build_analysis_plan(deck.model, &error, &share);
-  ASSERT_TRUE(plan) << error;
+  const PlannedDeck dynamic(
+      "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n*ELEMENT, TYPE=SPRINGA, ELSET=S\n1, 1, 2\n"
+      "*SPRING, ELSET=S\n\n10.\n*ELEMENT, TYPE=MASS, ELSET=M\n2, 2\n"
+      "*MASS, ELSET=M\n1.\n*BOUNDARY\n1, 1, 3\n*STEP\n*DYNAMIC\n0.1, 1.\n"
+      "*CLOAD\n2, 1, 1.\n*END STEP\n");
+  const std::optional<AnalysisPlan> plan = dynamic.rank_plan(0, 2);
+  ASSERT_TRUE(plan);
   EXPECT_EQ(whole_vectors_need(*plan), "a dynamic or *FREQUENCY step");
   EXPECT_FALSE(plan->layout.local);
   EXPECT_EQ(plan->dofs.equations(), 6);
@@ -189,7 +180,7 @@ Eigen::MatrixXd dense_global(const SparseMatrix& m, int n) {
 }
 
 TEST(EquationLayout, RankPartsOverLocalEquationsSumToTheSerialTangent) {
-  const Strip strip;
+  const PlannedDeck strip(strip_deck());
   ASSERT_TRUE(strip.whole);
   const AnalysisPlan& whole = *strip.whole;
   const int n = whole.dofs.equations();
