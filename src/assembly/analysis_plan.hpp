@@ -179,8 +179,10 @@ struct AnalysisPlan {
   bool shared = false;
   std::vector<int> share_multipliers;
   // Which equations the vectors of this rank run over: with layout.local, those of its own rows
-  // and the ghosts its elements read, numbered by `dofs` (equation_layout.hpp).
-  EquationLayout layout;
+  // and the ghosts its elements read, numbered by `dofs` (equation_layout.hpp); solved_layout
+  // the same for Newton's unknowns and the solver's rows, the equations less the dependent ones
+  // (equal to layout when no DOF is dependent).
+  EquationLayout layout, solved_layout;
 
   // Appends `law` to the stack of connector record `c`, with history of its own.
   void add_law(std::size_t c, const Behavior& law);

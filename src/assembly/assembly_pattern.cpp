@@ -21,8 +21,8 @@ AssemblyPattern build_assembly_pattern(const AnalysisPlan& plan, bool symmetric,
   if (!share && plan.shared) {
     throw std::logic_error("build_assembly_pattern: the whole pattern of a rank's plan");
   }
-  // Over a rank's local equations its owned rows come first (equation_layout.hpp).
-  const EquationLayout& layout = plan.layout;
+  // Over a rank's local unknowns its owned rows come first (equation_layout.hpp).
+  const EquationLayout& layout = plan.solved_layout;
   const ItemRange rows = layout.local ? ItemRange{0, static_cast<std::size_t>(layout.owned)}
                          : share      ? owned_rows(n, node_block, share->rank, share->ranks)
                                       : ItemRange{0, static_cast<std::size_t>(n)};

@@ -123,7 +123,10 @@ std::string ConnectorStepProblem::check_tangent(int step, int increment) {
 
 int ConnectorStepProblem::equation_named(int solved) const {
   if (solved < 0) return -1;
-  if (system_.vectors_by_rows()) return system_.plan().layout.local_of(solved);
+  if (system_.vectors_by_rows()) {
+    const int local = system_.plan().solved_layout.local_of(solved);
+    return local < 0 ? -1 : system_.equation_of_solved(local);
+  }
   return system_.equation_of_solved(solved);
 }
 

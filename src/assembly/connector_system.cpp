@@ -410,13 +410,15 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
   }
   const bool want_tangent = tangent != nullptr;
   LocalSystem& local = *local_;
-  if (!dependent_failure_.empty()) return {false, dependent_failure_};
-  if (!plan_.dependents.empty()) {
+  // The first failure ends this process's share of the elements; a distributed run still
+  // exchanges it, so that every rank fails the evaluation with it (a rank that holds no part of a
+  // failed map included).
+  EvalStatus failed;
+  if (!dependent_failure_.empty()) {
+    failed = {false, dependent_failure_};
+  } else if (!plan_.dependents.empty()) {
     motion_.update_gradients(state_.x, state_.rotation, context_.nlgeom);
   }
-  // The first failure ends this process's share of the elements; a distributed run still
-  // exchanges it, so that every rank fails the evaluation with it.
-  EvalStatus failed;
   for (std::size_t c = owned_connectors_.begin; failed.ok && c < owned_connectors_.end; ++c) {
     failed = elements_.evaluate(c, context_, state_, want_tangent, local);
     if (!failed.ok) break;
@@ -710,7 +712,9 @@ void ConnectorSystem::measure(const Eigen::VectorXd& residual, const Eigen::Vect
   ScaledNorm residual_norm, correction_norm;
   const DependentDofs& dependents = plan_.dependents;
   for (const DependentDof& d : dependents.dofs) {  // loads on dependent DOFs, which have no row
-    entries.add(force_field(d.equation), std::abs(conditions_.external()[d.equation]));
+    if (reports(d.equation)) {
+      loads.add(force_field(d.equation), std::abs(conditions_.external()[d.equation]));
+    }
   }
   const int rows = owned_size();
   for (int i = 0; i < rows; ++i) {

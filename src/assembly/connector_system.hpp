@@ -110,10 +110,10 @@ class ConnectorSystem final : public NonlinearProblem {
                IterationNorms& norms) const override;
   // Vectors by rows (docs/parallel.md): the owned rows of this rank, the reductions over the
   // ranks and the global number of a solved equation.
-  int owned_size() const override { return halo_ ? halo_->owned() : size(); }
+  int owned_size() const override { return halo_ ? plan_.solved_layout.owned : size(); }
   double sum_over_ranks(double mine) const override;
   double max_over_ranks(double mine) const override;
-  int global_equation(int solved) const override { return plan_.layout.global_of(solved); }
+  int global_equation(int solved) const override { return plan_.solved_layout.global_of(solved); }
   // Translations count as they are, rotations times L̄, multipliers not at all (docs/riks.md).
   void path_weights(Eigen::VectorXd& weights) const override;
   // The LPF history column (docs/riks.md): a Riks step's load proportionality factor; in other

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "src/model/model.hpp"
 
@@ -176,8 +177,8 @@ class Builder {
           push_resolved(out_.resolved_equation[e], t, static_cast<std::int32_t>(e));
         }
       }
-      d.resolved_count = static_cast<std::uint32_t>(out_.resolved_equation.size()) -
-                         d.first_resolved;
+      d.resolved_count =
+          static_cast<std::uint32_t>(out_.resolved_equation.size()) - d.first_resolved;
       if (d.map == DependentDof::Map::Rotation && d.reference >= 0 &&
           !turns_with_another[static_cast<std::size_t>(d.node)]) {
         turns_with_another[static_cast<std::size_t>(d.node)] = 1;
@@ -196,6 +197,16 @@ class Builder {
   const DofMap& map_;
   DependentDofs& out_;
 };
+
+// The solved numbering: every equation but the dependent ones, in their order.
+void number_solved(DependentDofs& out) {
+  out.solved_of_equation.assign(out.of_equation.size(), -1);
+  for (std::size_t eq = 0; eq < out.of_equation.size(); ++eq) {
+    if (out.of_equation[eq] >= 0) continue;
+    out.solved_of_equation[eq] = static_cast<int>(out.equation_of_solved.size());
+    out.equation_of_solved.push_back(static_cast<int>(eq));
+  }
+}
 
 }  // namespace
 
@@ -226,13 +237,53 @@ bool build_dependent_dofs(const Model& model, const DofMap& dofs, DependentDofs&
     return true;
   }
   if (!builder.order(error)) return false;
-  out.solved_of_equation.assign(out.of_equation.size(), -1);
-  for (std::size_t eq = 0; eq < out.of_equation.size(); ++eq) {
-    if (out.of_equation[eq] >= 0) continue;
-    out.solved_of_equation[eq] = static_cast<int>(out.equation_of_solved.size());
-    out.equation_of_solved.push_back(static_cast<int>(eq));
-  }
+  number_solved(out);
   return true;
+}
+
+DependentDofs local_dependents(const DependentDofs& whole, std::span<const int> local_of,
+                               const DofMap& local) {
+  DependentDofs out;
+  if (whole.empty()) return out;
+  const auto local_equation = [&](int eq) {
+    if (eq < 0) return -1;
+    const int mine = local_of[static_cast<std::size_t>(eq)];
+    if (mine < 0) throw std::logic_error("local_dependents: a map reads an equation not held");
+    return mine;
+  };
+  out.of_equation.assign(static_cast<std::size_t>(local.equations()), -1);
+  // Where each resolved entry of the whole list went: a chain's entries point at its master's.
+  std::vector<std::int32_t> entry_of(whole.resolved_equation.size(), -1);
+  for (const DependentDof& w : whole.dofs) {
+    if (local_of[static_cast<std::size_t>(w.equation)] < 0) continue;
+    DependentDof d = w;
+    d.equation = local_equation(w.equation);
+    d.first_term = static_cast<std::uint32_t>(out.term_equation.size());
+    for (std::uint32_t t = w.first_term; t < w.first_term + w.term_count; ++t) {
+      out.term_equation.push_back(local_equation(whole.term_equation[t]));
+      out.term_coefficient.push_back(whole.term_coefficient[t]);
+    }
+    d.first_resolved = static_cast<std::uint32_t>(out.resolved_equation.size());
+    for (std::uint32_t e = w.first_resolved; e < w.first_resolved + w.resolved_count; ++e) {
+      entry_of[e] = static_cast<std::int32_t>(out.resolved_equation.size());
+      out.resolved_equation.push_back(local_equation(whole.resolved_equation[e]));
+      out.resolved_via_term.push_back(whole.resolved_via_term[e] - w.first_term + d.first_term);
+      const std::int32_t via = whole.resolved_via_entry[e];
+      out.resolved_via_entry.push_back(via < 0 ? -1 : entry_of[static_cast<std::size_t>(via)]);
+    }
+    out.of_equation[static_cast<std::size_t>(d.equation)] =
+        static_cast<std::int32_t>(out.dofs.size());
+    out.dofs.push_back(d);
+  }
+  for (const auto& [node, reference] : whole.rotation_followers) {
+    if (local.active(node) != 0) out.rotation_followers.emplace_back(node, reference);
+  }
+  if (out.dofs.empty()) {
+    out.of_equation.clear();
+    return out;
+  }
+  number_solved(out);
+  return out;
 }
 
 }  // namespace clinch

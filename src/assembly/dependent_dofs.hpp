@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -42,13 +43,12 @@ struct DependentDof {
   std::int32_t source = -1;  // into ConstraintModel::sources
   // Whether the map has second derivatives (NLGEOM): a rigid arm or a link.
   bool curved() const {
-    return (map == Map::RigidTranslation && arm != Vector3::Zero()) ||
-           map == Map::LinkTranslation;
+    return (map == Map::RigidTranslation && arm != Vector3::Zero()) || map == Map::LinkTranslation;
   }
 };
 
 struct DependentDofs {
-  std::vector<DependentDof> dofs;        // in dependency order
+  std::vector<DependentDof> dofs;         // in dependency order
   std::vector<std::int32_t> of_equation;  // equation → index into dofs, −1 when independent
   std::vector<int> term_equation;         // first-level terms
   std::vector<double> term_coefficient;   // Linear maps only (the others are computed)
@@ -89,5 +89,11 @@ struct DependentDofs {
 // `error` when a chain of maps cannot be ordered (a cycle).
 bool build_dependent_dofs(const Model& model, const DofMap& dofs, DependentDofs& out,
                           std::string* error);
+
+// The dependent DOFs a rank holds (equation_layout.hpp), over its local equations `local`:
+// `local_of` takes the model's equations to local ones (−1 where the rank holds none). The
+// rank's equations close over the maps: a DOF it holds finds every equation its map reads.
+DependentDofs local_dependents(const DependentDofs& whole, std::span<const int> local_of,
+                               const DofMap& local);
 
 }  // namespace clinch

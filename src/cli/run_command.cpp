@@ -223,14 +223,18 @@ int run_deck(const RunCommandOptions& options) {
                   plan->connector_total, plan->spring_total, node_equations,
                   model.nodes.empty() ? 0.0 : double(node_equations) / model.nodes.size(),
                   equations - node_equations));
-  if (!plan->dependents.empty()) {
+  // A rank's plan over its own equations holds only the dependent DOFs it reads.
+  const int followers = plan->layout.local
+                            ? plan->layout.global_count - plan->solved_layout.global_count
+                            : static_cast<int>(plan->dependents.dofs.size());
+  if (followers > 0) {
     // A rank's plan holds the condensed elements of its own share.
     double condensed = static_cast<double>(plan->expansions.size());
     if (plan->shared) communicator->sum({&condensed, 1});
     log.info(
         fmt::format("{} of the active DOFs follow others through kinematic constraints "
                     "(eliminated: {} condensed elements)",
-                    plan->dependents.dofs.size(), condensed));
+                    followers, condensed));
   }
   if (auto stick = default_stick_stiffness_summary(model.behaviors)) log.info(*stick);
   ConnectorSystem system(model, *plan);
