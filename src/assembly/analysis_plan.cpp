@@ -7,6 +7,7 @@
 
 #include "base/diagnostic.hpp"
 #include "src/assembly/constrained_elements.hpp"
+#include "src/assembly/rotary_inertia_finite.hpp"
 #include "src/behavior/connector_laws.hpp"
 #include "src/behavior/elastic/elastic_behavior.hpp"
 #include "src/model/orientation_triad.hpp"
@@ -64,6 +65,10 @@ class PlanBuilder {
     const bool frequency =
         std::any_of(steps.begin(), steps.end(), [](const Step& s) { return s.frequency; });
     if (plan_.dynamic || frequency) plan_.inertia = nodal_inertia(model_, plan_.dofs);
+    plan_.owned_inertia = plan_.inertia.size();
+    plan_.finite_rotary_inertia =
+        std::any_of(plan_.inertia.begin(), plan_.inertia.end(),
+                    [](const NodeInertia& n) { return has_finite_rotary_inertia(n, true); });
     plan_.stabilized = std::any_of(steps.begin(), steps.end(), [](const Step& s) {
       return s.procedure && s.procedure->stabilize && !s.dynamic;
     });
@@ -388,7 +393,7 @@ std::optional<AnalysisPlan> build_analysis_plan(const Model& model, std::string*
   if (!PlanBuilder(model, plan, share).build(error)) return std::nullopt;
   if (!build_dependent_dofs(model, plan.dofs, plan.dependents, error)) return std::nullopt;
   expand_constrained_elements(plan);
-  if (share && share->ranks > 1 && share->local_vectors && whole_vectors_need(plan).empty()) {
+  if (share && share->ranks > 1 && share->local_vectors) {
     localize_equations(plan, share->rank, share->ranks);
   }
   return plan;

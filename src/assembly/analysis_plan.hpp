@@ -162,6 +162,12 @@ struct AnalysisPlan {
   // The nodes with MASS or ROTARYI elements, when some step is *DYNAMIC or *FREQUENCY (empty
   // otherwise: a static step does not use inertia).
   std::vector<NodeInertia> inertia;
+  // In a rank's plan over its own equations (layout.local) `inertia` holds the nodes the rank
+  // holds, the owned_inertia it owns first: it adds their inertia to its rows, and a ghost's
+  // record gives the ghost the finite rotary rates its owner computes.
+  std::size_t owned_inertia = 0;
+  // Some node turns its rotary inertia under NLGEOM (rotary_inertia_finite.hpp), on any rank.
+  bool finite_rotary_inertia = false;
   bool dynamic = false;  // some step is *DYNAMIC (the state keeps velocities, accelerations)
   // Some *STATIC step has STABILIZE (stabilization_damping.hpp).
   bool stabilized = false;
@@ -189,6 +195,11 @@ struct AnalysisPlan {
   // True when every law of every connector returns a symmetric tangent.
   bool laws_symmetric() const { return all_laws_symmetric; }
   const SpringRecord& spring(std::size_t s) const { return springs[s - first_spring]; }
+  // The inertia this plan adds to the equations: of the nodes a rank owns, or of every node.
+  std::span<const NodeInertia> own_inertia() const {
+    return layout.local ? std::span<const NodeInertia>(inertia.data(), owned_inertia)
+                        : std::span<const NodeInertia>(inertia);
+  }
   // Connector `c` (global index), of those whose records this plan holds.
   bool holds_connector(std::size_t c) const {
     return c >= first_connector && c < first_connector + connectors.size();
@@ -200,7 +211,7 @@ SpringRecord spring_record(const Model& model, const DofMap& dofs, std::int32_t 
 
 struct PlanShare {
   int rank = 0, ranks = 1;
-  // The vectors by rows too, where nothing needs them whole (whole_vectors_need).
+  // The vectors by rows too (equation_layout.hpp).
   bool local_vectors = false;
 };
 // Builds the plan of a validated model (no errors). Returns nullopt with `error` when the model

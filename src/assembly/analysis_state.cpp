@@ -19,7 +19,11 @@ AnalysisState::AnalysisState(const AnalysisPlan& plan)
       dx_n(x),
       rotation(plan.small_displacement ? 0 : plan.dofs.nodes(), Matrix3::Identity()),
       rotation_n(rotation),
-      v(Eigen::VectorXd::Zero(plan.dynamic ? plan.dofs.node_equations() : 0)),
+      // Over the nodal equations, the first ones; in a rank's plan over its own equations
+      // (equation_layout.hpp), whose ghost nodes follow its multipliers, over every equation.
+      v(Eigen::VectorXd::Zero(!plan.dynamic       ? 0
+                              : plan.layout.local ? plan.dofs.equations()
+                                                  : plan.dofs.node_equations())),
       v_n(v),
       a(v),
       a_n(v),

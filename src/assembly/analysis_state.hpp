@@ -58,14 +58,16 @@ struct AnalysisState {
   void commit();
   void revert();
 
-  Eigen::VectorXd x, x_n, dx_n;               // solution, last converged, last converged increment
+  Eigen::VectorXd x, x_n, dx_n;  // solution, last converged, last converged increment
   // NLGEOM node rotations, per node; empty (the identity) until the run first goes NLGEOM
   // (ConnectorSystem::set_nlgeom): a small-displacement run saves 144 bytes per node and their
   // copy at each commit.
   std::vector<Matrix3> rotation, rotation_n;
   // Dynamic steps (dynamic_terms.hpp): velocity and acceleration of every nodal equation, trial
   // and converged, and r_n = I − P at the converged state (the HHT α term); empty when no step
-  // of the deck is dynamic.
+  // of the deck is dynamic. In a rank's plan over its own equations they run over every equation
+  // (its ghost nodes follow its multipliers), and a multiplier's entries are not used (r_n's are
+  // zero).
   Eigen::VectorXd v, v_n, a, a_n, r_n;
   std::vector<double> history, history_n;
   std::vector<Vector6> position_n;  // converged connector positions (angle branches, §3.6)

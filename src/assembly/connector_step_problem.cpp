@@ -24,11 +24,7 @@ void ConnectorStepProblem::begin_step(std::size_t step, bool nlgeom) {
   riks_ = s.procedure && s.procedure->riks && !s.dynamic && !s.frequency;
   const bool stabilized = s.procedure && s.procedure->stabilize && !s.dynamic && !s.frequency;
   system_.begin_stabilization(stabilized ? &*s.procedure->stabilize : nullptr, period_);
-  const std::vector<NodeInertia>& inertia = system_.plan().inertia;
-  finite_rotary_inertia_ =
-      s.dynamic && nlgeom && std::any_of(inertia.begin(), inertia.end(), [](const NodeInertia& n) {
-        return has_finite_rotary_inertia(n, true);
-      });
+  finite_rotary_inertia_ = s.dynamic && nlgeom && system_.plan().finite_rotary_inertia;
 }
 
 void ConnectorStepProblem::end_perturbation_step() { conditions_.end_perturbation(); }
@@ -80,12 +76,18 @@ StepProblem::HalfIncrementResidual ConnectorStepProblem::half_increment_residual
   out.value = r.value;
   if (!r.status.ok) {
     out.error = r.status.message;
-  } else if (r.equation >= 0) {
+    return out;
+  }
+  if (r.equation >= 0) {
     const DofMap& dofs = system_.plan().dofs;
     const Node& node = model_.nodes[static_cast<std::size_t>(dofs.node_of(r.equation))];
     out.dof = output_column_label("U", dofs.dof_of(r.equation)) + "@" +
               qualified_label(model_, node.instance, node.label);
   }
+  // Under vectors by rows each rank measured its own rows.
+  double value = r.equation >= 0 ? r.value : -1.0;
+  system_.join_largest(value, out.dof);
+  out.value = std::max(value, 0.0);
   return out;
 }
 

@@ -88,8 +88,7 @@ ConnectorSystem::ConnectorSystem(const Model& model, const AnalysisPlan& plan)
                             nullptr);
     state_.v = state_.v_n;
   }
-  if (state_.v_n.size() > 0)
-    initial_kinetic_ = kinetic_energy(plan_.inertia, state_.v_n, state_.rotation_n);
+  if (plan_.dynamic) initial_kinetic_ = kinetic(state_.v_n, state_.rotation_n);
   if (energy_) energy_->set_kinetic(initial_kinetic_);
 }
 
@@ -118,8 +117,12 @@ void ConnectorSystem::start_dynamic_step(bool initial_acceleration) {
   if (energy_) energy_->restart(energy_forces());
   // Without INITIAL=YES the step starts from the accelerations it has.
   if (initial_acceleration) {
-    initial_accelerations(plan_.inertia, conditions_, condensed, state_.a_n);
-    if (!constrained_inertia_.empty()) {
+    initial_accelerations(plan_.own_inertia(), conditions_, condensed, state_.a_n);
+    // Under vectors by rows each constraint lies on one rank: inertia on some rank's dependent
+    // DOFs has every rank's dependent accelerations follow, as in one process.
+    std::array<std::uint8_t, 1> constrained{!constrained_inertia_.empty()};
+    if (halo_) communicator_->max(constrained);
+    if (constrained[0] != 0) {
       // The velocity-product terms first (the independent accelerations zero), then the
       // condensed solve, then the dependent accelerations that follow from it.
       for (const MappedInertiaBlock& b : constrained_inertia_) {
@@ -127,12 +130,15 @@ void ConnectorSystem::start_dynamic_step(bool initial_acceleration) {
       }
       follow_constraint_rates(plan_.dependents, motion_, state_.x, state_.rotation, context_.nlgeom,
                               state_.v_n, &state_.a_n);
-      constrained_initial_accelerations(plan_.inertia, constrained_inertia_, conditions_, condensed,
-                                        state_.a_n);
+      constrained_initial_accelerations(plan_.own_inertia(), constrained_inertia_, conditions_,
+                                        condensed, state_.a_n);
       follow_constraint_rates(plan_.dependents, motion_, state_.x, state_.rotation, context_.nlgeom,
                               state_.v_n, &state_.a_n);
       state_.v = state_.v_n;
     }
+    // Only the owners of the rows solved for their accelerations: the ghosts take them.
+    if (halo_)
+      halo_->copy_to_ghosts({state_.a_n.data(), static_cast<std::size_t>(state_.a_n.size())});
     state_.a = state_.a_n;
   }
   state_.r_n = hht_residual(condensed, true);
@@ -158,7 +164,7 @@ ConnectorSystem::HalfIncrementResidual ConnectorSystem::half_increment_residual(
   HalfIncrementResidual out;
   if (!newmark_) return out;
   const std::vector<Matrix3> end_rotation = state_.rotation;
-  newmark_->set_half_increment_state(state_);
+  newmark_->set_half_increment_state(state_, plan_.dofs);
   // Finite rotations: half of the increment's spin, R = exp(½ log(R₁R₀ᵀ)) R₀.
   for (std::size_t node = 0; node < state_.rotation.size(); ++node) {
     const Matrix3& start = state_.rotation_n[node];
@@ -172,8 +178,12 @@ ConnectorSystem::HalfIncrementResidual ConnectorSystem::half_increment_residual(
   rates_frozen_ = false;
   if (!out.status.ok) return out;
   const Eigen::VectorXd& full = plan_.dependents.empty() ? residual : full_residual_;
-  for (int eq = 0; eq < plan_.dofs.node_equations(); ++eq) {
-    if (conditions_.is_prescribed(eq) || plan_.dependents.is_dependent(eq)) continue;
+  // The nodal rows this rank owns (ConnectorStepProblem joins the ranks' largest).
+  for (int eq = 0; eq < plan_.dofs.equations(); ++eq) {
+    if (plan_.dofs.node_of(eq) < 0 || !reports(eq) || conditions_.is_prescribed(eq) ||
+        plan_.dependents.is_dependent(eq)) {
+      continue;
+    }
     // clinch's rows are the HHT equation divided by 1 + α, with −α r₀ (dynamic_terms.hpp):
     // back to the HHT form, and the lagged term at the half increment −(α/2)(r₀ + r₋₁).
     const double alpha = newmark_->alpha;
@@ -197,8 +207,7 @@ void ConnectorSystem::commit() {
   if (energy_) {
     const ModelEnergies before = energy_->energies();
     energy_->add_increment(state_.x - state_.x_n, energy_forces());
-    energy_->set_kinetic(
-        state_.v.size() > 0 ? kinetic_energy(plan_.inertia, state_.v, state_.rotation) : 0.0);
+    energy_->set_kinetic(plan_.dynamic ? kinetic(state_.v, state_.rotation) : 0.0);
     const ModelEnergies& after = energy_->energies();
     const double element_work = (after.internal + after.frictional + after.viscous) -
                                 (before.internal + before.frictional + before.viscous);
@@ -214,6 +223,10 @@ void ConnectorSystem::commit() {
 }
 
 Eigen::VectorXd ConnectorSystem::hht_residual(Eigen::VectorXd r, bool start) const {
+  // The multipliers' rows are constraints, not forces: no α term (analysis_state.hpp).
+  for (Eigen::Index eq = 0; eq < r.size(); ++eq) {
+    if (plan_.dofs.node_of(static_cast<int>(eq)) < 0) r[eq] = 0.0;
+  }
   if (plan_.dependents.empty()) return r;
   // HHT α on the DOFs' own rows, as with the constraint's reaction as a multiplier (the index-3
   // form of Negrut, Rampalli, Ottarsson and Sajdak 2007, second order in Δt): the force at a
@@ -282,8 +295,9 @@ const AssemblyPattern& ConnectorSystem::build_storage(bool symmetric) const {
 }
 
 ConnectorSystem::Snapshot ConnectorSystem::snapshot() const {
-  return {state_,   conditions_,        internal_,       predictor_,       predicting_,
-          springs_, multiplier_active_, element_forces_, constraint_load_, dependent_failure_};
+  return {state_,           conditions_,      internal_,          predictor_,
+          predicting_,      springs_,         multiplier_active_, element_forces_,
+          inertia_entries_, constraint_load_, dependent_failure_};
 }
 
 void ConnectorSystem::restore(const Snapshot& snapshot) {
@@ -295,6 +309,7 @@ void ConnectorSystem::restore(const Snapshot& snapshot) {
   springs_ = snapshot.springs;
   multiplier_active_ = snapshot.multiplier_active;
   element_forces_ = snapshot.element_forces;
+  inertia_entries_ = snapshot.inertia_entries;
   constraint_load_ = snapshot.constraint_load;
   dependent_failure_ = snapshot.dependent_failure;
 }
@@ -394,6 +409,7 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
   storage();
   internal_.setZero();
   element_forces_ = {};
+  inertia_entries_ = {};
   if (predicting_) predictor_.setZero();
   if (tangent) std::fill(tangent->values.begin(), tangent->values.end(), 0.0);
   // Each rank sets the flags of its own connectors' multipliers (exchange() merges them).
@@ -471,12 +487,12 @@ EvalStatus ConnectorSystem::evaluate(Eigen::VectorXd& residual, SparseMatrix* ta
                                pattern_->symmetric,
                                predicting_ ? &predictor_ : nullptr,
                                dependents};
-    add_inertia(plan_.inertia, *newmark_, state_, conditions_, target, inertia_force_,
-                element_forces_);
+    add_inertia(plan_.own_inertia(), *newmark_, state_, conditions_, target, inertia_force_,
+                inertia_entries_);
     if (!dependents.empty()) {
-      constrained_inertia_ = mapped_inertia_blocks(plan_.inertia, dependents, motion_);
+      constrained_inertia_ = mapped_inertia_blocks(plan_.own_inertia(), dependents, motion_);
       add_constrained_inertia(constrained_inertia_, *newmark_, state_, conditions_, target,
-                              inertia_force_, element_forces_);
+                              inertia_force_, inertia_entries_);
     }
   }
   if (stabilization_.active()) {
@@ -711,6 +727,11 @@ void ConnectorSystem::measure(const Eigen::VectorXd& residual, const Eigen::Vect
   ForceEntries& loads = halo_ ? own_loads : entries;
   ScaledNorm residual_norm, correction_norm;
   const DependentDofs& dependents = plan_.dependents;
+  // The inertia forces of the rank's own nodes (under vectors by rows, joined with its loads).
+  for (int f = 0; f < 2; ++f) {
+    loads.sum[f] += inertia_entries_.sum[f];
+    loads.count[f] += inertia_entries_.count[f];
+  }
   for (const DependentDof& d : dependents.dofs) {  // loads on dependent DOFs, which have no row
     if (reports(d.equation)) {
       loads.add(force_field(d.equation), std::abs(conditions_.external()[d.equation]));
@@ -1027,13 +1048,25 @@ ModelEnergies ConnectorSystem::energies() const {
 // The forces of the last evaluation for the energy balance: the loads on free DOFs, and what
 // holds a prescribed DOF there (the reaction and the load on it).
 EnergyForces ConnectorSystem::energy_forces() {
-  const int n = plan_.dofs.node_equations();
-  external_force_ = conditions_.external().head(n);
-  for (int eq : conditions_.prescribed()) {
-    if (eq < n) external_force_[eq] = holding_force(eq);
-  }
+  external_force_ = conditions_.external();
+  for (int eq : conditions_.prescribed()) external_force_[eq] = holding_force(eq);
   return {internal_, external_force_, state_.results, springs_,
           plan_.stabilized ? &stabilization_force_ : nullptr};
+}
+
+int ConnectorSystem::owned_node_equations() const {
+  if (!halo_) return plan_.dofs.node_equations();
+  // A rank's local equations: its nodes', then its multipliers, then the ghosts.
+  int n = 0;
+  while (n < halo_->owned() && plan_.dofs.node_of(n) >= 0) ++n;
+  return n;
+}
+
+double ConnectorSystem::kinetic(const Eigen::VectorXd& v,
+                                const std::vector<Matrix3>& rotations) const {
+  double energy = kinetic_energy(plan_.own_inertia(), v, rotations);
+  if (halo_) communicator_->sum({&energy, 1});
+  return energy;
 }
 
 double ConnectorSystem::applied_load(std::int32_t node, int dof) const {

@@ -146,6 +146,8 @@ class ConnectorSystem final : public NonlinearProblem {
   // The vectors run over this rank's own rows and ghosts (AnalysisPlan::layout): a nodal output
   // is the owner's, the others give 0 (history columns sum the ranks' parts).
   bool vectors_by_rows() const { return halo_.has_value(); }
+  // The nodal equations of this rank's own rows (the first ones), or every nodal equation.
+  int owned_node_equations() const;
 
   // ---- diagnostics ----
   // Everything an evaluation, a correction or a change of the conditions can change: the state,
@@ -159,7 +161,7 @@ class ConnectorSystem final : public NonlinearProblem {
     bool predicting;
     std::vector<SpringResult> springs;
     std::vector<std::uint8_t> multiplier_active;
-    ForceEntries element_forces;
+    ForceEntries element_forces, inertia_entries;
     Eigen::VectorXd constraint_load;
     std::string dependent_failure;
   };
@@ -215,6 +217,10 @@ class ConnectorSystem final : public NonlinearProblem {
   // joined (every rank calls it alike): every rank's lines in rank order (element order), and
   // whether any rank says yes. Without one, what this process found.
   std::vector<std::string> lines_of_every_rank(std::vector<std::string> mine) const;
+  // Under vectors by rows, the largest of the ranks' `value` (≥ 0, or −1 for none) and the `text`
+  // of the rank that has it (the first such rank): one reduction of a number per rank and one
+  // broadcast. Unchanged otherwise.
+  void join_largest(double& value, std::string& text) const;
   bool any_rank(bool mine) const;
   // Element-wise sums over the ranks of a distributed run, in place (nothing on one process):
   // for outputs whose parts each rank holds (history columns of springs).
@@ -278,7 +284,8 @@ class ConnectorSystem final : public NonlinearProblem {
   std::vector<SpringResult> springs_;
   std::vector<std::uint8_t> multiplier_active_;
   Eigen::VectorXd internal_;
-  ForceEntries element_forces_;  // of the last evaluation
+  ForceEntries element_forces_;   // of the last evaluation
+  ForceEntries inertia_entries_;  // of the inertia of the nodes this rank adds (own_inertia)
   // K_fp·(target − u)_p while prescribed DOFs are short of their targets (predicting_).
   Eigen::VectorXd predictor_;
   bool predicting_ = false;
@@ -328,6 +335,8 @@ class ConnectorSystem final : public NonlinearProblem {
   StabilizationDamping stabilization_;
   Eigen::VectorXd stabilization_force_;  // F_v per equation at the last evaluation
   EnergyForces energy_forces();
+  // ALLKE of the velocities `v` (of every rank's nodes under vectors by rows).
+  double kinetic(const Eigen::VectorXd& v, const std::vector<Matrix3>& rotations) const;
   // What holds prescribed equation `eq` where it is: the elements' and the inertia's force on
   // it, less the loads moved onto it from dependent DOFs (its reaction plus its own load).
   double holding_force(int eq) const;

@@ -67,10 +67,15 @@ void ConnectorSystem::distribute(Communicator& communicator, bool by_rows) {
   // A plan with a share of the elements (build_analysis_plan) holds only this rank's: it
   // evaluates all of them and keeps their results.
   if (plan_.shared) {
-    if (energy_) energy_->share_elements(communicator);
     const EquationLayout& layout = plan_.layout;
-    if (layout.local)
+    if (layout.local) {
       halo_.emplace(communicator, layout.first_owned, layout.owned, layout.ghost_global);
+      // The kinetic energy and the nodal work of the rank's own nodes, summed over the ranks.
+      if (plan_.dynamic) initial_kinetic_ = kinetic(state_.v_n, state_.rotation_n);
+      if (energy_) energy_->set_kinetic(initial_kinetic_);
+      stabilization_.share_rows(communicator, layout.owned);
+    }
+    if (energy_) energy_->share_elements(communicator, layout.local ? owned_node_equations() : -1);
     return;
   }
   const int size = communicator.size();
@@ -132,6 +137,16 @@ void ConnectorSystem::exchange(SparseMatrix* tangent, EvalStatus& status) {
                sizeof(SpringResult));
   }
   exchange_step_requests();
+}
+
+void ConnectorSystem::join_largest(double& value, std::string& text) const {
+  if (!halo_) return;
+  std::vector<double> all(static_cast<std::size_t>(communicator_->size()), 0.0);
+  all[static_cast<std::size_t>(communicator_->rank())] = value;
+  communicator_->sum(all);
+  const auto largest = std::max_element(all.begin(), all.end());
+  value = *largest;
+  text = communicator_->broadcast(text, static_cast<int>(largest - all.begin()));
 }
 
 std::vector<std::string> ConnectorSystem::lines_of_every_rank(std::vector<std::string> mine) const {

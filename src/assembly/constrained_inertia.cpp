@@ -55,7 +55,7 @@ bool has_dependent_dof(const std::array<int, 3>& eq, const DependentDofs& dofs) 
   return std::any_of(eq.begin(), eq.end(), [&](int e) { return e >= 0 && dofs.is_dependent(e); });
 }
 
-std::vector<MappedInertiaBlock> mapped_inertia_blocks(const std::vector<NodeInertia>& inertia,
+std::vector<MappedInertiaBlock> mapped_inertia_blocks(std::span<const NodeInertia> inertia,
                                                       const DependentDofs& dofs,
                                                       const DependentMotion& motion) {
   std::vector<MappedInertiaBlock> blocks;
@@ -87,7 +87,7 @@ std::vector<MappedInertiaBlock> mapped_inertia_blocks(const std::vector<NodeIner
   return blocks;
 }
 
-std::vector<std::vector<int>> constrained_inertia_couplings(const std::vector<NodeInertia>& inertia,
+std::vector<std::vector<int>> constrained_inertia_couplings(std::span<const NodeInertia> inertia,
                                                             const DependentDofs& dofs) {
   std::vector<std::vector<int>> couplings;
   if (dofs.empty()) return couplings;
@@ -193,7 +193,7 @@ void follow_constraint_rates(const DependentDofs& dofs, const DependentMotion& m
   }
 }
 
-void constrained_initial_accelerations(const std::vector<NodeInertia>& inertia,
+void constrained_initial_accelerations(std::span<const NodeInertia> inertia,
                                        const std::vector<MappedInertiaBlock>& blocks,
                                        const IncrementConditions& conditions,
                                        const Eigen::VectorXd& r, Eigen::VectorXd& a) {

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <span>
 #include <vector>
 
 #include "src/assembly/dependent_motion.hpp"
@@ -24,8 +25,8 @@ namespace clinch {
 struct MappedInertiaBlock {
   std::array<int, 3> eq{-1, -1, -1};  // the block's DOFs (−1: not active)
   Matrix3 m = Matrix3::Zero();
-  int field = 0;                       // 0: translations (forces), 1: rotations (moments)
-  std::vector<int> columns;            // independent equations, each once
+  int field = 0;                               // 0: translations (forces), 1: rotations (moments)
+  std::vector<int> columns;                    // independent equations, each once
   Eigen::Matrix<double, 3, Eigen::Dynamic> t;  // ∂u_block/∂u_columns
 };
 
@@ -33,13 +34,13 @@ struct MappedInertiaBlock {
 bool has_dependent_dof(const std::array<int, 3>& eq, const DependentDofs& dofs);
 
 // The blocks of `inertia` with a dependent DOF, mapped at the current gradients of `motion`.
-std::vector<MappedInertiaBlock> mapped_inertia_blocks(const std::vector<NodeInertia>& inertia,
+std::vector<MappedInertiaBlock> mapped_inertia_blocks(std::span<const NodeInertia> inertia,
                                                       const DependentDofs& dofs,
                                                       const DependentMotion& motion);
 
 // The independent equations each constrained block couples (the assembly pattern), with the
 // gradients' structure only: the values of T are not needed.
-std::vector<std::vector<int>> constrained_inertia_couplings(const std::vector<NodeInertia>& inertia,
+std::vector<std::vector<int>> constrained_inertia_couplings(std::span<const NodeInertia> inertia,
                                                             const DependentDofs& dofs);
 
 // Adds (Tᵀ M a)/(1 + α) of every constrained block to the free independent rows and its tangent
@@ -66,7 +67,7 @@ void follow_constraint_rates(const DependentDofs& dofs, const DependentMotion& m
 // constrained blocks move with, from the condensed M̄ a = −r − Σ TᵀM c (c the velocity-product
 // terms already in `a` at the dependent DOFs), together with the free blocks that share an
 // equation with them; the other blocks keep what initial_accelerations gave them.
-void constrained_initial_accelerations(const std::vector<NodeInertia>& inertia,
+void constrained_initial_accelerations(std::span<const NodeInertia> inertia,
                                        const std::vector<MappedInertiaBlock>& blocks,
                                        const IncrementConditions& conditions,
                                        const Eigen::VectorXd& r, Eigen::VectorXd& a);

@@ -57,9 +57,10 @@ double NewmarkIncrement::value_of_rate(double u0, double v0, double a0, int orde
   return u0 + dt * v0 + dt * dt * ((0.5 - beta) * a0 + beta * a1);
 }
 
-void NewmarkIncrement::set_half_increment_state(AnalysisState& s) const {
+void NewmarkIncrement::set_half_increment_state(AnalysisState& s, const DofMap& dofs) const {
   const auto n = s.v.size();
-  s.x = 0.5 * (s.x + s.x_n);
+  const Eigen::VectorXd mean = 0.5 * (s.x + s.x_n);
+  s.x = mean;
   s.a = 0.5 * (s.a + s.a_n);
   if (backward_euler) {
     s.v = 0.5 * (s.v + s.v_n);
@@ -68,9 +69,13 @@ void NewmarkIncrement::set_half_increment_state(AnalysisState& s) const {
   const double h = 0.5 * dt;
   s.x.head(n) = s.x_n.head(n) + h * s.v_n + h * h * ((0.5 - beta) * s.a_n + beta * s.a);
   s.v = s.v_n + h * ((1.0 - gamma) * s.a_n + gamma * s.a);
+  // A multiplier among the rates' equations (a rank's local numbering) keeps the mean.
+  for (Eigen::Index eq = 0; eq < n; ++eq) {
+    if (dofs.node_of(static_cast<int>(eq)) < 0) s.x[eq] = mean[eq];
+  }
 }
 
-void add_inertia(const std::vector<NodeInertia>& inertia, const NewmarkIncrement& increment,
+void add_inertia(std::span<const NodeInertia> inertia, const NewmarkIncrement& increment,
                  const AnalysisState& state, const IncrementConditions& conditions,
                  InertiaTarget target, Eigen::VectorXd& inertia_force, ForceEntries& entries) {
   const double scale = 1.0 / (1.0 + increment.alpha);
@@ -136,7 +141,7 @@ void add_inertia(const std::vector<NodeInertia>& inertia, const NewmarkIncrement
   }
 }
 
-void initial_accelerations(const std::vector<NodeInertia>& inertia,
+void initial_accelerations(std::span<const NodeInertia> inertia,
                            const IncrementConditions& conditions, const Eigen::VectorXd& r,
                            Eigen::VectorXd& a) {
   a.setZero();
@@ -162,7 +167,7 @@ void initial_accelerations(const std::vector<NodeInertia>& inertia,
   }
 }
 
-double kinetic_energy(const std::vector<NodeInertia>& inertia, const Eigen::VectorXd& v,
+double kinetic_energy(std::span<const NodeInertia> inertia, const Eigen::VectorXd& v,
                       const std::vector<Matrix3>& rotations) {
   double energy = 0.0;
   for (const NodeInertia& node : inertia) {

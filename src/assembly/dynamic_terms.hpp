@@ -8,6 +8,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <span>
 #include <vector>
 
 #include "src/assembly/analysis_state.hpp"
@@ -35,7 +36,7 @@ struct NewmarkIncrement {
   // acceleration is the mean of the start and end ones, and the values and velocities are
   // Newmark's relations over Δt/2 with it; backward Euler, and the multipliers, take the means of
   // the start and end values.
-  void set_half_increment_state(AnalysisState& state) const;
+  void set_half_increment_state(AnalysisState& state, const DofMap& dofs) const;
 };
 
 // Where the inertia terms go: the residual over every equation, the tangent in the storage of
@@ -45,7 +46,7 @@ struct InertiaTarget {
   SparseMatrix* tangent;
   const std::vector<int>& diagonal;  // position of each solved equation's diagonal entry
   bool symmetric;
-  Eigen::VectorXd* predictor;  // non-null while prescribed values are short of their targets
+  Eigen::VectorXd* predictor;       // non-null while prescribed values are short of their targets
   const DependentDofs& dependents;  // the tangent is over the solved equations
 };
 
@@ -53,19 +54,19 @@ struct InertiaTarget {
 // (a block with a dependent DOF is left to add_constrained_inertia, constrained_inertia.hpp);
 // `inertia_force` gets M a₁ per equation (a reaction includes it) and `entries` its magnitudes
 // (the force flux q̃ of the convergence criteria).
-void add_inertia(const std::vector<NodeInertia>& inertia, const NewmarkIncrement& increment,
+void add_inertia(std::span<const NodeInertia> inertia, const NewmarkIncrement& increment,
                  const AnalysisState& state, const IncrementConditions& conditions,
                  InertiaTarget target, Eigen::VectorXd& inertia_force, ForceEntries& entries);
 
 // a = M⁻¹(−r) on the DOFs that carry inertia and are free (INITIAL=YES: the accelerations at the
 // start of a step from its equilibrium); 0 elsewhere.
-void initial_accelerations(const std::vector<NodeInertia>& inertia,
+void initial_accelerations(std::span<const NodeInertia> inertia,
                            const IncrementConditions& conditions, const Eigen::VectorXd& r,
                            Eigen::VectorXd& a);
 
 // ½ vᵀ M v of the nodal masses (ALLKE); under NLGEOM (`rotations` of the nodes, not empty) the
 // rotary inertia's ½ W·JW in the body's axes (rotary_inertia_finite.hpp).
-double kinetic_energy(const std::vector<NodeInertia>& inertia, const Eigen::VectorXd& v,
+double kinetic_energy(std::span<const NodeInertia> inertia, const Eigen::VectorXd& v,
                       const std::vector<Matrix3>& rotations);
 
 }  // namespace clinch

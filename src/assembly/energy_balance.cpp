@@ -15,10 +15,21 @@ EnergyBalance::EnergyBalance(int node_equations, std::size_t connectors, std::ve
       change_n_(friction_n_),
       springs_n_(dashpots_.size()) {}
 
+void EnergyBalance::share_elements(Communicator& ranks, int own_rows) {
+  ranks_ = &ranks;
+  nodal_by_rows_ = own_rows >= 0;
+  if (!nodal_by_rows_) return;
+  internal_n_.setZero(own_rows);
+  external_n_ = stabilization_n_ = internal_n_;
+}
+
 void EnergyBalance::add_increment(const Eigen::VectorXd& dx, const EnergyForces& now) {
   const auto n = internal_n_.size();
-  const double element_work = 0.5 * (internal_n_ + now.internal.head(n)).dot(dx.head(n));
-  energies_.work += 0.5 * (external_n_ + now.external.head(n)).dot(dx.head(n));
+  double element_work = 0.5 * (internal_n_ + now.internal.head(n)).dot(dx.head(n));
+  double work = 0.5 * (external_n_ + now.external.head(n)).dot(dx.head(n));
+  double stabilization = now.stabilization
+                             ? 0.5 * (stabilization_n_ + now.stabilization->head(n)).dot(dx.head(n))
+                             : 0.0;
   double frictional = 0.0, viscous = 0.0;
   for (std::size_t c = 0; c < now.connectors.size(); ++c) {
     const ConnectorResult& r = now.connectors[c];
@@ -31,16 +42,22 @@ void EnergyBalance::add_increment(const Eigen::VectorXd& dx, const EnergyForces&
     viscous += 0.5 * (springs_n_[s].force + now.springs[s].force) *
                (now.springs[s].delta - springs_n_[s].delta);
   }
-  if (ranks_) {
+  if (ranks_ && nodal_by_rows_) {
+    double parts[5] = {frictional, viscous, element_work, work, stabilization};
+    ranks_->sum(parts);
+    frictional = parts[0];
+    viscous = parts[1];
+    element_work = parts[2];
+    work = parts[3];
+    stabilization = parts[4];
+  } else if (ranks_) {
     double parts[2] = {frictional, viscous};
     ranks_->sum(parts);
     frictional = parts[0];
     viscous = parts[1];
   }
-  if (now.stabilization) {
-    energies_.stabilization +=
-        0.5 * (stabilization_n_ + now.stabilization->head(n)).dot(dx.head(n));
-  }
+  energies_.work += work;
+  energies_.stabilization += stabilization;
   energies_.frictional += frictional;
   energies_.viscous += viscous;
   energies_.internal += element_work - frictional - viscous;

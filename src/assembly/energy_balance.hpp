@@ -45,9 +45,10 @@ class EnergyBalance {
   // connectors and the springs of which `dashpots` says which are dashpots (their work is viscous).
   EnergyBalance(int node_equations, std::size_t connectors, std::vector<bool> dashpots);
   // The connectors and springs are this rank's share of a distributed model's (docs/parallel.md):
-  // the friction and viscous work of each increment is summed over `ranks`, the nodal terms are
-  // every rank's alike.
-  void share_elements(Communicator& ranks) { ranks_ = &ranks; }
+  // the friction and viscous work of each increment is summed over `ranks`. The nodal terms are
+  // every rank's alike, or with `own_rows` ≥ 0 (vectors by rows) those of the rank's own nodes,
+  // its first `own_rows` nodal equations, summed over the ranks too. Before the first increment.
+  void share_elements(Communicator& ranks, int own_rows);
 
   // Adds the work over the nodal motion `dx` (the nodal equations) from the last kept forces to
   // `now`, and keeps them.
@@ -71,6 +72,7 @@ class EnergyBalance {
   std::vector<Vector6> friction_n_, viscous_n_, change_n_;
   std::vector<SpringResult> springs_n_;
   Communicator* ranks_ = nullptr;
+  bool nodal_by_rows_ = false;
 };
 
 }  // namespace clinch

@@ -20,13 +20,6 @@ int EquationLayout::local_of(int global_equation) const {
   return owned + static_cast<int>(at - ghost_global.begin());
 }
 
-std::string whole_vectors_need(const AnalysisPlan& plan) {
-  if (plan.dynamic || !plan.inertia.empty()) return "a dynamic or *FREQUENCY step";
-  if (plan.stabilized) return "a STABILIZE step";
-  if (plan.energies) return "the whole-model energies (*ENERGY OUTPUT)";
-  return {};
-}
-
 namespace {
 
 // The nodes a kinematic constraint ties together: each dependent DOF's node, the nodes of the
@@ -237,13 +230,25 @@ void localize_equations(AnalysisPlan& plan, int rank, int ranks) {
   }
   // The records' equations, in the model's numbering → local.
   const auto renumber = [&](std::span<int> equations) {
-    for (int& eq : equations) eq = local_of_global[static_cast<std::size_t>(eq)];
+    for (int& eq : equations) eq = eq < 0 ? eq : local_of_global[static_cast<std::size_t>(eq)];
   };
   for (ConnectorRecord& r : plan.connectors)
     renumber({r.local.equation.data(), static_cast<std::size_t>(r.local.count)});
   for (SpringRecord& s : plan.springs)
     renumber({s.local.equation.data(), static_cast<std::size_t>(s.local.count)});
   for (ElementExpansion& e : plan.expansions) renumber(e.equations);
+  // The inertia of the nodes the rank holds, its own first (AnalysisPlan::owned_inertia).
+  std::vector<NodeInertia> inertia;
+  for (const char kind : {1, 2}) {
+    for (NodeInertia n : plan.inertia) {
+      if (held[static_cast<std::size_t>(n.node)] != kind) continue;
+      renumber(n.translation);
+      renumber(n.rotation);
+      inertia.push_back(n);
+    }
+    if (kind == 1) plan.owned_inertia = inertia.size();
+  }
+  plan.inertia = std::move(inertia);
   plan.dependents = local_dependents(dependents, local_of_global, local);
   plan.dofs = std::move(local);
 }

@@ -32,17 +32,13 @@ struct EquationLayout {
   int local_of(int global_equation) const;
 };
 
-// What keeps the vectors over every equation on every rank, for the run log; empty when the
-// plan's records allow vectors by rows: nodal inertia, the whole-model energies, STABILIZE.
-std::string whole_vectors_need(const AnalysisPlan& plan);
-
 // Renumbers a rank's plan (build_analysis_plan with a share) over the equations of the rank:
 // the nodes it owns (a node's owner is the rank whose share of the node equations holds its first
 // equation, but the nodes a kinematic constraint ties together all go to the owner of the first
 // of them), the multipliers of its connectors, then as ghosts the other nodes its connectors and
 // springs touch and those the maps of its ghost dependent DOFs read. Sets `layout` and, for
 // Newton's unknowns (the equations less the dependent ones), `solved_layout`; the dependent DOFs
-// become those the rank holds. Only for a plan whose whole_vectors_need is empty.
+// become those the rank holds.
 void localize_equations(AnalysisPlan& plan, int rank, int ranks);
 
 }  // namespace clinch

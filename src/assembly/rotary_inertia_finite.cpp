@@ -44,7 +44,7 @@ bool has_finite_rotary_inertia(const NodeInertia& node, bool nlgeom) {
          node.rotation[2] >= 0;
 }
 
-void update_finite_rotary_rates(const std::vector<NodeInertia>& inertia, double dt,
+void update_finite_rotary_rates(std::span<const NodeInertia> inertia, double dt,
                                 AnalysisState& state) {
   if (dt <= 0.0) return;  // no increment: the rates stay those of the converged state
   for (const NodeInertia& node : inertia) {
@@ -59,7 +59,7 @@ void update_finite_rotary_rates(const std::vector<NodeInertia>& inertia, double 
   }
 }
 
-void add_finite_rotary_inertia(const std::vector<NodeInertia>& inertia, double dt,
+void add_finite_rotary_inertia(std::span<const NodeInertia> inertia, double dt,
                                const AnalysisState& state, const IncrementConditions& conditions,
                                InertiaTarget target, Eigen::VectorXd& inertia_force,
                                ForceEntries& entries) {

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <span>
 #include <vector>
 
 #include "src/assembly/analysis_state.hpp"
@@ -29,7 +30,7 @@ bool has_finite_rotary_inertia(const NodeInertia& node, bool nlgeom);
 
 // The spatial angular velocity ω₁ = R₁W₁ and acceleration R₁(W₁ − W₀)/Δt of the rotation
 // equations of such nodes, at the trial rotations, from the converged state (v₀ = ω₀).
-void update_finite_rotary_rates(const std::vector<NodeInertia>& inertia, double dt,
+void update_finite_rotary_rates(std::span<const NodeInertia> inertia, double dt,
                                 AnalysisState& state);
 
 // Adds 2(π₁ − π₀)/Δt + r₀ to the free rotation rows of such nodes, and its derivative with
@@ -37,7 +38,7 @@ void update_finite_rotary_rates(const std::vector<NodeInertia>& inertia, double 
 //   (2/Δt) [−π̂₁ + (2/Δt) R₁ J T(Θ)⁻¹ R₀ᵀ],
 // T(Θ) the left Jacobian of the exponential map (exp(Θ + δΘ) = exp(T(Θ)δΘ) exp(Θ)); unsymmetric,
 // its symmetric part in symmetric storage. `inertia_force` gets the added moment.
-void add_finite_rotary_inertia(const std::vector<NodeInertia>& inertia, double dt,
+void add_finite_rotary_inertia(std::span<const NodeInertia> inertia, double dt,
                                const AnalysisState& state, const IncrementConditions& conditions,
                                InertiaTarget target, Eigen::VectorXd& inertia_force,
                                ForceEntries& entries);

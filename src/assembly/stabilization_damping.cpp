@@ -10,7 +10,7 @@ namespace clinch {
 StabilizationDamping::StabilizationDamping(const DofMap& dofs, const DependentDofs& dependents,
                                            double length_scale)
     : mass_(static_cast<std::size_t>(dofs.equations()), 0.0), dependents_(dependents) {
-  for (int eq = 0; eq < dofs.node_equations(); ++eq) {
+  for (int eq = 0; eq < dofs.equations(); ++eq) {
     if (dependents.is_dependent(eq)) continue;  // it follows its independent DOFs
     const EquationField field = dofs.field(eq);
     mass_[static_cast<std::size_t>(eq)] = field == EquationField::Translation ? 1.0
@@ -67,11 +67,17 @@ void StabilizationDamping::add(const Eigen::VectorXd& x, const Eigen::VectorXd& 
   }
 }
 
+void StabilizationDamping::share_rows(Communicator& ranks, int owned) {
+  ranks_ = &ranks;
+  std::fill(mass_.begin() + owned, mass_.end(), 0.0);
+}
+
 double StabilizationDamping::artificial_mass_norm(const Eigen::VectorXd& dx) const {
   double sum = 0.0;
   for (std::size_t eq = 0; eq < mass_.size(); ++eq) {
     sum += mass_[eq] * dx[static_cast<Eigen::Index>(eq)] * dx[static_cast<Eigen::Index>(eq)];
   }
+  if (ranks_) ranks_->sum({&sum, 1});
   return sum;
 }
 

@@ -20,6 +20,7 @@
 #include "src/assembly/increment_conditions.hpp"
 #include "src/linalg/sparse_matrix.hpp"
 #include "src/model/history_model.hpp"
+#include "src/parallel/communicator.hpp"
 
 namespace clinch {
 
@@ -41,6 +42,9 @@ class StabilizationDamping {
   // line on how c is chosen (empty without stabilization).
   std::string begin_step(const StaticStabilization* settings, double period);
   bool active() const { return settings_ != nullptr && factor_ > 0.0; }
+  // Vectors by rows (docs/parallel.md): this rank damps its own rows, the first `owned`
+  // equations, and the ranks' motions are summed where c is chosen.
+  void share_rows(Communicator& ranks, int owned);
   double factor() const { return factor_; }
 
   // Adds F_v to the free, solved nodal rows of `target.residual`, c M*/Δt to their diagonal.
@@ -68,6 +72,7 @@ class StabilizationDamping {
   double base_factor_ = 0.0;  // c of the energy fraction, FACTOR or CONTINUE=YES
   double last_factor_ = 0.0;  // of the last stabilized step (CONTINUE=YES)
   bool warned_ = false;
+  Communicator* ranks_ = nullptr;
 };
 
 }  // namespace clinch

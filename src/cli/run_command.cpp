@@ -241,10 +241,9 @@ int run_deck(const RunCommandOptions& options) {
   if (communicator) {
     system.distribute(*communicator, whole_tangent.empty());
     const std::string vectors =
-        plan->layout.local
-            ? "; the vectors run over each rank's own rows and the ghosts its "
-              "elements read"
-            : "; each rank holds the vectors over every equation: " + whole_vectors_need(*plan);
+        plan->layout.local ? "; the vectors run over each rank's own rows and the ghosts its "
+                             "elements read"
+                           : std::string();
     const std::string held =
         whole_tangent.empty()
             ? "each holds the records and results of its own elements and assembles its part of "

@@ -44,6 +44,8 @@ HaloExchange::HaloExchange(Communicator& communicator, int first_owned, int owne
   communicator.all_to_all(to_owners_, std::span<const int>(ghosts), std::span<int>(exported_));
   for (int& e : exported_) e -= first_owned;  // owned entries
   received_.resize(exported_.size());
+  to_ghosts_ = {to_owners_.receive_count, to_owners_.receive_offset, to_owners_.send_count,
+                to_owners_.send_offset};
 }
 
 void HaloExchange::add_to_owners(std::span<double> values) {
@@ -52,6 +54,14 @@ void HaloExchange::add_to_owners(std::span<double> values) {
   for (std::size_t k = 0; k < exported_.size(); ++k) {
     values[static_cast<std::size_t>(exported_[k])] += received_[k];
   }
+}
+
+void HaloExchange::copy_to_ghosts(std::span<double> values) {
+  for (std::size_t k = 0; k < exported_.size(); ++k) {
+    received_[k] = values[static_cast<std::size_t>(exported_[k])];
+  }
+  communicator_.all_to_all(to_ghosts_, std::span<const double>(received_),
+                           values.subspan(static_cast<std::size_t>(owned_), ghosts_));
 }
 
 }  // namespace clinch

@@ -63,7 +63,6 @@ struct PlannedDeck {
 TEST(EquationLayout, TheRanksOwnEveryEquationOnceAndTheirRecordsStandForTheWholePlans) {
   const PlannedDeck strip(strip_deck());
   ASSERT_TRUE(strip.whole);
-  EXPECT_EQ(whole_vectors_need(*strip.whole), "");
   const int n = strip.whole->dofs.equations();
   ASSERT_EQ(n, 24);
   constexpr int kRanks = 3;
@@ -124,7 +123,6 @@ TEST(EquationLayout, MultipliersAreRowsOfTheirConnectorsRank) {
   for (int rank = 0; rank < 2; ++rank) {
     const std::optional<AnalysisPlan> plan = join.rank_plan(rank, 2);
     ASSERT_TRUE(plan);
-    EXPECT_EQ(whole_vectors_need(*plan), "");
     const EquationLayout& layout = plan->layout;
     ASSERT_TRUE(layout.local);
     EXPECT_EQ(layout.global_count, 12);  // nine nodal equations and three multipliers
@@ -177,7 +175,6 @@ TEST(EquationLayout, EachConstraintLiesOnOneRankAndItsMapsReadHeldEquations) {
   const PlannedDeck strip(constrained_strip_deck());
   ASSERT_TRUE(strip.whole);
   const AnalysisPlan& whole = *strip.whole;
-  EXPECT_EQ(whole_vectors_need(whole), "");
   // Nodes 3, 4, 8 (translations) and u2 of node 6 follow.
   ASSERT_EQ(whole.dependents.dofs.size(), 10u);
   constexpr int kRanks = 3;
@@ -240,17 +237,48 @@ TEST(EquationLayout, EachConstraintLiesOnOneRankAndItsMapsReadHeldEquations) {
   EXPECT_EQ(owners_of_equation.size(), 1u);
 }
 
-TEST(EquationLayout, WholeVectorsWhereAFeatureNeedsThem) {
-  const PlannedDeck dynamic(
+// STABILIZE: each rank damps its own rows, the ghosts none.
+TEST(EquationLayout, AStabilizedStepRunsByRows) {
+  const PlannedDeck stabilized(
       "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n*ELEMENT, TYPE=SPRINGA, ELSET=S\n1, 1, 2\n"
-      "*SPRING, ELSET=S\n\n10.\n*ELEMENT, TYPE=MASS, ELSET=M\n2, 2\n"
-      "*MASS, ELSET=M\n1.\n*BOUNDARY\n1, 1, 3\n*STEP\n*DYNAMIC\n0.1, 1.\n"
+      "*SPRING, ELSET=S\n\n10.\n*BOUNDARY\n1, 1, 3\n*STEP\n*STATIC, STABILIZE\n0.1, 1.\n"
       "*CLOAD\n2, 1, 1.\n*END STEP\n");
-  const std::optional<AnalysisPlan> plan = dynamic.rank_plan(0, 2);
-  ASSERT_TRUE(plan);
-  EXPECT_EQ(whole_vectors_need(*plan), "a dynamic or *FREQUENCY step");
-  EXPECT_FALSE(plan->layout.local);
-  EXPECT_EQ(plan->dofs.equations(), 6);
+  for (int rank = 0; rank < 2; ++rank) {
+    const std::optional<AnalysisPlan> plan = stabilized.rank_plan(rank, 2);
+    ASSERT_TRUE(plan);
+    EXPECT_TRUE(plan->stabilized);
+    EXPECT_TRUE(plan->layout.local);
+    // The spring's rank holds both nodes; the other owns node 2 and holds nothing else.
+    EXPECT_EQ(plan->dofs.equations(), rank == 0 ? 6 : 3);
+  }
+}
+
+// A dynamic step: each rank holds the inertia of the nodes it holds, its own first, over its
+// local equations.
+TEST(EquationLayout, TheInertiaOfTheNodesARankHoldsItsOwnFirst) {
+  const PlannedDeck dynamic(
+      "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n3, 2., 0., 0.\n"
+      "*ELEMENT, TYPE=SPRINGA, ELSET=S\n1, 1, 2\n2, 2, 3\n"
+      "*SPRING, ELSET=S\n\n10.\n*ELEMENT, TYPE=MASS, ELSET=M\n3, 2\n4, 3\n"
+      "*MASS, ELSET=M\n1.\n*BOUNDARY\n1, 1, 3\n*STEP\n*DYNAMIC\n0.1, 1.\n"
+      "*CLOAD\n3, 1, 1.\n*END STEP\n");
+  ASSERT_TRUE(dynamic.whole);
+  EXPECT_EQ(dynamic.whole->inertia.size(), 2u);
+  std::size_t owned = 0;
+  for (int rank = 0; rank < 2; ++rank) {
+    const std::optional<AnalysisPlan> plan = dynamic.rank_plan(rank, 2);
+    ASSERT_TRUE(plan);
+    ASSERT_TRUE(plan->layout.local);
+    for (std::size_t k = 0; k < plan->inertia.size(); ++k) {
+      const NodeInertia& n = plan->inertia[k];
+      const int eq = n.translation[0];
+      ASSERT_GE(eq, 0);
+      EXPECT_EQ(plan->dofs.node_of(eq), n.node);
+      EXPECT_EQ(plan->layout.owns(eq), k < plan->owned_inertia);
+    }
+    owned += plan->own_inertia().size();
+  }
+  EXPECT_EQ(owned, 2u);
 }
 
 // The matrix `m` stands for, dense, over the whole plan's unknowns (`unknown` of its rows).
