@@ -8,14 +8,19 @@ translations, and in pairs by *EQUATION on u2; every third equation reads the no
 before ties, a chain of two maps (a chain through a rigid arm is not allowed under NLGEOM). A few tie nodes carry loads of their own. Equal shares of the node equations
 then give most constraints nodes of several ranks.
 
-Usage: scattered_constraints.py --size N --bodies B --couplings C --equations E --out FILE
+With --dynamic the lattice has masses, the reference nodes rotary inertia, and dashpots; it is
+loaded under automatic stabilization (STABILIZE, *STATIC) and then let go in a *DYNAMIC step
+(HHT, INITIAL=YES), with the energies among its outputs.
+
+Usage: scattered_constraints.py --size N --bodies B --couplings C --equations E [--dynamic]
+                                --out FILE
 """
 
 import argparse
 import random
 
 
-def write(size, bodies, couplings, equations, out):
+def write(size, bodies, couplings, equations, dynamic, out):
     rng = random.Random(7)
     node = lambda i, j: i * size + j + 1
     lines = ["*HEADING", "Lattice with scattered kinematic constraints (scattered_constraints.py)",
@@ -74,16 +79,47 @@ def write(size, bodies, couplings, equations, out):
               "*NSET, NSET=REFS, GENERATE", f"{reference}, {reference + len(groups) - 1}, 1",
               "*NSET, NSET=TIES"]
     lines += [", ".join(map(str, group)) for group in groups[:6]]
-    lines += ["*BOUNDARY", "BASE, 1, 3", f"{reference}, 1, 6",
-              "*STEP, NLGEOM, INC=100", "*STATIC, DIRECT", "0.25, 1.",
-              "*CONTROLS, PARAMETERS=FIELD", "1e-9, 1e-9",
-              "*CLOAD", "TOP, 2, 2.", "TOP, 1, 1."]
-    lines += [f"{reference + k}, 6, 0.5" for k in range(1, bodies)]
-    for group in groups[1:6]:
-        lines += [f"{group[0]}, 3, 0.7", f"{group[1]}, 1, -0.4"]
-    lines += ["*OUTPUT, HISTORY", "*NODE OUTPUT, NSET=SAMPLE", "U, RF",
+    if dynamic:
+        # A mass at every lattice node, a rotary inertia at every reference node, dashpots along
+        # the squares' first diagonals.
+        lines.append("*ELEMENT, TYPE=MASS, ELSET=M")
+        for n in range(1, size * size + 1):
+            lines.append(f"{element}, {n}")
+            element += 1
+        lines += ["*MASS, ELSET=M", "0.01", "*ELEMENT, TYPE=ROTARYI, ELSET=J"]
+        for k in range(len(groups)):
+            lines.append(f"{element}, {reference + k}")
+            element += 1
+        lines += ["*ROTARY INERTIA, ELSET=J", "0.02, 0.03, 0.04, 0.001, -0.002, 0.0015",
+                  "*ELEMENT, TYPE=DASHPOTA, ELSET=D"]
+        for i in range(0, size - 1, 2):
+            for j in range(size - 1):
+                lines.append(f"{element}, {node(i, j)}, {node(i + 1, j + 1)}")
+                element += 1
+        lines += ["*DASHPOT, ELSET=D", "", "0.5"]
+    lines += ["*BOUNDARY", "BASE, 1, 3", f"{reference}, 1, 6"]
+    output = ["*OUTPUT, HISTORY", "*NODE OUTPUT, NSET=SAMPLE", "U, RF",
               "*NODE OUTPUT, NSET=REFS", "UR", "*NODE OUTPUT, NSET=TIES", "CF",
-              "*NODE OUTPUT, NSET=BASE", "RF", "*ELEMENT OUTPUT, ELSET=C", "CTF1", "*END STEP"]
+              "*NODE OUTPUT, NSET=BASE", "RF", "*ELEMENT OUTPUT, ELSET=C", "CTF1"]
+    controls = ["*CONTROLS, PARAMETERS=FIELD", "1e-9, 1e-9"]
+    loads = ["*CLOAD", "TOP, 2, 2.", "TOP, 1, 1."]
+    loads += [f"{reference + k}, 6, 0.5" for k in range(1, bodies)]
+    for group in groups[1:6]:
+        loads += [f"{group[0]}, 3, 0.7", f"{group[1]}, 1, -0.4"]
+    if not dynamic:
+        lines += ["*STEP, NLGEOM, INC=100", "*STATIC, DIRECT", "0.25, 1."] + controls + loads
+        lines += output + ["*END STEP"]
+    else:
+        # Loaded under automatic stabilization, then let go: the loads on the top row drop to
+        # half at once and the lattice vibrates, its dashpots and connectors dissipating.
+        energies = ["*ENERGY OUTPUT", "ALLKE, ALLIE, ALLVD, ALLSD, ALLWK, ETOTAL"]
+        lines += ["*STEP, NLGEOM, INC=100", "*STATIC, STABILIZE=0.0002, DIRECT", "0.25, 1."]
+        lines += controls + loads + output
+        lines += ["*ENERGY OUTPUT", "ALLIE, ALLVD, ALLSD, ALLWK, ETOTAL", "*END STEP"]
+        lines += ["*STEP, NLGEOM, INC=100", "*DYNAMIC, DIRECT, ALPHA=-0.05, INITIAL=YES",
+                  "0.02, 0.1"] + controls
+        lines += ["*CLOAD, OP=NEW", "TOP, 2, 1.", "TOP, 1, 0.5"]
+        lines += output + ["*NODE OUTPUT, NSET=SAMPLE", "V, A"] + energies + ["*END STEP"]
     with open(out, "w", encoding="ascii") as f:
         f.write("\n".join(lines) + "\n")
 
@@ -94,9 +130,10 @@ def main():
     parser.add_argument("--bodies", type=int, required=True)
     parser.add_argument("--couplings", type=int, required=True)
     parser.add_argument("--equations", type=int, required=True)
+    parser.add_argument("--dynamic", action="store_true")
     parser.add_argument("--out", required=True)
     args = parser.parse_args()
-    write(args.size, args.bodies, args.couplings, args.equations, args.out)
+    write(args.size, args.bodies, args.couplings, args.equations, args.dynamic, args.out)
 
 
 if __name__ == "__main__":
