@@ -1,7 +1,9 @@
 #include "src/assembly/energy_balance.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <span>
 
 namespace clinch {
 
@@ -42,19 +44,15 @@ void EnergyBalance::add_increment(const Eigen::VectorXd& dx, const EnergyForces&
     viscous += 0.5 * (springs_n_[s].force + now.springs[s].force) *
                (now.springs[s].delta - springs_n_[s].delta);
   }
-  if (ranks_ && nodal_by_rows_) {
-    double parts[5] = {frictional, viscous, element_work, work, stabilization};
-    ranks_->sum(parts);
+  if (ranks_) {
+    // The elements' parts are each rank's own; the nodal ones too under vectors by rows.
+    std::array<double, 5> parts{frictional, viscous, element_work, work, stabilization};
+    ranks_->sum(std::span<double>(parts).first(nodal_by_rows_ ? 5 : 2));
     frictional = parts[0];
     viscous = parts[1];
     element_work = parts[2];
     work = parts[3];
     stabilization = parts[4];
-  } else if (ranks_) {
-    double parts[2] = {frictional, viscous};
-    ranks_->sum(parts);
-    frictional = parts[0];
-    viscous = parts[1];
   }
   energies_.work += work;
   energies_.stabilization += stabilization;
